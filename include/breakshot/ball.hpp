@@ -1,0 +1,41 @@
+// Balls: their fixed properties and their kinematic state.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "breakshot/vec.hpp"
+
+namespace breakshot {
+
+/// How a ball is moving. `moving` and `stationary` are the states of the
+/// ideal and friction models; the pool model uses the others.
+enum class MotionState : std::uint8_t {
+  stationary,
+  moving,
+  sliding,
+  rolling,
+  spinning,
+  pocketed,
+};
+
+std::string_view to_string(MotionState s);
+
+/// What does not change during a simulation.
+struct BallSpec {
+  std::string id;
+  double radius = 0.028575;      ///< m
+  double mass = 0.170;           ///< kg
+  double wall_restitution = 1.0; ///< against every wall of the table
+};
+
+/// Where a ball is and how it moves at one instant.
+struct BallState {
+  Vec2 position;
+  Vec2 velocity;
+  Vec3 spin;  ///< rad/s (pool model; zero otherwise)
+  MotionState state = MotionState::stationary;
+};
+
+}  // namespace breakshot

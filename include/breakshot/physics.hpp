@@ -1,0 +1,41 @@
+// The physics models and their parameters.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+namespace breakshot {
+
+/// Which equations of motion and collision laws the engine uses.
+enum class Model : std::uint8_t {
+  ideal,     ///< frictionless disks: constant velocity between collisions
+  friction,  ///< constant deceleration along minus the velocity until rest
+  pool,      ///< sliding, rolling and spinning spheres (not implemented yet)
+};
+
+std::string_view to_string(Model m);
+
+/// Every physics parameter, with the defaults documented in
+/// docs/scenario.md. Units are SI.
+struct PhysicsParams {
+  Model model = Model::ideal;
+  /// Restitution of a ball-ball collision unless a pair overrides it.
+  double ball_ball_restitution = 1.0;
+  /// Ball-ball friction coefficient (pool model only; ideal and friction
+  /// collisions are frictionless by definition).
+  double ball_ball_friction = 0.0;
+  double gravity = 9.81;
+  /// Deceleration of every moving ball in the friction model (m/s^2).
+  /// The scenario reader defaults it to rolling_friction * gravity.
+  double deceleration = 0.0981;
+  double sliding_friction = 0.2;
+  double rolling_friction = 0.01;
+  double spinning_friction = 0.044;
+  /// Closing speed (m/s) below which a ball-ball collision is treated as
+  /// elastic, and the separating speed a pair in pushing contact leaves
+  /// with. This is the rule that keeps inelastic clusters from
+  /// collapsing (docs/physics-core.md, "Inelastic collapse").
+  double collapse_speed = 1e-5;
+};
+
+}  // namespace breakshot

@@ -1,0 +1,155 @@
+// The event-driven simulation.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "breakshot/ball.hpp"
+#include "breakshot/event.hpp"
+#include "breakshot/scenario.hpp"
+
+namespace breakshot {
+
+/// Why advance() returned.
+enum class StopReason : std::uint8_t {
+  reached,     ///< the requested time (or rest) was reached
+  event_limit, ///< Scenario::max_events events were processed
+};
+
+class Simulation;
+
+/// The whole result of a run: every event, the final state and the
+/// samples, if asked for.
+struct Sample {
+  double time = 0.0;
+  std::vector<BallState> balls;
+};
+
+struct RunResult {
+  bool complete = true;
+  std::vector<Event> events;
+  double final_time = 0.0;
+  std::vector<BallState> final_balls;
+  std::vector<Sample> samples;
+};
+
+/// Runs a validated scenario to its `until` (or the event limit).
+RunResult simulate(const Scenario& scenario);
+
+/// The simulation as a copyable value: copy it to save the state,
+/// assign the copy back to restore it. Advancing to frame times or
+/// straight to the end gives exactly the same events.
+class Simulation {
+ public:
+  /// The scenario must be valid (see validate()).
+  explicit Simulation(const Scenario& scenario);
+
+  /// Current clock.
+  double time() const { return now_; }
+
+  /// Processes every event with time <= t in time order, then moves the
+  /// clock to t. Returns event_limit if max_events stopped it first (the
+  /// clock then stays at the last event).
+  StopReason advance_to(double t);
+
+  /// Advances until every ball is at rest (or pocketed). With a model
+  /// or input where that never happens it stops at max_events.
+  StopReason advance_to_rest();
+
+  /// Time of the next event, +infinity if none is coming.
+  double next_event_time();
+
+  /// True if no ball moves.
+  bool at_rest() const;
+
+  /// State of ball i at the current clock.
+  BallState ball(std::size_t i) const;
+  std::vector<BallState> balls() const;
+  std::size_t ball_count() const { return traj_.size(); }
+
+  /// Every event so far, in order.
+  const std::vector<Event>& events() const { return events_; }
+  std::uint64_t event_count() const { return event_count_; }
+
+  const Scenario& scenario() const { return scenario_; }
+
+  /// A ball's motion from t0 on: p(t) = p0 + v0 dt + acc dt^2 / 2 with
+  /// dt = t - t0, valid until t_end (its next change of state by itself).
+  struct Trajectory {
+    double t0 = 0.0;
+    Vec2 p0;
+    Vec2 v0;
+    Vec2 acc;
+    Vec3 w0;
+    double t_end = 0.0;  ///< +inf if the motion never changes by itself
+    MotionState state = MotionState::stationary;
+  };
+
+  /// The trajectory a ball follows now (for tools and tests).
+  const Trajectory& trajectory(std::size_t i) const { return traj_[i]; }
+
+ private:
+  // A ball's earliest predicted event. Ball-ball predictions remember the
+  // partner's event counter so that one made stale by the partner's own
+  // later event is recognised when it comes up, instead of being searched
+  // for and removed (the DynamO way).
+  // Kinds in the order simultaneous events of one ball are taken.
+  enum class Kind : std::uint8_t { ball, wall, stop, cell, none };
+  struct Prediction {
+    double time = 0.0;
+    Kind kind = Kind::none;
+    std::int32_t other = -1;          // ball, wall, or cell direction
+    std::uint64_t other_counter = 0;  // partner's counter at prediction
+  };
+
+  void predict(std::int32_t i);
+  void predict_ball_pair(std::int32_t i, std::int32_t j, Prediction& best) const;
+  void predict_walls(std::int32_t i, Prediction& best) const;
+  void predict_cell(std::int32_t i, Prediction& best) const;
+  void heap_fix(std::int32_t i);
+  bool heap_less(std::int32_t a, std::int32_t b) const;
+  void heap_swap(std::size_t a, std::size_t b);
+  bool step(double limit);
+  void move_to(std::int32_t i, double t);
+  BallState state_at(std::int32_t i, double t) const;
+  Vec2 position_at(std::int32_t i, double t) const;
+  Vec2 velocity_at(std::int32_t i, double t) const;
+  Vec2 acceleration_for(Vec2 v) const;
+  void set_velocity(std::int32_t i, Vec2 v);
+  double pair_restitution(std::int32_t i, std::int32_t j) const;
+  double outgoing_speed(double closing, double restitution) const;
+  bool pressed(double out, double acc_n, double window) const;
+  void collide_balls(std::int32_t i, std::int32_t j);
+  void collide_wall(std::int32_t i, std::int32_t w);
+  std::int32_t cell_index(Vec2 p) const;
+  void cell_link(std::int32_t i, std::int32_t cell);
+  void cell_unlink(std::int32_t i);
+
+  Scenario scenario_;
+  double now_ = 0.0;     // the clock
+  double origin_ = 0.0;  // time of the last event: origin of predictions
+  std::uint64_t event_count_ = 0;
+  bool limit_hit_ = false;  // set when max_events stopped a step
+  std::size_t moving_ = 0;  // balls not at rest
+  std::vector<Trajectory> traj_;
+  std::vector<std::uint64_t> counter_;  // events each ball took part in
+  std::vector<Prediction> next_;        // each ball's earliest event
+  std::vector<std::int32_t> heap_;      // ball indices, min-heap on next_
+  std::vector<std::int32_t> heap_pos_;  // where each ball sits in heap_
+  std::vector<Event> events_;
+  // Pairs with a restitution of their own: sorted keys a * n + b (a < b).
+  std::vector<std::uint64_t> pair_keys_;
+  std::vector<double> pair_values_;
+  // Uniform grid of cells, used when there are many balls.
+  bool use_cells_ = false;
+  double cell_size_ = 0.0;
+  Vec2 grid_origin_;
+  std::int32_t grid_nx_ = 1;
+  std::int32_t grid_ny_ = 1;
+  std::vector<std::int32_t> cell_head_;  // first ball in each cell, or -1
+  std::vector<std::int32_t> cell_next_;  // next ball in the same cell
+  std::vector<std::int32_t> cell_prev_;
+  std::vector<std::int32_t> ball_cell_;
+};
+
+}  // namespace breakshot

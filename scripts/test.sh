@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# Every check breakshot has, the way CI runs them (.ci/run calls this):
+#
+#   (a) release build, warnings as errors, and its tests      (preset release)
+#   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
+#   (c) install the release build and build and run the example consumer
+#       against it (find_package(breakshot)); run scripts/run.sh
+#   (d) the libFuzzer target, built with clang: seed corpus replay (a test),
+#       then fuzzing for BREAKSHOT_FUZZ_SECONDS (default 60) seconds, seeded
+#       with fuzz/corpus and examples/lab
+#
+# The last line is the sum over every ctest run: "N passed, 0 failed".
+#
+#   scripts/test.sh            everything
+#   scripts/test.sh --quick    only (a)
+set -Eeuo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+
+quick=0
+for arg in "$@"; do
+  case "$arg" in
+    --quick) quick=1 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    *) echo "test.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
+  esac
+done
+fuzz_seconds=${BREAKSHOT_FUZZ_SECONDS:-60}
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+
+logs=$root/build/logs
+mkdir -p "$logs"
+
+# --- bookkeeping: stage times, ctest totals, a loud message on failure ---
+stage_name=""
+stage_t0=0
+timings=()
+passed=0
+failed=0
+
+stage() {
+  stage_done
+  stage_name=$1
+  stage_t0=$SECONDS
+  printf '\n==== %s ====\n' "$stage_name"
+}
+stage_done() {
+  if [ -n "$stage_name" ]; then
+    timings+=("$(printf '%-44s %4ds' "$stage_name" $((SECONDS - stage_t0)))")
+  fi
+  stage_name=""
+}
+on_error() {
+  local rc=$?
+  echo >&2
+  echo "test.sh: FAILED (exit $rc) in stage: ${stage_name:-setup}" >&2
+  echo "test.sh: logs are in $logs" >&2
+  exit "$rc"
+}
+trap on_error ERR
+
+# Runs one ctest preset, shows its output and adds its counts to the totals.
+run_ctest() {
+  local preset=$1 log=$logs/ctest-$1.log line total nfail
+  ctest --preset "$preset" 2>&1 | tee "$log"
+  line=$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1)
+  if [ -z "$line" ]; then
+    echo "test.sh: no ctest summary for preset $preset" >&2
+    return 1
+  fi
+  nfail=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")
+  total=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<<"$line")
+  passed=$((passed + total - nfail))
+  failed=$((failed + nfail))
+}
+
+t_start=$SECONDS
+
+stage "setup (scripts/setup.sh)"
+scripts/setup.sh
+
+stage "(a) release: configure + build (-Werror)"
+cmake --preset release
+cmake --build --preset release
+stage "(a) release: ctest"
+run_ctest release
+
+if [ "$quick" -eq 0 ]; then
+  stage "(b) asan: configure + build"
+  cmake --preset asan
+  cmake --build --preset asan
+  stage "(b) asan: ctest under ASan/UBSan"
+  run_ctest asan
+
+  stage "(c) install + example consumer"
+  rm -rf build/install build/consumer
+  cmake --install build/release --prefix build/install
+  # The installed package must stand alone: nlohmann_json and the build's
+  # flag target are build-only dependencies of the library.
+  if grep -nE 'nlohmann|breakshot_flags' build/install/lib*/cmake/breakshot/*.cmake; then
+    echo "test.sh: the installed breakshot package refers to a build-only dependency" >&2
+    false
+  fi
+  cmake -S examples/consumer -B build/consumer -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_PREFIX_PATH="$root/build/install"
+  cmake --build build/consumer -j 2
+  build/consumer/consumer
+
+  stage "(c) scripts/run.sh (the README's main job)"
+  scripts/run.sh >"$logs/run.log" 2>&1 || { cat "$logs/run.log"; false; }
+  tail -n 6 "$logs/run.log"
+
+  stage "(d) fuzz: configure + build (clang)"
+  cmake --preset fuzz
+  cmake --build --preset fuzz
+  stage "(d) fuzz: corpus replay (ctest)"
+  run_ctest fuzz
+  stage "(d) fuzz: libFuzzer for ${fuzz_seconds}s"
+  mkdir -p build/fuzz/corpus-work build/fuzz/artifacts
+  fuzz_log=$logs/fuzz.log
+  if ! build/fuzz/fuzz/breakshot_fuzz \
+      -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=4096 \
+      -dict=fuzz/scenario.dict -artifact_prefix=build/fuzz/artifacts/ \
+      -print_final_stats=1 build/fuzz/corpus-work fuzz/corpus examples/lab \
+      >"$fuzz_log" 2>&1; then
+    tail -n 80 "$fuzz_log"
+    echo "test.sh: the fuzzer found a failing input; it is in build/fuzz/artifacts/" >&2
+    echo "test.sh: reproduce with: build/fuzz/fuzz/breakshot_fuzz build/fuzz/artifacts/FILE" >&2
+    false
+  fi
+  grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
+    "$fuzz_log" || true
+fi
+stage_done
+trap - ERR
+
+echo
+echo "==== stage times ===="
+printf '%s\n' "${timings[@]}"
+printf '%-44s %4ds\n' "total" $((SECONDS - t_start))
+echo
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,245 @@
+// Writing a result file (the Result section of
+// shared/contract/scenario-format.md).
+//
+// A gas run can have a million events, so the text is written straight
+// into one string instead of building a JSON tree first: the tree costs a
+// heap node per number and is several times slower to dump. Numbers are
+// printed with std::to_chars, the shortest text that reads back as the
+// same double, so the result is exact and the bytes depend only on the
+// values (the same run gives the same file).
+//
+// Layout: one event per line, one ball per line in "final", one sample
+// per line. Readable in an editor and easy to grep, and still compact.
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "breakshot/lab.hpp"
+#include "breakshot/scenario_io.hpp"
+
+namespace breakshot {
+namespace {
+
+class JsonWriter {
+ public:
+  explicit JsonWriter(std::string& out) : out_(out) {}
+
+  void raw(std::string_view s) { out_.append(s); }
+
+  /// A number that reads back as exactly `v`. Integral values keep a
+  /// ".0" so that readers in typed languages see a float every time.
+  /// JSON has no infinity or NaN: they are written as null, which is
+  /// still valid JSON (the command line refuses such a result anyway).
+  void number(double v) {
+    if (!std::isfinite(v)) {
+      out_.append("null");
+      return;
+    }
+    char buf[64];
+    const auto res = std::to_chars(buf, buf + sizeof buf, v);
+    const std::string_view text(buf, static_cast<std::size_t>(res.ptr - buf));
+    out_.append(text);
+    if (text.find_first_of(".e") == std::string_view::npos) out_.append(".0");
+  }
+
+  void string(std::string_view s) {
+    static constexpr char kHex[] = "0123456789abcdef";
+    out_.push_back('"');
+    for (const char c : s) {
+      const auto u = static_cast<unsigned char>(c);
+      switch (c) {
+        case '"': out_.append("\\\""); break;
+        case '\\': out_.append("\\\\"); break;
+        case '\n': out_.append("\\n"); break;
+        case '\r': out_.append("\\r"); break;
+        case '\t': out_.append("\\t"); break;
+        case '\b': out_.append("\\b"); break;
+        case '\f': out_.append("\\f"); break;
+        default:
+          if (u < 0x20) {
+            out_.append("\\u00");
+            out_.push_back(kHex[u >> 4]);
+            out_.push_back(kHex[u & 0xf]);
+          } else {
+            out_.push_back(c);
+          }
+      }
+    }
+    out_.push_back('"');
+  }
+
+  void vec2(Vec2 v) {
+    out_.push_back('[');
+    number(v.x);
+    out_.append(", ");
+    number(v.y);
+    out_.push_back(']');
+  }
+
+  void vec3(Vec3 v) {
+    out_.push_back('[');
+    number(v.x);
+    out_.append(", ");
+    number(v.y);
+    out_.append(", ");
+    number(v.z);
+    out_.push_back(']');
+  }
+
+ private:
+  std::string& out_;
+};
+
+class ResultWriter {
+ public:
+  ResultWriter(const Scenario& s, std::string& out) : s_(s), w_(out) {}
+
+  void write(const RunResult& r) {
+    w_.raw("{\n  \"complete\": ");
+    w_.raw(r.complete ? "true" : "false");
+    w_.raw(",\n  \"events\": [");
+    for (std::size_t k = 0; k < r.events.size(); ++k) {
+      w_.raw(k == 0 ? "\n    " : ",\n    ");
+      event(r.events[k]);
+    }
+    w_.raw(r.events.empty() ? "],\n" : "\n  ],\n");
+
+    w_.raw("  \"final\": {\n    \"time\": ");
+    w_.number(r.final_time);
+    w_.raw(",\n    \"balls\": [");
+    for (std::size_t i = 0; i < r.final_balls.size(); ++i) {
+      w_.raw(i == 0 ? "\n      " : ",\n      ");
+      ball(i, r.final_balls[i], false);
+    }
+    w_.raw(r.final_balls.empty() ? "]\n  }" : "\n    ]\n  }");
+
+    // Samples appear when they were asked for, even if a run stopped
+    // before the first one.
+    if (s_.sample_dt || !r.samples.empty()) {
+      w_.raw(",\n  \"samples\": [");
+      for (std::size_t k = 0; k < r.samples.size(); ++k) {
+        w_.raw(k == 0 ? "\n    " : ",\n    ");
+        sample(r.samples[k]);
+      }
+      w_.raw(r.samples.empty() ? "]" : "\n  ]");
+    }
+    w_.raw("\n}\n");
+  }
+
+ private:
+  /// The id of ball i, or null for an index the scenario does not have
+  /// (a broken result must still be valid JSON).
+  void id(std::int64_t i) {
+    if (i >= 0 && static_cast<std::size_t>(i) < s_.balls.size()) {
+      w_.string(s_.balls[static_cast<std::size_t>(i)].id);
+    } else {
+      w_.raw("null");
+    }
+  }
+
+  void event(const Event& e) {
+    w_.raw("{\"time\": ");
+    w_.number(e.time);
+    w_.raw(", \"type\": ");
+    w_.string(to_string(e.type));
+    w_.raw(", \"balls\": [");
+    id(e.ball);
+    if (e.type == EventType::ball_ball) {
+      w_.raw(", ");
+      id(e.other);
+    }
+    w_.raw("]");
+    switch (e.type) {
+      case EventType::ball_cushion:
+        w_.raw(", \"cushion\": ");
+        if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < s_.table.walls.size()) {
+          w_.string(s_.table.walls[static_cast<std::size_t>(e.wall)].name);
+        } else {
+          w_.raw("null");
+        }
+        break;
+      case EventType::ball_pocket:
+        // Tables have no named pockets yet; the index keeps the event
+        // useful until they do.
+        w_.raw(", \"pocket\": ");
+        w_.string("pocket" + std::to_string(e.pocket));
+        break;
+      case EventType::state_change:
+        w_.raw(", \"from\": ");
+        w_.string(to_string(e.from));
+        w_.raw(", \"to\": ");
+        w_.string(to_string(e.to));
+        break;
+      case EventType::cue_strike:
+      case EventType::ball_ball:
+        break;
+    }
+    w_.raw("}");
+  }
+
+  /// One ball of "final" (with its state) or of a sample (with its
+  /// kinetic energy, a per-ball breakdown the contract allows).
+  void ball(std::size_t i, const BallState& b, bool in_sample) {
+    w_.raw("{\"id\": ");
+    id(static_cast<std::int64_t>(i));
+    w_.raw(", \"position\": ");
+    w_.vec2(b.position);
+    w_.raw(", \"velocity\": ");
+    w_.vec2(b.velocity);
+    w_.raw(", \"spin\": ");
+    w_.vec3(b.spin);
+    if (in_sample) {
+      w_.raw(", \"kinetic_energy\": ");
+      w_.number(i < s_.balls.size() ? kinetic_energy(s_.balls[i], b) : 0.0);
+    } else {
+      w_.raw(", \"state\": ");
+      w_.string(to_string(b.state));
+    }
+    w_.raw("}");
+  }
+
+  void sample(const Sample& smp) {
+    w_.raw("{\"time\": ");
+    w_.number(smp.time);
+    w_.raw(", \"balls\": [");
+    double energy = 0.0;
+    Vec2 p;
+    for (std::size_t i = 0; i < smp.balls.size(); ++i) {
+      if (i > 0) w_.raw(", ");
+      ball(i, smp.balls[i], true);
+      // Summed in scenario order, so the totals are the same every run.
+      if (i < s_.balls.size()) {
+        energy += kinetic_energy(s_.balls[i], smp.balls[i]);
+        p += momentum(s_.balls[i], smp.balls[i]);
+      }
+    }
+    w_.raw("], \"kinetic_energy\": ");
+    w_.number(energy);
+    w_.raw(", \"momentum\": ");
+    w_.vec2(p);
+    w_.raw("}");
+  }
+
+  const Scenario& s_;
+  JsonWriter w_;
+};
+
+}  // namespace
+
+std::string write_result(const Scenario& scenario, const RunResult& result) {
+  std::string out;
+  // About 90 bytes per event and per ball of a sample: one allocation
+  // for most results instead of a doubling series.
+  std::size_t balls_in_samples = 0;
+  for (const Sample& smp : result.samples) balls_in_samples += smp.balls.size();
+  out.reserve(256 + 90 * result.events.size() + 160 * result.final_balls.size() +
+              160 * balls_in_samples);
+  ResultWriter(scenario, out).write(result);
+  return out;
+}
+
+}  // namespace breakshot

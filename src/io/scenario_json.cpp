@@ -1,0 +1,789 @@
+// Reading a scenario file: JSON text to a validated Scenario, or the
+// first problem found as a JSON path and a reason. The format is the
+// contract in shared/contract/scenario-format.md.
+//
+// The reader is strict on purpose: a scenario is usually written by hand,
+// and a typo in a field name that silently falls back to a default gives
+// a result that looks right and is not. So unknown fields, duplicate keys
+// and wrong types are all errors, each reported with its exact path.
+// Only objects named "extra" are free for the user's own data.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <initializer_list>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "breakshot/scenario.hpp"
+#include "breakshot/scenario_io.hpp"
+
+namespace breakshot {
+namespace {
+
+using nlohmann::json;
+
+/// The largest magnitude accepted for any real number in a scenario.
+/// The engine squares positions and velocities and multiplies the
+/// results again (the ball-ball contact quadratic needs (dp.dv)^2), so
+/// a coordinate near 1e100 would overflow to infinity in the middle of a
+/// run and put "inf" into the result. 1e12 (a million kilometres, or a
+/// million km/s) keeps every product the engine forms far from overflow
+/// while excluding no scenario that means anything physically.
+constexpr double kMaxMagnitude = 1e12;
+
+/// A run that asks for more samples than this is refused up front: each
+/// sample holds the state of every ball, so a tiny dt would otherwise end
+/// as an out-of-memory crash after a long wait.
+constexpr double kMaxSamples = 1e7;
+
+/// Path shown for problems with the document as a whole.
+constexpr const char* kDocumentPath = "(document)";
+
+bool is_identifier(std::string_view key) {
+  if (key.empty()) return false;
+  for (char c : key) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                    (c >= '0' && c <= '9') || c == '_';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+/// Appends the step to member `key` to a path: ".key" for ordinary keys
+/// (just "key" at the top), ["odd key"] for keys a reader could not
+/// otherwise tell apart.
+void append_member(std::string& path, std::string_view key) {
+  if (is_identifier(key)) {
+    if (!path.empty()) path += '.';
+    path += key;
+    return;
+  }
+  path += "[\"";
+  for (char c : key) {
+    if (c == '"' || c == '\\') path += '\\';
+    path += c;
+  }
+  path += "\"]";
+}
+
+void append_index(std::string& path, std::size_t i) {
+  path += '[';
+  path += std::to_string(i);
+  path += ']';
+}
+
+std::string member_path(std::string path, std::string_view key) {
+  append_member(path, key);
+  return path;
+}
+
+std::string index_path(std::string path, std::size_t i) {
+  append_index(path, i);
+  return path;
+}
+
+std::string type_name(const json& v) {
+  switch (v.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::string: return "a string";
+    case json::value_t::array: return "an array";
+    case json::value_t::object: return "an object";
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float: return "a number";
+    case json::value_t::binary: return "binary data";
+    case json::value_t::discarded: return "nothing";
+  }
+  return "an unknown value";
+}
+
+std::string expected(std::string_view what, const json& v) {
+  return "expected " + std::string(what) + ", not " + type_name(v);
+}
+
+/// Shortest text that reads back as the same double, for messages.
+std::string format_number(double v) {
+  return json(v).dump();
+}
+
+/// nlohmann's messages start with "[json.exception.parse_error.101] ";
+/// the user needs the rest (which has the line and column).
+std::string strip_exception_id(std::string_view what) {
+  if (!what.empty() && what.front() == '[') {
+    const auto close = what.find("] ");
+    if (close != std::string_view::npos) what.remove_prefix(close + 2);
+  }
+  return std::string(what);
+}
+
+/// Builds the document from the parser's events, and notices the first
+/// key that appears twice in one object. nlohmann's own parser keeps the
+/// last value of a repeated key without a word, which would hide a
+/// mistake exactly as an unknown field does. (Its parse callback could
+/// watch for repeats too, but that path is six times slower than this on
+/// a 10,000-ball scenario.) Content inside "extra" objects is the user's
+/// and is not checked. The builder keeps an explicit stack, so deep
+/// nesting cannot overflow the call stack.
+class DocumentBuilder {
+ public:
+  json root;
+  std::optional<std::string> duplicate_path;  ///< first repeated key
+  std::optional<std::string> parse_error_text;
+
+  // The SAX interface of nlohmann::json::sax_parse.
+  bool null() { return add(json(nullptr)) != nullptr; }
+  bool boolean(bool v) { return add(json(v)) != nullptr; }
+  bool number_integer(json::number_integer_t v) { return add(json(v)) != nullptr; }
+  bool number_unsigned(json::number_unsigned_t v) { return add(json(v)) != nullptr; }
+  bool number_float(json::number_float_t v, const json::string_t& /*text*/) {
+    return add(json(v)) != nullptr;
+  }
+  bool string(json::string_t& v) { return add(json(std::move(v))) != nullptr; }
+  bool binary(json::binary_t& v) { return add(json::binary(std::move(v))) != nullptr; }
+  bool start_object(std::size_t /*size*/) { return open(json::object()); }
+  bool start_array(std::size_t /*size*/) { return open(json::array()); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  bool key(json::string_t& k) {
+    Frame& f = frames_.back();
+    if (!f.ignored && !duplicate_path && f.value->contains(k)) {
+      duplicate_path = member_path(path_of_open_container(), k);
+    }
+    f.key = std::move(k);
+    return true;
+  }
+
+  bool parse_error(std::size_t /*position*/, const std::string& /*last_token*/,
+                   const json::exception& ex) {
+    parse_error_text = strip_exception_id(ex.what());
+    return false;
+  }
+
+ private:
+  struct Frame {
+    json* value = nullptr;  // stable: nothing is added to its parent while it is open
+    std::string key;        // key of the value being read (objects)
+    bool ignored = false;   // inside an "extra" object
+    // Where this container sits in its parent, for messages. The whole
+    // path is built only when needed: building it for every container
+    // would cost O(depth^2) on a deeply nested document.
+    std::string key_in_parent;
+    std::size_t index_in_parent = 0;
+    bool parent_is_object = false;
+  };
+
+  /// Puts a value where the parser is: the root, the current key of the
+  /// open object, or the end of the open array.
+  json* add(json&& v) {
+    if (frames_.empty()) {
+      root = std::move(v);
+      return &root;
+    }
+    Frame& f = frames_.back();
+    if (f.value->is_object()) {
+      json& slot = (*f.value)[f.key];
+      slot = std::move(v);
+      return &slot;
+    }
+    f.value->push_back(std::move(v));
+    return &f.value->back();
+  }
+
+  bool open(json&& v) {
+    Frame child;
+    if (!frames_.empty()) {
+      const Frame& parent = frames_.back();
+      child.ignored = parent.ignored || (parent.value->is_object() && parent.key == "extra");
+      child.parent_is_object = parent.value->is_object();
+      if (child.parent_is_object) {
+        child.key_in_parent = parent.key;
+      } else {
+        child.index_in_parent = parent.value->size();
+      }
+    }
+    child.value = add(std::move(v));
+    frames_.push_back(std::move(child));
+    return true;
+  }
+
+  bool close() {
+    frames_.pop_back();
+    return true;
+  }
+
+  std::string path_of_open_container() const {
+    std::string path;
+    for (std::size_t i = 1; i < frames_.size(); ++i) {
+      const Frame& f = frames_[i];
+      if (f.parent_is_object) {
+        append_member(path, f.key_in_parent);
+      } else {
+        append_index(path, f.index_in_parent);
+      }
+    }
+    return path;
+  }
+
+  std::vector<Frame> frames_;
+};
+
+/// Builds a Scenario from a parsed document. Every reading function
+/// returns false after recording the first problem in `error`; the first
+/// problem stops the whole read.
+class ScenarioReader {
+ public:
+  std::optional<ScenarioError> error;
+
+  bool read(const json& doc, Scenario& s);
+
+ private:
+  bool fail(std::string path, std::string reason, bool unsupported = false) {
+    error = ScenarioError{std::move(path), std::move(reason), unsupported};
+    return false;
+  }
+
+  static const json* find(const json& obj, std::string_view key) {
+    const auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+  }
+
+  bool require_object(const json& v, const std::string& path) {
+    if (v.is_object()) return true;
+    return fail(path, expected("an object", v));
+  }
+
+  /// Rejects any member of `obj` not in `allowed`. "extra" is always
+  /// allowed and never looked into.
+  bool check_fields(const json& obj, const std::string& path,
+                    std::initializer_list<std::string_view> allowed) {
+    for (const auto& [key, value] : obj.items()) {
+      if (key == "extra") continue;
+      bool known = false;
+      for (std::string_view a : allowed) known = known || key == a;
+      if (!known) return fail(member_path(path, key), "unknown field");
+    }
+    return true;
+  }
+
+  bool number(const json& v, const std::string& path, double& out) {
+    if (!v.is_number()) return fail(path, expected("a number", v));
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) return fail(path, "expected a finite number");
+    if (std::fabs(x) > kMaxMagnitude) {
+      return fail(path, "magnitude " + format_number(x) + " is too large (at most " +
+                            format_number(kMaxMagnitude) + ")");
+    }
+    out = x;
+    return true;
+  }
+
+  /// An optional number member: leaves `out` (its default) alone if absent.
+  bool optional_number(const json& obj, const std::string& path,
+                       std::string_view key, double& out) {
+    const json* v = find(obj, key);
+    return v == nullptr || number(*v, member_path(path, key), out);
+  }
+
+  bool vec(const json& v, const std::string& path, double* out, std::size_t n) {
+    if (!v.is_array() || v.size() != n) {
+      const std::string what = "an array of " + std::to_string(n) + " numbers";
+      if (v.is_array()) {
+        return fail(path, "expected " + what + ", not " + std::to_string(v.size()));
+      }
+      return fail(path, expected(what, v));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!number(v[i], index_path(path, i), out[i])) return false;
+    }
+    return true;
+  }
+
+  bool vec2(const json& v, const std::string& path, Vec2& out) {
+    double c[2] = {0.0, 0.0};
+    if (!vec(v, path, c, 2)) return false;
+    out = {c[0], c[1]};
+    return true;
+  }
+
+  bool vec3(const json& v, const std::string& path, Vec3& out) {
+    double c[3] = {0.0, 0.0, 0.0};
+    if (!vec(v, path, c, 3)) return false;
+    out = {c[0], c[1], c[2]};
+    return true;
+  }
+
+  bool non_negative(double x, const std::string& path) {
+    if (x >= 0.0) return true;
+    return fail(path, "must be >= 0, not " + format_number(x));
+  }
+
+  bool positive(double x, const std::string& path) {
+    if (x > 0.0) return true;
+    return fail(path, "must be positive, not " + format_number(x));
+  }
+
+  bool restitution(double x, const std::string& path) {
+    if (x >= 0.0 && x <= 1.0) return true;
+    return fail(path, "restitution must be in [0, 1], not " + format_number(x));
+  }
+
+  bool read_physics(const json& doc, Scenario& s);
+  bool read_table(const json& doc, Scenario& s);
+  bool read_balls(const json& doc, Scenario& s);
+  bool read_ball(const json& v, const std::string& path, Scenario& s);
+  bool read_pairs(const json& doc, Scenario& s);
+  bool read_until(const json& doc, Scenario& s);
+  bool read_samples(const json& doc, Scenario& s);
+  bool read_max_events(const json& doc, Scenario& s);
+  bool check_run_ends(const json& doc, const Scenario& s);
+  bool check_sample_count(const Scenario& s);
+
+  std::unordered_map<std::string, std::int32_t> index_of_;  // ball id -> index
+};
+
+bool ScenarioReader::read(const json& doc, Scenario& s) {
+  if (!doc.is_object()) return fail(kDocumentPath, expected("an object", doc));
+  if (!check_fields(doc, "",
+                    {"physics", "table", "balls", "pair_restitution", "rack", "cue",
+                     "until", "samples", "max_events"})) {
+    return false;
+  }
+  // The physics come first: the model decides what the rest may contain.
+  if (!read_physics(doc, s)) return false;
+  if (!read_table(doc, s)) return false;
+  if (find(doc, "rack") != nullptr) {
+    return fail("rack", "racks are not implemented yet", true);
+  }
+  if (find(doc, "cue") != nullptr) {
+    // A cue strike gives the ball spin, which only the pool model has.
+    return fail("cue", "a cue strike needs the pool model");
+  }
+  if (!read_balls(doc, s)) return false;
+  if (!read_pairs(doc, s)) return false;
+  if (!read_until(doc, s)) return false;
+  if (!read_samples(doc, s)) return false;
+  if (!read_max_events(doc, s)) return false;
+  if (!check_run_ends(doc, s)) return false;
+  if (!check_sample_count(s)) return false;
+  // Geometry (inside the table, no overlaps) and everything a scenario
+  // built in code must also satisfy.
+  if (auto problem = validate(s)) {
+    error = std::move(problem);
+    return false;
+  }
+  return true;
+}
+
+bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
+  const json* p = find(doc, "physics");
+  if (p == nullptr) return fail("physics", "missing required field");
+  const std::string path = "physics";
+  if (!require_object(*p, path)) return false;
+  if (!check_fields(*p, path,
+                    {"model", "ball_ball_restitution", "ball_ball_friction", "gravity",
+                     "deceleration", "sliding_friction", "rolling_friction",
+                     "spinning_friction", "collapse_speed"})) {
+    return false;
+  }
+
+  const json* m = find(*p, "model");
+  const std::string model_path = "physics.model";
+  if (m == nullptr) {
+    return fail(model_path, "missing required field (\"ideal\", \"friction\" or \"pool\")");
+  }
+  if (!m->is_string()) return fail(model_path, expected("a string", *m));
+  const std::string model = m->get<std::string>();
+  PhysicsParams& ph = s.physics;
+  ph = PhysicsParams{};
+  if (model == "ideal") {
+    ph.model = Model::ideal;
+  } else if (model == "friction") {
+    ph.model = Model::friction;
+  } else if (model == "pool") {
+    return fail(model_path, "the pool model is not implemented yet", true);
+  } else {
+    return fail(model_path, "unknown model \"" + model +
+                                "\" (expected \"ideal\", \"friction\" or \"pool\")");
+  }
+
+  // Read in the contract's order so that the first problem reported is
+  // the first one in a file written in that order.
+  if (!optional_number(*p, path, "ball_ball_restitution", ph.ball_ball_restitution) ||
+      !restitution(ph.ball_ball_restitution, member_path(path, "ball_ball_restitution"))) {
+    return false;
+  }
+  if (!optional_number(*p, path, "ball_ball_friction", ph.ball_ball_friction) ||
+      !non_negative(ph.ball_ball_friction, member_path(path, "ball_ball_friction"))) {
+    return false;
+  }
+  if (!optional_number(*p, path, "gravity", ph.gravity) ||
+      !non_negative(ph.gravity, member_path(path, "gravity"))) {
+    return false;
+  }
+  const bool has_deceleration = find(*p, "deceleration") != nullptr;
+  if (!optional_number(*p, path, "deceleration", ph.deceleration) ||
+      !non_negative(ph.deceleration, member_path(path, "deceleration"))) {
+    return false;
+  }
+  if (!optional_number(*p, path, "sliding_friction", ph.sliding_friction) ||
+      !non_negative(ph.sliding_friction, member_path(path, "sliding_friction"))) {
+    return false;
+  }
+  if (!optional_number(*p, path, "rolling_friction", ph.rolling_friction) ||
+      !non_negative(ph.rolling_friction, member_path(path, "rolling_friction"))) {
+    return false;
+  }
+  if (!optional_number(*p, path, "spinning_friction", ph.spinning_friction) ||
+      !non_negative(ph.spinning_friction, member_path(path, "spinning_friction"))) {
+    return false;
+  }
+  if (!optional_number(*p, path, "collapse_speed", ph.collapse_speed) ||
+      !positive(ph.collapse_speed, member_path(path, "collapse_speed"))) {
+    return false;
+  }
+  // Without an explicit deceleration a ball slows as a rolling ball does
+  // on cloth: mu_r g (0.0981 m/s^2 with the defaults).
+  if (!has_deceleration) ph.deceleration = ph.rolling_friction * ph.gravity;
+  return true;
+}
+
+bool ScenarioReader::read_table(const json& doc, Scenario& s) {
+  const json* t = find(doc, "table");
+  const std::string path = "table";
+  if (t == nullptr) return fail(path, "missing required field");
+  if (!require_object(*t, path)) return false;
+
+  const json* shape_v = find(*t, "shape");
+  const std::string shape_path = "table.shape";
+  if (shape_v == nullptr) return fail(shape_path, "missing required field");
+  if (!shape_v->is_string()) return fail(shape_path, expected("a string", *shape_v));
+  const std::string shape = shape_v->get<std::string>();
+
+  if (shape == "rectangle") {
+    if (!check_fields(*t, path, {"shape", "min", "max"})) return false;
+    const json* lo = find(*t, "min");
+    const json* hi = find(*t, "max");
+    if (lo == nullptr) return fail("table.min", "missing required field");
+    if (hi == nullptr) return fail("table.max", "missing required field");
+    Vec2 min;
+    Vec2 max;
+    if (!vec2(*lo, "table.min", min) || !vec2(*hi, "table.max", max)) return false;
+    if (!(min.x < max.x && min.y < max.y)) {
+      return fail("table.max", "must be greater than table.min in both x and y");
+    }
+    try {
+      s.table = make_rectangle(min, max);
+    } catch (const std::exception& e) {
+      return fail("table", e.what());
+    }
+    return true;
+  }
+
+  if (shape == "polygon") {
+    if (!check_fields(*t, path, {"shape", "vertices"})) return false;
+    const json* vs = find(*t, "vertices");
+    const std::string vpath = "table.vertices";
+    if (vs == nullptr) return fail(vpath, "missing required field");
+    if (!vs->is_array()) return fail(vpath, expected("an array of [x, y] points", *vs));
+    std::vector<Vec2> vertices(vs->size());
+    for (std::size_t i = 0; i < vs->size(); ++i) {
+      if (!vec2((*vs)[i], index_path(vpath, i), vertices[i])) return false;
+    }
+    try {
+      s.table = make_polygon(vertices);
+    } catch (const std::exception& e) {
+      // make_polygon says what is wrong: too few vertices, a repeated
+      // vertex, zero area or edges that cross.
+      return fail(vpath, e.what());
+    }
+    return true;
+  }
+
+  if (shape == "pool" || shape == "snooker" || shape == "carom") {
+    return fail(shape_path, "the " + shape + " table is not implemented yet", true);
+  }
+  return fail(shape_path, "unknown shape \"" + shape +
+                              "\" (expected rectangle, polygon, pool, snooker or carom)");
+}
+
+bool ScenarioReader::read_balls(const json& doc, Scenario& s) {
+  const json* bs = find(doc, "balls");
+  const std::string path = "balls";
+  if (bs == nullptr) return fail(path, "missing required field");
+  if (!bs->is_array()) return fail(path, expected("an array of balls", *bs));
+  s.balls.clear();
+  s.start.clear();
+  s.balls.reserve(bs->size());
+  s.start.reserve(bs->size());
+  index_of_.reserve(bs->size());
+  for (std::size_t i = 0; i < bs->size(); ++i) {
+    if (!read_ball((*bs)[i], index_path(path, i), s)) return false;
+  }
+  return true;
+}
+
+bool ScenarioReader::read_ball(const json& v, const std::string& path, Scenario& s) {
+  if (!require_object(v, path)) return false;
+  if (!check_fields(v, path,
+                    {"id", "position", "velocity", "spin", "radius", "mass",
+                     "wall_restitution"})) {
+    return false;
+  }
+  BallSpec spec;
+  BallState state;
+
+  const json* id = find(v, "id");
+  const std::string id_path = member_path(path, "id");
+  if (id == nullptr) return fail(id_path, "missing required field");
+  if (!id->is_string()) return fail(id_path, expected("a string", *id));
+  spec.id = id->get<std::string>();
+  if (spec.id.empty()) return fail(id_path, "must not be empty");
+  const auto index = static_cast<std::int32_t>(s.balls.size());
+  if (const auto [it, inserted] = index_of_.emplace(spec.id, index); !inserted) {
+    return fail(id_path, "duplicate id '" + spec.id + "' (also balls[" +
+                             std::to_string(it->second) + "])");
+  }
+
+  const json* pos = find(v, "position");
+  if (pos == nullptr) return fail(member_path(path, "position"), "missing required field");
+  if (!vec2(*pos, member_path(path, "position"), state.position)) return false;
+  if (const json* vel = find(v, "velocity")) {
+    if (!vec2(*vel, member_path(path, "velocity"), state.velocity)) return false;
+  }
+  if (const json* spin = find(v, "spin")) {
+    const std::string spin_path = member_path(path, "spin");
+    if (!vec3(*spin, spin_path, state.spin)) return false;
+    // Only the pool model has rotation; elsewhere a nonzero spin would be
+    // silently dropped.
+    if (state.spin != Vec3{} && s.physics.model != Model::pool) {
+      return fail(spin_path, "spin needs the pool model");
+    }
+  }
+  if (!optional_number(v, path, "radius", spec.radius) ||
+      !positive(spec.radius, member_path(path, "radius"))) {
+    return false;
+  }
+  if (!optional_number(v, path, "mass", spec.mass) ||
+      !positive(spec.mass, member_path(path, "mass"))) {
+    return false;
+  }
+  if (!optional_number(v, path, "wall_restitution", spec.wall_restitution) ||
+      !restitution(spec.wall_restitution, member_path(path, "wall_restitution"))) {
+    return false;
+  }
+  state.state = state.velocity == Vec2{} ? MotionState::stationary : MotionState::moving;
+  s.balls.push_back(std::move(spec));
+  s.start.push_back(state);
+  return true;
+}
+
+bool ScenarioReader::read_pairs(const json& doc, Scenario& s) {
+  s.pair_restitution.clear();
+  const json* ps = find(doc, "pair_restitution");
+  if (ps == nullptr) return true;
+  const std::string path = "pair_restitution";
+  if (!ps->is_array()) return fail(path, expected("an array", *ps));
+  // Key a * n + b with a < b, to find a pair listed twice.
+  std::unordered_map<std::uint64_t, std::size_t> seen;
+  const auto n = static_cast<std::uint64_t>(s.balls.size());
+  for (std::size_t k = 0; k < ps->size(); ++k) {
+    const json& entry = (*ps)[k];
+    const std::string epath = index_path(path, k);
+    if (!require_object(entry, epath)) return false;
+    if (!check_fields(entry, epath, {"balls", "restitution"})) return false;
+
+    const json* ids = find(entry, "balls");
+    const std::string ids_path = member_path(epath, "balls");
+    if (ids == nullptr) return fail(ids_path, "missing required field");
+    if (!ids->is_array() || ids->size() != 2) {
+      if (ids->is_array()) {
+        return fail(ids_path, "expected 2 ball ids, not " + std::to_string(ids->size()));
+      }
+      return fail(ids_path, expected("an array of 2 ball ids", *ids));
+    }
+    std::int32_t idx[2] = {0, 0};
+    for (std::size_t j = 0; j < 2; ++j) {
+      const json& idv = (*ids)[j];
+      const std::string jpath = index_path(ids_path, j);
+      if (!idv.is_string()) return fail(jpath, expected("a ball id (a string)", idv));
+      const auto it = index_of_.find(idv.get<std::string>());
+      if (it == index_of_.end()) {
+        return fail(jpath, "no ball has the id '" + idv.get<std::string>() + "'");
+      }
+      idx[j] = it->second;
+    }
+    if (idx[0] == idx[1]) return fail(ids_path, "the two balls must differ");
+
+    const json* e = find(entry, "restitution");
+    const std::string e_path = member_path(epath, "restitution");
+    if (e == nullptr) return fail(e_path, "missing required field");
+    PairRestitution pr;
+    pr.a = std::min(idx[0], idx[1]);
+    pr.b = std::max(idx[0], idx[1]);
+    if (!number(*e, e_path, pr.restitution) || !restitution(pr.restitution, e_path)) {
+      return false;
+    }
+    const std::uint64_t key = static_cast<std::uint64_t>(pr.a) * n + static_cast<std::uint64_t>(pr.b);
+    if (const auto [it, inserted] = seen.emplace(key, k); !inserted) {
+      return fail(ids_path, "the pair '" + s.balls[static_cast<std::size_t>(pr.a)].id +
+                                "', '" + s.balls[static_cast<std::size_t>(pr.b)].id +
+                                "' is already listed at pair_restitution[" +
+                                std::to_string(it->second) + "]");
+    }
+    s.pair_restitution.push_back(pr);
+  }
+  return true;
+}
+
+bool ScenarioReader::read_until(const json& doc, Scenario& s) {
+  const json* u = find(doc, "until");
+  const std::string path = "until";
+  if (u == nullptr) {
+    // The ideal model never comes to rest by itself, so it needs a time.
+    if (s.physics.model == Model::ideal) {
+      return fail(path, "missing required field: the ideal model needs {\"time\": T}");
+    }
+    s.until = Until{};
+    return true;
+  }
+  if (u->is_string()) {
+    if (u->get<std::string>() != "rest") {
+      return fail(path, "expected \"rest\" or {\"time\": T}, not \"" +
+                            u->get<std::string>() + "\"");
+    }
+    s.until = Until{};
+    return true;
+  }
+  if (!u->is_object()) return fail(path, expected("\"rest\" or {\"time\": T}", *u));
+  if (!check_fields(*u, path, {"time"})) return false;
+  const json* t = find(*u, "time");
+  const std::string t_path = "until.time";
+  if (t == nullptr) return fail(t_path, "missing required field");
+  Until until;
+  until.rest = false;
+  if (!number(*t, t_path, until.time) || !positive(until.time, t_path)) return false;
+  s.until = until;
+  return true;
+}
+
+bool ScenarioReader::read_samples(const json& doc, Scenario& s) {
+  s.sample_dt.reset();
+  const json* v = find(doc, "samples");
+  if (v == nullptr) return true;
+  const std::string path = "samples";
+  if (!require_object(*v, path)) return false;
+  if (!check_fields(*v, path, {"dt"})) return false;
+  const json* dt = find(*v, "dt");
+  const std::string dt_path = "samples.dt";
+  if (dt == nullptr) return fail(dt_path, "missing required field");
+  double h = 0.0;
+  if (!number(*dt, dt_path, h) || !positive(h, dt_path)) return false;
+  s.sample_dt = h;
+  return true;
+}
+
+bool ScenarioReader::read_max_events(const json& doc, Scenario& s) {
+  const json* v = find(doc, "max_events");
+  if (v == nullptr) return true;  // keeps the default
+  const std::string path = "max_events";
+  if (v->is_number_unsigned()) {
+    s.max_events = v->get<std::uint64_t>();
+  } else if (v->is_number_integer()) {
+    // nlohmann gives signed integers only to negative numbers.
+    return fail(path, "must be a positive integer, not " + v->dump());
+  } else if (v->is_number_float()) {
+    // 1e6 is a float in JSON but a fine count; 2.5 is not.
+    const double x = v->get<double>();
+    if (!(x >= 1.0 && x < 18446744073709551616.0 && std::floor(x) == x)) {
+      return fail(path, "must be a positive integer, not " + format_number(x));
+    }
+    s.max_events = static_cast<std::uint64_t>(x);
+  } else {
+    return fail(path, expected("a positive integer", *v));
+  }
+  if (s.max_events == 0) return fail(path, "must be a positive integer, not 0");
+  return true;
+}
+
+/// "rest" must come: in the ideal model, or the friction model without
+/// deceleration, a moving ball never stops and the run would only end at
+/// max_events, long after the user wanted an answer.
+bool ScenarioReader::check_run_ends(const json& doc, const Scenario& s) {
+  if (!s.until.rest) return true;
+  const bool given = find(doc, "until") != nullptr;
+  const std::string how = given ? "\"rest\" never comes" :
+                                  "no \"until\" given and the default \"rest\" never comes";
+  for (std::size_t i = 0; i < s.balls.size(); ++i) {
+    const double speed = norm(s.start[i].velocity);
+    if (speed == 0.0) continue;
+    const std::string who = "ball '" + s.balls[i].id + "' moves";
+    if (s.physics.model == Model::ideal) {
+      return fail("until", how + ": nothing slows a ball in the ideal model and " + who +
+                               "; give {\"time\": T}");
+    }
+    if (s.physics.model == Model::friction) {
+      if (s.physics.deceleration == 0.0) {
+        return fail("until", how + ": physics.deceleration is 0 and " + who +
+                                 "; give {\"time\": T} or a positive deceleration");
+      }
+      if (!std::isfinite(speed / s.physics.deceleration)) {
+        return fail("until", how + ": physics.deceleration is too small for " + who +
+                                 " ever to stop; give {\"time\": T}");
+      }
+    }
+  }
+  return true;
+}
+
+bool ScenarioReader::check_sample_count(const Scenario& s) {
+  // With "rest" the end is unknown until the run is over, so the count
+  // cannot be checked here.
+  if (!s.sample_dt || s.until.rest) return true;
+  const double count = s.until.time / *s.sample_dt;
+  if (count > kMaxSamples) {
+    return fail("samples.dt", "would make about " + format_number(std::floor(count)) +
+                                  " samples up to until.time (at most 10,000,000 are allowed)");
+  }
+  return true;
+}
+
+}  // namespace
+
+std::variant<Scenario, ScenarioError> read_scenario(std::string_view json_text) {
+  try {
+    DocumentBuilder builder;
+    // Syntax errors, and numbers too large for a double (1e400), come
+    // back through parse_error with the line and column.
+    const bool parsed = json::sax_parse(json_text.begin(), json_text.end(), &builder);
+    if (!parsed || builder.parse_error_text) {
+      return ScenarioError{kDocumentPath, builder.parse_error_text.value_or("not valid JSON")};
+    }
+    if (builder.duplicate_path) return ScenarioError{*builder.duplicate_path, "duplicate key"};
+    const json& doc = builder.root;
+    Scenario scenario;
+    ScenarioReader reader;
+    if (!reader.read(doc, scenario)) return *reader.error;
+    return scenario;
+  } catch (const std::bad_alloc&) {
+    return ScenarioError{kDocumentPath, "out of memory while reading the scenario"};
+  } catch (const std::exception& e) {
+    // Not expected: every check above reports instead of throwing. Kept
+    // so that a bug here is an error message, never a crash.
+    return ScenarioError{kDocumentPath, std::string("internal error: ") + e.what()};
+  }
+}
+
+}  // namespace breakshot

@@ -1,0 +1,40 @@
+// Names of enumerations as they appear in scenario and result files.
+#include "breakshot/ball.hpp"
+#include "breakshot/event.hpp"
+#include "breakshot/physics.hpp"
+
+namespace breakshot {
+
+std::string_view to_string(Model m) {
+  switch (m) {
+    case Model::ideal: return "ideal";
+    case Model::friction: return "friction";
+    case Model::pool: return "pool";
+  }
+  return "?";
+}
+
+std::string_view to_string(MotionState s) {
+  switch (s) {
+    case MotionState::stationary: return "stationary";
+    case MotionState::moving: return "moving";
+    case MotionState::sliding: return "sliding";
+    case MotionState::rolling: return "rolling";
+    case MotionState::spinning: return "spinning";
+    case MotionState::pocketed: return "pocketed";
+  }
+  return "?";
+}
+
+std::string_view to_string(EventType t) {
+  switch (t) {
+    case EventType::cue_strike: return "cue_strike";
+    case EventType::ball_ball: return "ball_ball";
+    case EventType::ball_cushion: return "ball_cushion";
+    case EventType::ball_pocket: return "ball_pocket";
+    case EventType::state_change: return "state_change";
+  }
+  return "?";
+}
+
+}  // namespace breakshot

@@ -1,0 +1,696 @@
+// The event loop: predict each ball's earliest event, pop the earliest of
+// all, re-check it, advance only the balls involved, resolve, re-predict.
+// docs/architecture.md follows one scenario through this file.
+#include "breakshot/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "breakshot/roots.hpp"
+
+namespace breakshot {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Below this many balls every pair is checked; above it a grid of cells
+// keeps the per-event cost independent of the number of balls.
+constexpr std::size_t kCellThreshold = 48;
+
+// A wall contact counts if the foot of the ball's centre on the wall's
+// line lies on the segment, with this much slack (as a fraction of the
+// segment's length) so that a ball arriving exactly at the junction of
+// two walls is caught by one of them.
+constexpr double kSegmentSlack = 1e-9;
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Set-up
+
+Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
+  const std::size_t n = scenario_.balls.size();
+  traj_.resize(n);
+  counter_.assign(n, 0);
+  next_.resize(n);
+  heap_.resize(n);
+  heap_pos_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Trajectory& tr = traj_[i];
+    tr.t0 = 0.0;
+    tr.p0 = scenario_.start[i].position;
+    tr.w0 = scenario_.start[i].spin;
+    tr.state = MotionState::stationary;
+    tr.t_end = kInf;
+    set_velocity(static_cast<std::int32_t>(i), scenario_.start[i].velocity);
+  }
+
+  // Pair restitutions, sorted for binary search at collision time.
+  std::vector<std::pair<std::uint64_t, double>> pairs;
+  for (const PairRestitution& p : scenario_.pair_restitution) {
+    const auto a = static_cast<std::uint64_t>(std::min(p.a, p.b));
+    const auto b = static_cast<std::uint64_t>(std::max(p.a, p.b));
+    pairs.emplace_back(a * n + b, p.restitution);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  for (const auto& [k, e] : pairs) {
+    pair_keys_.push_back(k);
+    pair_values_.push_back(e);
+  }
+
+  if (n >= kCellThreshold) {
+    // Cells at least a ball diameter wide (with a margin for round-off) so
+    // that two balls in contact are always in neighbouring cells, and
+    // about one ball per cell otherwise.
+    double max_r = 0.0;
+    for (const BallSpec& b : scenario_.balls) max_r = std::max(max_r, b.radius);
+    const Vec2 size = scenario_.table.max - scenario_.table.min;
+    const double per_ball = std::sqrt(size.x * size.y / static_cast<double>(n));
+    cell_size_ = std::max(2.0 * max_r * 1.01, per_ball);
+    const double nx = std::ceil(size.x / cell_size_);
+    const double ny = std::ceil(size.y / cell_size_);
+    // A very large table with tiny balls would want billions of cells;
+    // then cells would not pay off and we check every pair.
+    if (nx * ny <= 16.0 * static_cast<double>(n) + 64.0) {
+      use_cells_ = true;
+      grid_origin_ = scenario_.table.min;
+      grid_nx_ = std::max<std::int32_t>(1, static_cast<std::int32_t>(nx));
+      grid_ny_ = std::max<std::int32_t>(1, static_cast<std::int32_t>(ny));
+      cell_head_.assign(static_cast<std::size_t>(grid_nx_) * static_cast<std::size_t>(grid_ny_), -1);
+      cell_next_.assign(n, -1);
+      cell_prev_.assign(n, -1);
+      ball_cell_.assign(n, -1);
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto bi = static_cast<std::int32_t>(i);
+        cell_link(bi, cell_index(traj_[i].p0));
+      }
+    }
+  }
+
+  for (std::size_t i = 0; i < n; ++i) {
+    heap_[i] = static_cast<std::int32_t>(i);
+    heap_pos_[i] = static_cast<std::int32_t>(i);
+  }
+  for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
+  // Build the heap bottom-up.
+  for (std::size_t k = n / 2; k-- > 0;) {
+    std::size_t pos = k;
+    for (;;) {
+      const std::size_t l = 2 * pos + 1;
+      const std::size_t r = l + 1;
+      std::size_t m = pos;
+      if (l < n && heap_less(heap_[l], heap_[m])) m = l;
+      if (r < n && heap_less(heap_[r], heap_[m])) m = r;
+      if (m == pos) break;
+      heap_swap(pos, m);
+      pos = m;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Motion
+
+Vec2 Simulation::acceleration_for(Vec2 v) const {
+  if (scenario_.physics.model == Model::friction) {
+    const double s = norm(v);
+    if (s > 0.0) return v * (-scenario_.physics.deceleration / s);
+  }
+  return {};
+}
+
+void Simulation::set_velocity(std::int32_t i, Vec2 v) {
+  Trajectory& tr = traj_[static_cast<std::size_t>(i)];
+  const bool was_moving = tr.state != MotionState::stationary;
+  tr.v0 = v;
+  tr.acc = acceleration_for(v);
+  const double speed = norm(v);
+  tr.state = speed > 0.0 ? MotionState::moving : MotionState::stationary;
+  tr.t_end = kInf;
+  if (speed > 0.0 && scenario_.physics.model == Model::friction &&
+      scenario_.physics.deceleration > 0.0) {
+    tr.t_end = tr.t0 + speed / scenario_.physics.deceleration;
+  }
+  const bool moving = tr.state != MotionState::stationary;
+  if (moving && !was_moving) ++moving_;
+  if (!moving && was_moving) --moving_;
+}
+
+Vec2 Simulation::position_at(std::int32_t i, double t) const {
+  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
+  const double dt = std::min(t, tr.t_end) - tr.t0;
+  return tr.p0 + tr.v0 * dt + tr.acc * (0.5 * dt * dt);
+}
+
+Vec2 Simulation::velocity_at(std::int32_t i, double t) const {
+  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
+  if (t >= tr.t_end) return {};
+  return tr.v0 + tr.acc * (t - tr.t0);
+}
+
+BallState Simulation::state_at(std::int32_t i, double t) const {
+  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
+  BallState s;
+  s.position = position_at(i, t);
+  s.velocity = velocity_at(i, t);
+  s.spin = tr.w0;
+  s.state = t >= tr.t_end ? MotionState::stationary : tr.state;
+  return s;
+}
+
+void Simulation::move_to(std::int32_t i, double t) {
+  Trajectory& tr = traj_[static_cast<std::size_t>(i)];
+  if (t == tr.t0) return;
+  const Vec2 p = position_at(i, t);
+  const Vec2 v = velocity_at(i, t);
+  tr.p0 = p;
+  tr.v0 = v;
+  tr.t0 = t;
+}
+
+BallState Simulation::ball(std::size_t i) const {
+  return state_at(static_cast<std::int32_t>(i), now_);
+}
+
+std::vector<BallState> Simulation::balls() const {
+  std::vector<BallState> out;
+  out.reserve(traj_.size());
+  for (std::size_t i = 0; i < traj_.size(); ++i) out.push_back(ball(i));
+  return out;
+}
+
+bool Simulation::at_rest() const { return moving_ == 0; }
+
+// ---------------------------------------------------------------------------
+// Prediction
+
+namespace {
+
+// Among a ball's candidate events at the same time the order is fixed by
+// kind (ball, wall, stop, cell) and then by index, so the choice never
+// depends on the order in which candidates were examined (cells list
+// balls in arbitrary order).
+template <class P, class K>
+void consider(P& best, double t, K kind, std::int32_t other, std::uint64_t counter) {
+  if (best.kind == K::none || t < best.time ||
+      (t == best.time && (kind < best.kind || (kind == best.kind && other < best.other)))) {
+    best = {t, kind, other, counter};
+  }
+}
+
+}  // namespace
+
+void Simulation::predict_ball_pair(std::int32_t i, std::int32_t j, Prediction& best) const {
+  const Trajectory& A = traj_[static_cast<std::size_t>(i)];
+  const Trajectory& B = traj_[static_cast<std::size_t>(j)];
+  if (A.state == MotionState::stationary && B.state == MotionState::stationary) return;
+  const double t = origin_;
+  const double window = std::max(0.0, std::min(A.t_end, B.t_end) - t);
+  const Vec2 dp = position_at(j, t) - position_at(i, t);
+  const Vec2 dv = velocity_at(j, t) - velocity_at(i, t);
+  const Vec2 da = (t < B.t_end ? B.acc : Vec2{}) - (t < A.t_end ? A.acc : Vec2{});
+  const double sigma = scenario_.balls[static_cast<std::size_t>(i)].radius +
+                       scenario_.balls[static_cast<std::size_t>(j)].radius;
+  const double dist2 = norm2(dp);
+  double tau = kInf;
+  if (da.x == 0.0 && da.y == 0.0) {
+    const double b = dot(dp, dv);
+    if (b >= 0.0) return;  // moving apart or not at all: never closer
+    tau = first_contact_quadratic(dist2 - sigma * sigma, b, norm2(dv));
+    if (tau > window) return;
+  } else {
+    // Cheap rejection: the gap can close by at most |dv| w + |da| w^2 / 2.
+    const double gap = std::sqrt(dist2) - sigma;
+    const double w = window;
+    if (gap > 0.0 && w < kInf && norm(dv) * w + 0.5 * norm(da) * w * w < gap) return;
+    // |dp + dv s + da s^2 / 2|^2 - sigma^2 as a quartic in s.
+    const double c[5] = {dist2 - sigma * sigma, 2.0 * dot(dp, dv), norm2(dv) + dot(dp, da),
+                         dot(dv, da), 0.25 * norm2(da)};
+    tau = first_contact(c, 4, window);
+  }
+  if (!(tau < kInf)) return;
+  consider(best, t + tau, Kind::ball, j, counter_[static_cast<std::size_t>(j)]);
+}
+
+void Simulation::predict_walls(std::int32_t i, Prediction& best) const {
+  const Trajectory& A = traj_[static_cast<std::size_t>(i)];
+  if (A.state == MotionState::stationary) return;
+  const double t = origin_;
+  const double window = std::max(0.0, A.t_end - t);
+  const Vec2 p = position_at(i, t);
+  const Vec2 v = velocity_at(i, t);
+  const Vec2 a = t < A.t_end ? A.acc : Vec2{};
+  const double r = scenario_.balls[static_cast<std::size_t>(i)].radius;
+  const auto& walls = scenario_.table.walls;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const Wall& wall = walls[w];
+    double tau = kInf;
+    if (wall.kind == WallKind::segment) {
+      const Vec2 n = wall.normal;
+      const double c0 = dot(n, p - wall.a) - r;
+      const double c1 = dot(n, v);
+      const double c2 = 0.5 * dot(n, a);
+      if (c2 == 0.0) {
+        if (c1 >= 0.0) continue;
+        tau = c0 <= 0.0 ? 0.0 : -c0 / c1;
+      } else {
+        const double c[3] = {c0, c1, c2};
+        tau = first_contact(c, 2, window);
+      }
+      if (!(tau <= window)) continue;
+      // Is the contact on the segment itself, not on its line's extension?
+      const Vec2 q = p + v * tau + a * (0.5 * tau * tau);
+      const Vec2 ab = wall.b - wall.a;
+      const double s = dot(q - wall.a, ab) / norm2(ab);
+      if (s < -kSegmentSlack || s > 1.0 + kSegmentSlack) continue;
+    } else {
+      const Vec2 d = p - wall.a;
+      if (a.x == 0.0 && a.y == 0.0) {
+        const double b = dot(d, v);
+        if (b >= 0.0) continue;
+        tau = first_contact_quadratic(norm2(d) - r * r, b, norm2(v));
+      } else {
+        const double c[5] = {norm2(d) - r * r, 2.0 * dot(d, v), norm2(v) + dot(d, a), dot(v, a),
+                             0.25 * norm2(a)};
+        tau = first_contact(c, 4, window);
+      }
+      if (!(tau <= window)) continue;
+    }
+    consider(best, t + tau, Kind::wall, static_cast<std::int32_t>(w), 0);
+  }
+}
+
+void Simulation::predict_cell(std::int32_t i, Prediction& best) const {
+  const Trajectory& A = traj_[static_cast<std::size_t>(i)];
+  if (A.state == MotionState::stationary) return;
+  const double t = origin_;
+  const double window = std::max(0.0, A.t_end - t);
+  const Vec2 p = position_at(i, t);
+  const Vec2 v = velocity_at(i, t);
+  const Vec2 a = t < A.t_end ? A.acc : Vec2{};
+  const std::int32_t cell = ball_cell_[static_cast<std::size_t>(i)];
+  const std::int32_t cx = cell % grid_nx_;
+  const std::int32_t cy = cell / grid_nx_;
+  const double lo[2] = {grid_origin_.x + cell_size_ * cx, grid_origin_.y + cell_size_ * cy};
+  const double pos[2] = {p.x, p.y};
+  const double vel[2] = {v.x, v.y};
+  const double acc[2] = {a.x, a.y};
+  const std::int32_t idx[2] = {cx, cy};
+  const std::int32_t count[2] = {grid_nx_, grid_ny_};
+  // Direction codes: 0 = +x, 1 = -x, 2 = +y, 3 = -y. Leaving a cell is a
+  // "contact" of the ball's centre with the cell's edge, found with the
+  // same root finder as the collisions.
+  for (int axis = 0; axis < 2; ++axis) {
+    if (idx[axis] + 1 < count[axis]) {
+      const double c[3] = {lo[axis] + cell_size_ - pos[axis], -vel[axis], -0.5 * acc[axis]};
+      const double tau = first_contact(c, 2, window);
+      if (tau <= window) consider(best, t + tau, Kind::cell, 2 * axis, 0);
+    }
+    if (idx[axis] > 0) {
+      const double c[3] = {pos[axis] - lo[axis], vel[axis], 0.5 * acc[axis]};
+      const double tau = first_contact(c, 2, window);
+      if (tau <= window) consider(best, t + tau, Kind::cell, 2 * axis + 1, 0);
+    }
+  }
+}
+
+void Simulation::predict(std::int32_t i) {
+  Prediction best{kInf, Kind::none, -1, 0};
+  if (use_cells_) {
+    const std::int32_t cell = ball_cell_[static_cast<std::size_t>(i)];
+    const std::int32_t cx = cell % grid_nx_;
+    const std::int32_t cy = cell / grid_nx_;
+    for (std::int32_t y = std::max(0, cy - 1); y <= std::min(grid_ny_ - 1, cy + 1); ++y) {
+      for (std::int32_t x = std::max(0, cx - 1); x <= std::min(grid_nx_ - 1, cx + 1); ++x) {
+        for (std::int32_t j = cell_head_[static_cast<std::size_t>(y * grid_nx_ + x)]; j >= 0;
+             j = cell_next_[static_cast<std::size_t>(j)]) {
+          if (j != i) predict_ball_pair(i, j, best);
+        }
+      }
+    }
+  } else {
+    const auto n = static_cast<std::int32_t>(traj_.size());
+    for (std::int32_t j = 0; j < n; ++j) {
+      if (j != i) predict_ball_pair(i, j, best);
+    }
+  }
+  predict_walls(i, best);
+  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
+  if (tr.state != MotionState::stationary && tr.t_end < kInf) {
+    consider(best, tr.t_end, Kind::stop, -1, 0);
+  }
+  if (use_cells_) predict_cell(i, best);
+  next_[static_cast<std::size_t>(i)] = best;
+}
+
+// ---------------------------------------------------------------------------
+// The heap of balls, ordered by their next event's time, then by index so
+// that simultaneous events come out in a fixed order.
+
+bool Simulation::heap_less(std::int32_t a, std::int32_t b) const {
+  const double ta = next_[static_cast<std::size_t>(a)].time;
+  const double tb = next_[static_cast<std::size_t>(b)].time;
+  if (ta != tb) return ta < tb;
+  return a < b;
+}
+
+void Simulation::heap_swap(std::size_t a, std::size_t b) {
+  std::swap(heap_[a], heap_[b]);
+  heap_pos_[static_cast<std::size_t>(heap_[a])] = static_cast<std::int32_t>(a);
+  heap_pos_[static_cast<std::size_t>(heap_[b])] = static_cast<std::int32_t>(b);
+}
+
+void Simulation::heap_fix(std::int32_t i) {
+  auto pos = static_cast<std::size_t>(heap_pos_[static_cast<std::size_t>(i)]);
+  while (pos > 0) {
+    const std::size_t parent = (pos - 1) / 2;
+    if (!heap_less(heap_[pos], heap_[parent])) break;
+    heap_swap(pos, parent);
+    pos = parent;
+  }
+  const std::size_t n = heap_.size();
+  for (;;) {
+    const std::size_t l = 2 * pos + 1;
+    const std::size_t r = l + 1;
+    std::size_t m = pos;
+    if (l < n && heap_less(heap_[l], heap_[m])) m = l;
+    if (r < n && heap_less(heap_[r], heap_[m])) m = r;
+    if (m == pos) break;
+    heap_swap(pos, m);
+    pos = m;
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Cells
+
+std::int32_t Simulation::cell_index(Vec2 p) const {
+  auto clamp_axis = [&](double v, double o, std::int32_t count) {
+    const double k = std::floor((v - o) / cell_size_);
+    if (!(k >= 0.0)) return 0;
+    if (k >= static_cast<double>(count - 1)) return count - 1;
+    return static_cast<std::int32_t>(k);
+  };
+  return clamp_axis(p.y, grid_origin_.y, grid_ny_) * grid_nx_ +
+         clamp_axis(p.x, grid_origin_.x, grid_nx_);
+}
+
+void Simulation::cell_link(std::int32_t i, std::int32_t cell) {
+  const auto ui = static_cast<std::size_t>(i);
+  const auto uc = static_cast<std::size_t>(cell);
+  ball_cell_[ui] = cell;
+  cell_prev_[ui] = -1;
+  cell_next_[ui] = cell_head_[uc];
+  if (cell_head_[uc] >= 0) cell_prev_[static_cast<std::size_t>(cell_head_[uc])] = i;
+  cell_head_[uc] = i;
+}
+
+void Simulation::cell_unlink(std::int32_t i) {
+  const auto ui = static_cast<std::size_t>(i);
+  const std::int32_t prev = cell_prev_[ui];
+  const std::int32_t next = cell_next_[ui];
+  if (prev >= 0) {
+    cell_next_[static_cast<std::size_t>(prev)] = next;
+  } else {
+    cell_head_[static_cast<std::size_t>(ball_cell_[ui])] = next;
+  }
+  if (next >= 0) cell_prev_[static_cast<std::size_t>(next)] = prev;
+  ball_cell_[ui] = -1;
+}
+
+// ---------------------------------------------------------------------------
+// Collisions
+
+double Simulation::pair_restitution(std::int32_t i, std::int32_t j) const {
+  if (pair_keys_.empty()) return scenario_.physics.ball_ball_restitution;
+  const auto n = static_cast<std::uint64_t>(traj_.size());
+  const auto a = static_cast<std::uint64_t>(std::min(i, j));
+  const auto b = static_cast<std::uint64_t>(std::max(i, j));
+  const auto it = std::lower_bound(pair_keys_.begin(), pair_keys_.end(), a * n + b);
+  if (it != pair_keys_.end() && *it == a * n + b) {
+    return pair_values_[static_cast<std::size_t>(it - pair_keys_.begin())];
+  }
+  return scenario_.physics.ball_ball_restitution;
+}
+
+// The separating normal speed after an impact with closing speed
+// `closing`. Inelastic collapse (Luding & McNamara 1998; McNamara &
+// Falcon 2005 use a restitution that tends to 1 at low impact speed): an
+// impact slower than collapse_speed is elastic, so a cluster cannot make
+// infinitely many ever-softer collisions in finite time. It never adds
+// energy: the result is at most `closing`.
+double Simulation::outgoing_speed(double closing, double restitution) const {
+  if (closing <= 0.0) return 0.0;
+  if (closing < scenario_.physics.collapse_speed) return closing;
+  return restitution * closing;
+}
+
+// True if a contact left at normal speed `out` with normal acceleration
+// `acc_n` (negative: back into contact) closes again before `window`
+// ends, at a speed too low for the collapse rule to end the sequence.
+// With the friction model's deceleration a ball never turns back, so a
+// single ball leaving a wall is never pressed; two balls whose
+// decelerations differ can be.
+bool Simulation::pressed(double out, double acc_n, double window) const {
+  if (out >= scenario_.physics.collapse_speed || !(acc_n < 0.0)) return false;
+  return 2.0 * out < -acc_n * window;
+}
+
+void Simulation::collide_balls(std::int32_t i, std::int32_t j) {
+  Trajectory& A = traj_[static_cast<std::size_t>(i)];
+  Trajectory& B = traj_[static_cast<std::size_t>(j)];
+  const double ma = scenario_.balls[static_cast<std::size_t>(i)].mass;
+  const double mb = scenario_.balls[static_cast<std::size_t>(j)].mass;
+  Vec2 n = B.p0 - A.p0;
+  const double len = norm(n);
+  n = len > 0.0 ? n / len : Vec2{1.0, 0.0};
+  const Vec2 va = A.v0;
+  const Vec2 vb = B.v0;
+  const double closing = dot(va - vb, n);
+  const double reduced = ma * mb / (ma + mb);
+  double out = outgoing_speed(closing, pair_restitution(i, j));
+  double impulse = std::max(0.0, reduced * (closing + out));
+  set_velocity(i, va - n * (impulse / ma));
+  set_velocity(j, vb + n * (impulse / mb));
+  // A pair that leaves (nearly) together while friction pushes the two
+  // into each other would meet again at once, forever. Such a pair leaves
+  // at collapse_speed: the only case where an impact may add energy, at
+  // most reduced * collapse_speed^2 / 2 (docs/physics-core.md).
+  if (pressed(out, dot(B.acc - A.acc, n), std::min(A.t_end, B.t_end) - A.t0)) {
+    out = scenario_.physics.collapse_speed;
+    impulse = std::max(0.0, reduced * (closing + out));
+    set_velocity(i, va - n * (impulse / ma));
+    set_velocity(j, vb + n * (impulse / mb));
+  }
+  // Round-off can leave a pair that should part (or move on together)
+  // approaching by a hair in the very arithmetic the predictor uses; it
+  // would then collide again at once, forever. Add the least impulse that
+  // makes them part in floating point: the energy it adds is of the order
+  // of the round-off itself.
+  const Vec2 dp = B.p0 - A.p0;
+  double extra = 4.0 * std::numeric_limits<double>::epsilon() *
+                 std::max({norm(va), norm(vb), scenario_.physics.collapse_speed});
+  for (int k = 0; k < 64 && dot(dp, B.v0 - A.v0) < 0.0; ++k, extra *= 2.0) {
+    impulse += reduced * extra;
+    set_velocity(i, va - n * (impulse / ma));
+    set_velocity(j, vb + n * (impulse / mb));
+  }
+}
+
+void Simulation::collide_wall(std::int32_t i, std::int32_t w) {
+  Trajectory& A = traj_[static_cast<std::size_t>(i)];
+  const Wall& wall = scenario_.table.walls[static_cast<std::size_t>(w)];
+  Vec2 n = wall.normal;
+  if (wall.kind == WallKind::corner) {
+    n = A.p0 - wall.a;
+    const double len = norm(n);
+    n = len > 0.0 ? n / len : Vec2{1.0, 0.0};
+  }
+  const Vec2 v = A.v0;
+  const double closing = -dot(v, n);
+  const double e = scenario_.balls[static_cast<std::size_t>(i)].wall_restitution;
+  const double out = outgoing_speed(closing, e);
+  double dv = std::max(0.0, closing + out);
+  set_velocity(i, v + n * dv);
+  // A ball that keeps being pressed into the wall leaves at
+  // collapse_speed, as a pressed pair of balls does.
+  if (pressed(out, dot(A.acc, n), A.t_end - A.t0)) {
+    dv = std::max(0.0, closing + scenario_.physics.collapse_speed);
+    set_velocity(i, v + n * dv);
+  }
+  // As for two balls: leave the wall in the predictor's own arithmetic.
+  double extra = 4.0 * std::numeric_limits<double>::epsilon() *
+                 std::max(norm(v), scenario_.physics.collapse_speed);
+  const Vec2 away = wall.kind == WallKind::corner ? A.p0 - wall.a : wall.normal;
+  for (int k = 0; k < 64 && dot(away, A.v0) < 0.0; ++k, extra *= 2.0) {
+    dv += extra;
+    set_velocity(i, v + n * dv);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// The loop
+
+bool Simulation::step(double limit) {
+  if (heap_.empty()) return false;
+  const std::int32_t i = heap_[0];
+  const Prediction p = next_[static_cast<std::size_t>(i)];
+  if (p.kind == Kind::none || p.time > limit) return false;
+  const auto ui = static_cast<std::size_t>(i);
+
+  if (p.kind == Kind::ball && counter_[static_cast<std::size_t>(p.other)] != p.other_counter) {
+    // The partner had an event since this was predicted: predict again.
+    origin_ = std::max(origin_, p.time);
+    predict(i);
+    heap_fix(i);
+    return true;
+  }
+  if (p.kind == Kind::cell) {
+    // Crossing into a neighbouring cell changes no motion, so no one
+    // else's prediction is affected; only this ball looks around again.
+    origin_ = std::max(origin_, p.time);
+    const std::int32_t cell = ball_cell_[ui];
+    const std::int32_t step_x[4] = {1, -1, 0, 0};
+    const std::int32_t step_y[4] = {0, 0, 1, -1};
+    const std::int32_t cx = cell % grid_nx_ + step_x[p.other];
+    const std::int32_t cy = cell / grid_nx_ + step_y[p.other];
+    cell_unlink(i);
+    cell_link(i, cy * grid_nx_ + cx);
+    predict(i);
+    heap_fix(i);
+    return true;
+  }
+  if (event_count_ >= scenario_.max_events) {
+    limit_hit_ = true;
+    return false;
+  }
+
+  const double t = std::max(origin_, p.time);
+  origin_ = t;
+  now_ = std::max(now_, t);
+  Event ev;
+  ev.time = t;
+  ev.ball = i;
+  switch (p.kind) {
+    case Kind::ball: {
+      const std::int32_t j = p.other;
+      move_to(i, t);
+      move_to(j, t);
+      collide_balls(i, j);
+      ++counter_[ui];
+      ++counter_[static_cast<std::size_t>(j)];
+      ev.type = EventType::ball_ball;
+      ev.ball = std::min(i, j);
+      ev.other = std::max(i, j);
+      events_.push_back(ev);
+      ++event_count_;
+      predict(i);
+      heap_fix(i);
+      predict(j);
+      heap_fix(j);
+      return true;
+    }
+    case Kind::wall:
+      move_to(i, t);
+      collide_wall(i, p.other);
+      ev.type = EventType::ball_cushion;
+      ev.wall = p.other;
+      break;
+    case Kind::stop: {
+      // Stop exactly where the closed-form motion ends.
+      Trajectory& tr = traj_[ui];
+      tr.p0 = position_at(i, tr.t_end);
+      tr.t0 = t;
+      set_velocity(i, {});
+      ev.type = EventType::state_change;
+      ev.from = MotionState::moving;
+      ev.to = MotionState::stationary;
+      break;
+    }
+    default:
+      return false;
+  }
+  ++counter_[ui];
+  events_.push_back(ev);
+  ++event_count_;
+  predict(i);
+  heap_fix(i);
+  return true;
+}
+
+StopReason Simulation::advance_to(double t) {
+  if (!(t >= now_)) return StopReason::reached;  // the clock never goes back
+  limit_hit_ = false;
+  while (step(t)) {
+  }
+  if (limit_hit_) return StopReason::event_limit;
+  now_ = t;
+  return StopReason::reached;
+}
+
+StopReason Simulation::advance_to_rest() {
+  limit_hit_ = false;
+  while (moving_ > 0 && step(kInf)) {
+  }
+  return limit_hit_ ? StopReason::event_limit : StopReason::reached;
+}
+
+double Simulation::next_event_time() {
+  // Resolve stale predictions and cell crossings at the top so that the
+  // answer is the time of a real event. Doing that early changes nothing:
+  // they are handled in the same order whenever they are handled.
+  for (;;) {
+    if (heap_.empty()) return kInf;
+    const std::int32_t i = heap_[0];
+    const Prediction& p = next_[static_cast<std::size_t>(i)];
+    if (p.kind == Kind::none) return kInf;
+    const bool stale =
+        p.kind == Kind::ball && counter_[static_cast<std::size_t>(p.other)] != p.other_counter;
+    if (!stale && p.kind != Kind::cell) return p.time;
+    step(p.time);
+  }
+}
+
+// ---------------------------------------------------------------------------
+
+RunResult simulate(const Scenario& scenario) {
+  RunResult result;
+  Simulation sim(scenario);
+  double end = scenario.until.time;
+  if (scenario.until.rest) {
+    // Learn when the run ends so that samples can include the end.
+    if (scenario.sample_dt) {
+      Simulation probe = sim;
+      probe.advance_to_rest();
+      end = probe.time();
+    }
+  }
+  bool complete = true;
+  if (scenario.sample_dt) {
+    const double dt = *scenario.sample_dt;
+    for (std::uint64_t k = 0;; ++k) {
+      double t = static_cast<double>(k) * dt;
+      const bool last = t >= end;
+      if (last) t = end;
+      if (sim.advance_to(t) == StopReason::event_limit) {
+        complete = false;
+        break;
+      }
+      result.samples.push_back({t, sim.balls()});
+      if (last) break;
+    }
+  }
+  if (complete) {
+    const StopReason r = scenario.until.rest ? sim.advance_to_rest() : sim.advance_to(end);
+    complete = r == StopReason::reached;
+  }
+  result.complete = complete;
+  result.events = sim.events();
+  result.final_time = sim.time();
+  result.final_balls = sim.balls();
+  return result;
+}
+
+}  // namespace breakshot

@@ -1,0 +1,196 @@
+// Rectangle and polygon tables: walls, reflex corners, containment.
+#include "breakshot/table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace breakshot {
+
+namespace {
+
+double signed_area(const std::vector<Vec2>& v) {
+  double a = 0.0;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const Vec2 p = v[k];
+    const Vec2 q = v[(k + 1) % v.size()];
+    a += cross(p, q);
+  }
+  return 0.5 * a;
+}
+
+// Orientation of the triple (p, q, r): +1 counter-clockwise, -1 clockwise,
+// 0 collinear. Exact enough for validating user input: we only need to
+// reject polygons that really cross themselves.
+int orient(Vec2 p, Vec2 q, Vec2 r) {
+  const double c = cross(q - p, r - p);
+  return (c > 0.0) - (c < 0.0);
+}
+
+bool on_segment(Vec2 p, Vec2 q, Vec2 r) {
+  // r collinear with p-q: is it within the bounding box of the segment?
+  return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) &&
+         std::min(p.y, q.y) <= r.y && r.y <= std::max(p.y, q.y);
+}
+
+bool segments_intersect(Vec2 p1, Vec2 p2, Vec2 q1, Vec2 q2) {
+  const int o1 = orient(p1, p2, q1);
+  const int o2 = orient(p1, p2, q2);
+  const int o3 = orient(q1, q2, p1);
+  const int o4 = orient(q1, q2, p2);
+  if (o1 != o2 && o3 != o4) return true;
+  if (o1 == 0 && on_segment(p1, p2, q1)) return true;
+  if (o2 == 0 && on_segment(p1, p2, q2)) return true;
+  if (o3 == 0 && on_segment(q1, q2, p1)) return true;
+  if (o4 == 0 && on_segment(q1, q2, p2)) return true;
+  return false;
+}
+
+double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = norm2(ab);
+  double s = len2 > 0.0 ? dot(p - a, ab) / len2 : 0.0;
+  s = std::clamp(s, 0.0, 1.0);
+  return norm(p - (a + ab * s));
+}
+
+Wall make_segment(Vec2 a, Vec2 b, Vec2 inward, std::string name) {
+  Wall w;
+  w.kind = WallKind::segment;
+  w.a = a;
+  w.b = b;
+  w.normal = inward / norm(inward);
+  w.name = std::move(name);
+  return w;
+}
+
+}  // namespace
+
+Table make_rectangle(Vec2 min, Vec2 max) {
+  if (!(min.x < max.x && min.y < max.y)) {
+    throw std::invalid_argument("min must be below and left of max");
+  }
+  Table t;
+  t.shape = "rectangle";
+  t.outline = {{min.x, min.y}, {max.x, min.y}, {max.x, max.y}, {min.x, max.y}};
+  t.walls.push_back(make_segment({min.x, max.y}, {min.x, min.y}, {1, 0}, "left"));
+  t.walls.push_back(make_segment({max.x, min.y}, {max.x, max.y}, {-1, 0}, "right"));
+  t.walls.push_back(make_segment({min.x, min.y}, {max.x, min.y}, {0, 1}, "bottom"));
+  t.walls.push_back(make_segment({max.x, max.y}, {min.x, max.y}, {0, -1}, "top"));
+  t.min = min;
+  t.max = max;
+  return t;
+}
+
+Table make_polygon(const std::vector<Vec2>& v) {
+  const std::size_t n = v.size();
+  if (n < 3) throw std::invalid_argument("a polygon needs at least 3 vertices");
+  for (const Vec2 p : v) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+      throw std::invalid_argument("vertex coordinates must be finite");
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (v[i] == v[j]) {
+        throw std::invalid_argument("vertices " + std::to_string(i) + " and " +
+                                    std::to_string(j) + " are the same point");
+      }
+    }
+  }
+  const double area = signed_area(v);
+  if (!(std::abs(area) > 0.0)) throw std::invalid_argument("the polygon has zero area");
+  // Edges that are not neighbours must not touch; neighbours share only
+  // their common vertex (they must not fold back onto each other).
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a1 = v[i];
+    const Vec2 a2 = v[(i + 1) % n];
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Vec2 b1 = v[j];
+      const Vec2 b2 = v[(j + 1) % n];
+      const bool next = (j == i + 1);
+      const bool wrap = (i == 0 && j == n - 1);
+      if (next || wrap) {
+        // Shared vertex: fold-back means the far end of one lies on the other.
+        const Vec2 shared = next ? a2 : a1;
+        const Vec2 other_a = next ? a1 : a2;
+        const Vec2 other_b = next ? b2 : b1;
+        if (orient(other_a, shared, other_b) == 0 &&
+            dot(other_a - shared, other_b - shared) > 0.0) {
+          throw std::invalid_argument("edges " + std::to_string(i) + " and " +
+                                      std::to_string(j) + " overlap");
+        }
+        continue;
+      }
+      if (segments_intersect(a1, a2, b1, b2)) {
+        throw std::invalid_argument("edges " + std::to_string(i) + " and " +
+                                    std::to_string(j) + " cross");
+      }
+    }
+  }
+
+  const double turn = area > 0.0 ? 1.0 : -1.0;  // +1 if counter-clockwise
+  Table t;
+  t.shape = "polygon";
+  t.outline = v;
+  if (turn < 0.0) std::reverse(t.outline.begin(), t.outline.end());
+  t.min = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  t.max = -t.min;
+  for (const Vec2 p : v) {
+    t.min = {std::min(t.min.x, p.x), std::min(t.min.y, p.y)};
+    t.max = {std::max(t.max.x, p.x), std::max(t.max.y, p.y)};
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2 a = v[k];
+    const Vec2 b = v[(k + 1) % n];
+    // The interior lies to the left of each edge of a counter-clockwise
+    // polygon, to the right of a clockwise one.
+    t.walls.push_back(make_segment(a, b, perp(b - a) * turn, "edge" + std::to_string(k)));
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2 prev = v[(k + n - 1) % n];
+    const Vec2 here = v[k];
+    const Vec2 next = v[(k + 1) % n];
+    // A vertex where the boundary turns away from the interior points
+    // into the table: a ball can hit the point itself, not only the
+    // edges' lines.
+    if (cross(here - prev, next - here) * turn < 0.0) {
+      Wall w;
+      w.kind = WallKind::corner;
+      w.a = here;
+      w.b = here;
+      w.name = "corner" + std::to_string(k);
+      t.walls.push_back(w);
+    }
+  }
+  return t;
+}
+
+bool contains(const Table& table, Vec2 p) {
+  // Crossing-number test on the outline.
+  bool inside = false;
+  const auto& v = table.outline;
+  const std::size_t n = v.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 a = v[i];
+    const Vec2 b = v[j];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (p.x < x) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double wall_clearance(const Table& table, Vec2 p, double r) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const Wall& w : table.walls) {
+    if (w.kind == WallKind::segment) d = std::min(d, segment_distance(p, w.a, w.b));
+  }
+  if (!contains(table, p)) return -d - r;
+  return d - r;
+}
+
+}  // namespace breakshot

@@ -1,0 +1,260 @@
+// validate(): what every scenario must satisfy before it is simulated,
+// whether it was read from a file or built in code. The scenario reader
+// checks types and ranges field by field as it reads; this is where the
+// geometry is checked (balls inside the table, clear of the walls and of
+// each other), and it repeats the range checks for scenarios built in
+// code, with the same paths the reader would give.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "breakshot/scenario.hpp"
+
+namespace breakshot {
+namespace {
+
+/// How far two balls, or a ball and a wall, may overlap and still count
+/// as touching. Balls placed in contact by hand (a Newton's cradle, a
+/// rack) are a distance r1 + r2 apart only up to the rounding of their
+/// coordinates; refusing those would refuse the scenarios that test
+/// contact the most. A nanometre is far below any physical tolerance and
+/// far above the rounding of metre-sized coordinates.
+constexpr double kTouchTolerance = 1e-9;
+
+std::string ball_path(std::size_t i, const char* field) {
+  return "balls[" + std::to_string(i) + "]." + field;
+}
+
+std::string num(double x) {
+  // Enough digits to tell apart the values in a message, no more.
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", x);
+  return buf;
+}
+
+bool finite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+bool finite(Vec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool in_unit_interval(double x) { return x >= 0.0 && x <= 1.0; }
+bool positive_finite(double x) { return std::isfinite(x) && x > 0.0; }
+bool non_negative_finite(double x) { return std::isfinite(x) && x >= 0.0; }
+
+std::optional<ScenarioError> check_physics(const PhysicsParams& p) {
+  if (!(std::isfinite(p.ball_ball_restitution) && in_unit_interval(p.ball_ball_restitution))) {
+    return ScenarioError{"physics.ball_ball_restitution", "restitution must be in [0, 1]"};
+  }
+  const std::pair<const char*, double> non_negative[] = {
+      {"physics.ball_ball_friction", p.ball_ball_friction},
+      {"physics.gravity", p.gravity},
+      {"physics.deceleration", p.deceleration},
+      {"physics.sliding_friction", p.sliding_friction},
+      {"physics.rolling_friction", p.rolling_friction},
+      {"physics.spinning_friction", p.spinning_friction},
+  };
+  for (const auto& [path, value] : non_negative) {
+    if (!non_negative_finite(value)) {
+      return ScenarioError{path, "must be finite and >= 0, not " + num(value)};
+    }
+  }
+  if (!positive_finite(p.collapse_speed)) {
+    return ScenarioError{"physics.collapse_speed",
+                         "must be finite and positive, not " + num(p.collapse_speed)};
+  }
+  return std::nullopt;
+}
+
+std::optional<ScenarioError> check_ball(const Scenario& s, std::size_t i) {
+  const BallSpec& b = s.balls[i];
+  const BallState& st = s.start[i];
+  if (b.id.empty()) return ScenarioError{ball_path(i, "id"), "must not be empty"};
+  if (!finite(st.position)) return ScenarioError{ball_path(i, "position"), "must be finite"};
+  if (!finite(st.velocity)) return ScenarioError{ball_path(i, "velocity"), "must be finite"};
+  if (!finite(st.spin)) return ScenarioError{ball_path(i, "spin"), "must be finite"};
+  if (st.spin != Vec3{} && s.physics.model != Model::pool) {
+    return ScenarioError{ball_path(i, "spin"), "spin needs the pool model"};
+  }
+  if (!positive_finite(b.radius)) {
+    return ScenarioError{ball_path(i, "radius"), "must be finite and positive, not " + num(b.radius)};
+  }
+  if (!positive_finite(b.mass)) {
+    return ScenarioError{ball_path(i, "mass"), "must be finite and positive, not " + num(b.mass)};
+  }
+  if (!in_unit_interval(b.wall_restitution)) {
+    return ScenarioError{ball_path(i, "wall_restitution"),
+                         "restitution must be in [0, 1], not " + num(b.wall_restitution)};
+  }
+  return std::nullopt;
+}
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = norm2(ab);
+  double t = len2 > 0.0 ? dot(p - a, ab) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return norm(p - (a + ab * t));
+}
+
+/// The wall nearest to p, to name it in a message. wall_clearance() says
+/// whether a ball crosses a wall; this only says which.
+const Wall* nearest_wall(const Table& table, Vec2 p) {
+  const Wall* best = nullptr;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (const Wall& w : table.walls) {
+    const double d = w.kind == WallKind::segment ? point_segment_distance(p, w.a, w.b)
+                                                 : norm(p - w.a);
+    if (d < best_d) {
+      best_d = d;
+      best = &w;
+    }
+  }
+  return best;
+}
+
+std::optional<ScenarioError> check_against_table(const Scenario& s, std::size_t i) {
+  const Vec2 p = s.start[i].position;
+  const double r = s.balls[i].radius;
+  if (!contains(s.table, p)) {
+    return ScenarioError{ball_path(i, "position"), "ball '" + s.balls[i].id + "' at (" +
+                                                       num(p.x) + ", " + num(p.y) +
+                                                       ") lies outside the table"};
+  }
+  const double clearance = wall_clearance(s.table, p, r);
+  if (clearance < -kTouchTolerance) {
+    std::string reason = "ball '" + s.balls[i].id + "' overlaps ";
+    const Wall* w = nearest_wall(s.table, p);
+    reason += w != nullptr ? "the wall '" + w->name + "'" : "a wall";
+    reason += " by " + num(-clearance) + " m";
+    return ScenarioError{ball_path(i, "position"), reason};
+  }
+  return std::nullopt;
+}
+
+/// The overlapping pair that a check of every pair in scenario order
+/// (for j = 1.., for i < j) would report first: smallest j, then
+/// smallest i. Found without looking at every pair: balls are sorted by
+/// the lower edge of their extent along the axis where they spread most,
+/// and each ball is compared only with those whose extent along that axis
+/// starts before its own ends. Only balls that overlap along the axis are
+/// compared, O(N log N) plus the number of such pairs.
+std::optional<std::pair<std::size_t, std::size_t>> first_overlap(const Scenario& s) {
+  const std::size_t n = s.balls.size();
+  if (n < 2) return std::nullopt;
+  double lo_x = std::numeric_limits<double>::infinity();
+  double hi_x = -lo_x;
+  double lo_y = lo_x;
+  double hi_y = -lo_x;
+  for (const BallState& b : s.start) {
+    lo_x = std::min(lo_x, b.position.x);
+    hi_x = std::max(hi_x, b.position.x);
+    lo_y = std::min(lo_y, b.position.y);
+    hi_y = std::max(hi_y, b.position.y);
+  }
+  const bool along_x = hi_x - lo_x >= hi_y - lo_y;
+  auto coord = [&](std::size_t i) {
+    return along_x ? s.start[i].position.x : s.start[i].position.y;
+  };
+
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::vector<double> lower(n);
+  for (std::size_t i = 0; i < n; ++i) lower[i] = coord(i) - s.balls[i].radius;
+  // Ties broken by index so that the sweep is the same on every run.
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return lower[a] < lower[b] || (lower[a] == lower[b] && a < b);
+  });
+
+  std::optional<std::pair<std::size_t, std::size_t>> best;  // (j, i), i < j
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t a = order[k];
+    const double upper = coord(a) + s.balls[a].radius + kTouchTolerance;
+    for (std::size_t m = k + 1; m < n && lower[order[m]] < upper; ++m) {
+      const std::size_t b = order[m];
+      const double reach = s.balls[a].radius + s.balls[b].radius - kTouchTolerance;
+      if (norm(s.start[a].position - s.start[b].position) < reach) {
+        const std::pair<std::size_t, std::size_t> pair{std::max(a, b), std::min(a, b)};
+        if (!best || pair < *best) best = pair;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::optional<ScenarioError> validate(const Scenario& s) {
+  if (s.start.size() != s.balls.size()) {
+    return ScenarioError{"balls", "the scenario has " + std::to_string(s.balls.size()) +
+                                      " balls but " + std::to_string(s.start.size()) +
+                                      " start states"};
+  }
+  if (s.balls.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+    return ScenarioError{"balls", "too many balls"};
+  }
+  if (auto e = check_physics(s.physics)) return e;
+
+  std::unordered_map<std::string, std::size_t> index_of;
+  index_of.reserve(s.balls.size());
+  for (std::size_t i = 0; i < s.balls.size(); ++i) {
+    if (auto e = check_ball(s, i)) return e;
+    if (const auto [it, inserted] = index_of.emplace(s.balls[i].id, i); !inserted) {
+      return ScenarioError{ball_path(i, "id"), "duplicate id '" + s.balls[i].id +
+                                                   "' (also balls[" +
+                                                   std::to_string(it->second) + "])"};
+    }
+  }
+
+  std::vector<std::uint64_t> pair_keys;
+  pair_keys.reserve(s.pair_restitution.size());
+  const auto n = static_cast<std::int64_t>(s.balls.size());
+  for (std::size_t k = 0; k < s.pair_restitution.size(); ++k) {
+    const PairRestitution& pr = s.pair_restitution[k];
+    const std::string path = "pair_restitution[" + std::to_string(k) + "]";
+    if (pr.a < 0 || pr.b < 0 || pr.a >= n || pr.b >= n) {
+      return ScenarioError{path + ".balls", "ball index out of range"};
+    }
+    if (pr.a == pr.b) return ScenarioError{path + ".balls", "the two balls must differ"};
+    if (!in_unit_interval(pr.restitution)) {
+      return ScenarioError{path + ".restitution",
+                           "restitution must be in [0, 1], not " + num(pr.restitution)};
+    }
+    const auto lo = static_cast<std::uint64_t>(std::min(pr.a, pr.b));
+    const auto hi = static_cast<std::uint64_t>(std::max(pr.a, pr.b));
+    pair_keys.push_back(lo * static_cast<std::uint64_t>(n) + hi);
+  }
+  std::sort(pair_keys.begin(), pair_keys.end());
+  if (std::adjacent_find(pair_keys.begin(), pair_keys.end()) != pair_keys.end()) {
+    return ScenarioError{"pair_restitution", "a pair of balls is listed twice"};
+  }
+
+  if (!s.until.rest && !positive_finite(s.until.time)) {
+    return ScenarioError{"until.time", "must be finite and positive, not " + num(s.until.time)};
+  }
+  if (s.sample_dt && !positive_finite(*s.sample_dt)) {
+    return ScenarioError{"samples.dt", "must be finite and positive, not " + num(*s.sample_dt)};
+  }
+  if (s.max_events == 0) return ScenarioError{"max_events", "must be a positive integer"};
+
+  for (std::size_t i = 0; i < s.balls.size(); ++i) {
+    if (auto e = check_against_table(s, i)) return e;
+  }
+  if (const auto pair = first_overlap(s)) {
+    const auto [j, i] = *pair;
+    return ScenarioError{ball_path(j, "position"),
+                         "ball '" + s.balls[j].id + "' overlaps ball '" + s.balls[i].id +
+                             "' (balls[" + std::to_string(i) + "])"};
+  }
+  return std::nullopt;
+}
+
+}  // namespace breakshot
