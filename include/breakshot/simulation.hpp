@@ -102,8 +102,20 @@ class Simulation {
     std::uint64_t other_counter = 0;  // partner's counter at prediction
   };
 
+  // A ball's motion at the prediction origin, computed once per prediction.
+  struct Kinematics {
+    Vec2 p, v, a;
+    double t_end = 0.0;
+    double radius = 0.0;
+    bool still = true;
+  };
+
+  Kinematics kinematics(std::int32_t i) const;
   void predict(std::int32_t i);
-  void predict_ball_pair(std::int32_t i, std::int32_t j, Prediction& best) const;
+  void finish_prediction(std::int32_t i);
+  void predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0, std::int32_t x1,
+                     std::int32_t y0, std::int32_t y1, Prediction& best) const;
+  void predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
   void predict_walls(std::int32_t i, Prediction& best) const;
   void predict_cell(std::int32_t i, Prediction& best) const;
   void heap_fix(std::int32_t i);
@@ -134,6 +146,7 @@ class Simulation {
   std::vector<Trajectory> traj_;
   std::vector<std::uint64_t> counter_;  // events each ball took part in
   std::vector<Prediction> next_;        // each ball's earliest event
+  std::vector<Prediction> event_;       // the same, cell crossings left out
   std::vector<std::int32_t> heap_;      // ball indices, min-heap on next_
   std::vector<std::int32_t> heap_pos_;  // where each ball sits in heap_
   std::vector<Event> events_;

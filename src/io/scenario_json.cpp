@@ -283,8 +283,7 @@ class ScenarioReader {
     const double x = v.get<double>();
     if (!std::isfinite(x)) return fail(path, "expected a finite number");
     if (std::fabs(x) > kMaxMagnitude) {
-      return fail(path, "magnitude " + format_number(x) + " is too large (at most " +
-                            format_number(kMaxMagnitude) + ")");
+      return fail(path, format_number(x) + " is too large (the limit is 1e12 in magnitude)");
     }
     out = x;
     return true;
@@ -301,7 +300,7 @@ class ScenarioReader {
     if (!v.is_array() || v.size() != n) {
       const std::string what = "an array of " + std::to_string(n) + " numbers";
       if (v.is_array()) {
-        return fail(path, "expected " + what + ", not " + std::to_string(v.size()));
+        return fail(path, "expected " + what + ", not an array of " + std::to_string(v.size()));
       }
       return fail(path, expected(what, v));
     }

@@ -35,6 +35,7 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
   traj_.resize(n);
   counter_.assign(n, 0);
   next_.resize(n);
+  event_.resize(n);
   heap_.resize(n);
   heap_pos_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -202,25 +203,41 @@ void consider(P& best, double t, K kind, std::int32_t other, std::uint64_t count
 
 }  // namespace
 
-void Simulation::predict_ball_pair(std::int32_t i, std::int32_t j, Prediction& best) const {
+Simulation::Kinematics Simulation::kinematics(std::int32_t i) const {
   const Trajectory& A = traj_[static_cast<std::size_t>(i)];
-  const Trajectory& B = traj_[static_cast<std::size_t>(j)];
-  if (A.state == MotionState::stationary && B.state == MotionState::stationary) return;
   const double t = origin_;
-  const double window = std::max(0.0, std::min(A.t_end, B.t_end) - t);
-  const Vec2 dp = position_at(j, t) - position_at(i, t);
-  const Vec2 dv = velocity_at(j, t) - velocity_at(i, t);
-  const Vec2 da = (t < B.t_end ? B.acc : Vec2{}) - (t < A.t_end ? A.acc : Vec2{});
-  const double sigma = scenario_.balls[static_cast<std::size_t>(i)].radius +
-                       scenario_.balls[static_cast<std::size_t>(j)].radius;
+  Kinematics k;
+  k.p = position_at(i, t);
+  k.v = velocity_at(i, t);
+  k.a = t < A.t_end ? A.acc : Vec2{};
+  k.t_end = A.t_end;
+  k.radius = scenario_.balls[static_cast<std::size_t>(i)].radius;
+  k.still = A.state == MotionState::stationary;
+  return k;
+}
+
+void Simulation::predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const {
+  const Trajectory& B = traj_[static_cast<std::size_t>(j)];
+  const bool b_still = B.state == MotionState::stationary;
+  if (ki.still && b_still) return;
+  const double t = origin_;
+  // B's kinematics at t, inline (this is the innermost loop).
+  const double dt = std::min(t, B.t_end) - B.t0;
+  const Vec2 pb = B.p0 + B.v0 * dt + B.acc * (0.5 * dt * dt);
+  const bool b_moves = t < B.t_end;
+  const Vec2 dp = pb - ki.p;
+  const Vec2 dv = (b_moves ? B.v0 + B.acc * dt : Vec2{}) - ki.v;
+  const Vec2 da = (b_moves ? B.acc : Vec2{}) - ki.a;
+  const double sigma = ki.radius + scenario_.balls[static_cast<std::size_t>(j)].radius;
   const double dist2 = norm2(dp);
   double tau = kInf;
   if (da.x == 0.0 && da.y == 0.0) {
     const double b = dot(dp, dv);
     if (b >= 0.0) return;  // moving apart or not at all: never closer
     tau = first_contact_quadratic(dist2 - sigma * sigma, b, norm2(dv));
-    if (tau > window) return;
+    if (!(tau <= std::min(ki.t_end, B.t_end) - t)) return;
   } else {
+    const double window = std::max(0.0, std::min(ki.t_end, B.t_end) - t);
     // Cheap rejection: the gap can close by at most |dv| w + |da| w^2 / 2.
     const double gap = std::sqrt(dist2) - sigma;
     const double w = window;
@@ -229,8 +246,8 @@ void Simulation::predict_ball_pair(std::int32_t i, std::int32_t j, Prediction& b
     const double c[5] = {dist2 - sigma * sigma, 2.0 * dot(dp, dv), norm2(dv) + dot(dp, da),
                          dot(dv, da), 0.25 * norm2(da)};
     tau = first_contact(c, 4, window);
+    if (!(tau < kInf)) return;
   }
-  if (!(tau < kInf)) return;
   consider(best, t + tau, Kind::ball, j, counter_[static_cast<std::size_t>(j)]);
 }
 
@@ -316,33 +333,52 @@ void Simulation::predict_cell(std::int32_t i, Prediction& best) const {
   }
 }
 
-void Simulation::predict(std::int32_t i) {
-  Prediction best{kInf, Kind::none, -1, 0};
-  if (use_cells_) {
-    const std::int32_t cell = ball_cell_[static_cast<std::size_t>(i)];
-    const std::int32_t cx = cell % grid_nx_;
-    const std::int32_t cy = cell / grid_nx_;
-    for (std::int32_t y = std::max(0, cy - 1); y <= std::min(grid_ny_ - 1, cy + 1); ++y) {
-      for (std::int32_t x = std::max(0, cx - 1); x <= std::min(grid_nx_ - 1, cx + 1); ++x) {
-        for (std::int32_t j = cell_head_[static_cast<std::size_t>(y * grid_nx_ + x)]; j >= 0;
-             j = cell_next_[static_cast<std::size_t>(j)]) {
-          if (j != i) predict_ball_pair(i, j, best);
-        }
+void Simulation::predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0,
+                               std::int32_t x1, std::int32_t y0, std::int32_t y1,
+                               Prediction& best) const {
+  x0 = std::max(0, x0);
+  y0 = std::max(0, y0);
+  x1 = std::min(grid_nx_ - 1, x1);
+  y1 = std::min(grid_ny_ - 1, y1);
+  for (std::int32_t y = y0; y <= y1; ++y) {
+    for (std::int32_t x = x0; x <= x1; ++x) {
+      for (std::int32_t j = cell_head_[static_cast<std::size_t>(y * grid_nx_ + x)]; j >= 0;
+           j = cell_next_[static_cast<std::size_t>(j)]) {
+        if (j != i) predict_ball_pair(ki, j, best);
       }
     }
+  }
+}
+
+void Simulation::predict(std::int32_t i) {
+  const auto ui = static_cast<std::size_t>(i);
+  const Kinematics ki = kinematics(i);
+  Prediction best{kInf, Kind::none, -1, 0};
+  if (use_cells_) {
+    const std::int32_t cell = ball_cell_[ui];
+    const std::int32_t cx = cell % grid_nx_;
+    const std::int32_t cy = cell / grid_nx_;
+    predict_cells(i, ki, cx - 1, cx + 1, cy - 1, cy + 1, best);
   } else {
     const auto n = static_cast<std::int32_t>(traj_.size());
     for (std::int32_t j = 0; j < n; ++j) {
-      if (j != i) predict_ball_pair(i, j, best);
+      if (j != i) predict_ball_pair(ki, j, best);
     }
   }
   predict_walls(i, best);
-  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
+  const Trajectory& tr = traj_[ui];
   if (tr.state != MotionState::stationary && tr.t_end < kInf) {
     consider(best, tr.t_end, Kind::stop, -1, 0);
   }
+  event_[ui] = best;
+  finish_prediction(i);
+}
+
+void Simulation::finish_prediction(std::int32_t i) {
+  const auto ui = static_cast<std::size_t>(i);
+  Prediction best = event_[ui];
   if (use_cells_) predict_cell(i, best);
-  next_[static_cast<std::size_t>(i)] = best;
+  next_[ui] = best;
 }
 
 // ---------------------------------------------------------------------------
@@ -558,7 +594,21 @@ bool Simulation::step(double limit) {
     const std::int32_t cy = cell / grid_nx_ + step_y[p.other];
     cell_unlink(i);
     cell_link(i, cy * grid_nx_ + cx);
-    predict(i);
+    // Only the row or column of cells that just came into the
+    // neighbourhood holds new partners; the best event found before still
+    // stands (if its partner has moved on since, it is found stale when it
+    // comes up, as any other).
+    const Kinematics ki = kinematics(i);
+    Prediction best = event_[ui];
+    const std::int32_t fx = cx + step_x[p.other];
+    const std::int32_t fy = cy + step_y[p.other];
+    if (step_x[p.other] != 0) {
+      predict_cells(i, ki, fx, fx, cy - 1, cy + 1, best);
+    } else {
+      predict_cells(i, ki, cx - 1, cx + 1, fy, fy, best);
+    }
+    event_[ui] = best;
+    finish_prediction(i);
     heap_fix(i);
     return true;
   }
