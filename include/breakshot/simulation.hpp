@@ -144,6 +144,8 @@ class Simulation {
   bool limit_hit_ = false;  // set when max_events stopped a step
   std::size_t moving_ = 0;  // balls not at rest
   std::vector<Trajectory> traj_;
+  std::vector<double> radius_;  // a copy of each ball's radius, packed
+  bool ideal_ = false;          // no ball ever accelerates
   std::vector<std::uint64_t> counter_;  // events each ball took part in
   std::vector<Prediction> next_;        // each ball's earliest event
   std::vector<Prediction> event_;       // the same, cell crossings left out

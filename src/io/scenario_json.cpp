@@ -132,8 +132,8 @@ std::string strip_exception_id(std::string_view what) {
 /// key that appears twice in one object. nlohmann's own parser keeps the
 /// last value of a repeated key without a word, which would hide a
 /// mistake exactly as an unknown field does. (Its parse callback could
-/// watch for repeats too, but that path is six times slower than this on
-/// a 10,000-ball scenario.) Content inside "extra" objects is the user's
+/// watch for repeats too, but that path is several times slower than this
+/// on a 10,000-ball scenario.) Content inside "extra" objects is the user's
 /// and is not checked. The builder keeps an explicit stack, so deep
 /// nesting cannot overflow the call stack.
 class DocumentBuilder {
@@ -143,15 +143,15 @@ class DocumentBuilder {
   std::optional<std::string> parse_error_text;
 
   // The SAX interface of nlohmann::json::sax_parse.
-  bool null() { return add(json(nullptr)) != nullptr; }
-  bool boolean(bool v) { return add(json(v)) != nullptr; }
-  bool number_integer(json::number_integer_t v) { return add(json(v)) != nullptr; }
-  bool number_unsigned(json::number_unsigned_t v) { return add(json(v)) != nullptr; }
+  bool null() { return put(json(nullptr)); }
+  bool boolean(bool v) { return put(json(v)); }
+  bool number_integer(json::number_integer_t v) { return put(json(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return put(json(v)); }
   bool number_float(json::number_float_t v, const json::string_t& /*text*/) {
-    return add(json(v)) != nullptr;
+    return put(json(v));
   }
-  bool string(json::string_t& v) { return add(json(std::move(v))) != nullptr; }
-  bool binary(json::binary_t& v) { return add(json::binary(std::move(v))) != nullptr; }
+  bool string(json::string_t& v) { return put(json(std::move(v))); }
+  bool binary(json::binary_t& v) { return put(json::binary(std::move(v))); }
   bool start_object(std::size_t /*size*/) { return open(json::object()); }
   bool start_array(std::size_t /*size*/) { return open(json::array()); }
   bool end_object() { return close(); }
@@ -184,6 +184,11 @@ class DocumentBuilder {
     std::size_t index_in_parent = 0;
     bool parent_is_object = false;
   };
+
+  bool put(json&& v) {
+    add(std::move(v));
+    return true;
+  }
 
   /// Puts a value where the parser is: the root, the current key of the
   /// open object, or the end of the open array.

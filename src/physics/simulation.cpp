@@ -33,6 +33,9 @@ constexpr double kSegmentSlack = 1e-9;
 Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
   const std::size_t n = scenario_.balls.size();
   traj_.resize(n);
+  radius_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
+  ideal_ = scenario_.physics.model == Model::ideal;
   counter_.assign(n, 0);
   next_.resize(n);
   event_.resize(n);
@@ -218,6 +221,30 @@ Simulation::Kinematics Simulation::kinematics(std::int32_t i) const {
 
 void Simulation::predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const {
   const Trajectory& B = traj_[static_cast<std::size_t>(j)];
+  if (ideal_) {
+    // No ball ever accelerates: the quadratic case, written out because
+    // this loop is most of the cost of an event.
+    const double t = origin_;
+    const double dt = t - B.t0;
+    const Vec2 dp = B.p0 + B.v0 * dt - ki.p;
+    const Vec2 dv = B.v0 - ki.v;
+    const double b = dot(dp, dv);
+    if (b >= 0.0) return;  // not approaching
+    const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
+    const double c = norm2(dp) - sigma * sigma;
+    // The root c / (-b + sqrt(b^2 - a c)) is at least c / (-2 b): skip
+    // the square root when even that is later than the best so far.
+    if (c > 0.0 && best.kind != Kind::none && t + c / (-2.0 * b) > best.time) return;
+    // first_contact_quadratic, inlined.
+    double tau = 0.0;
+    if (c > 0.0) {
+      const double disc = b * b - norm2(dv) * c;
+      if (disc < 0.0) return;
+      tau = c / (-b + std::sqrt(disc));
+    }
+    consider(best, t + tau, Kind::ball, j, counter_[static_cast<std::size_t>(j)]);
+    return;
+  }
   const bool b_still = B.state == MotionState::stationary;
   if (ki.still && b_still) return;
   const double t = origin_;
@@ -228,7 +255,7 @@ void Simulation::predict_ball_pair(const Kinematics& ki, std::int32_t j, Predict
   const Vec2 dp = pb - ki.p;
   const Vec2 dv = (b_moves ? B.v0 + B.acc * dt : Vec2{}) - ki.v;
   const Vec2 da = (b_moves ? B.acc : Vec2{}) - ki.a;
-  const double sigma = ki.radius + scenario_.balls[static_cast<std::size_t>(j)].radius;
+  const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
   const double dist2 = norm2(dp);
   double tau = kInf;
   if (da.x == 0.0 && da.y == 0.0) {
@@ -266,11 +293,11 @@ void Simulation::predict_walls(std::int32_t i, Prediction& best) const {
     double tau = kInf;
     if (wall.kind == WallKind::segment) {
       const Vec2 n = wall.normal;
-      const double c0 = dot(n, p - wall.a) - r;
       const double c1 = dot(n, v);
       const double c2 = 0.5 * dot(n, a);
+      if (c2 == 0.0 && c1 >= 0.0) continue;  // moving away or along
+      const double c0 = dot(n, p - wall.a) - r;
       if (c2 == 0.0) {
-        if (c1 >= 0.0) continue;
         tau = c0 <= 0.0 ? 0.0 : -c0 / c1;
       } else {
         const double c[3] = {c0, c1, c2};
@@ -320,6 +347,18 @@ void Simulation::predict_cell(std::int32_t i, Prediction& best) const {
   // "contact" of the ball's centre with the cell's edge, found with the
   // same root finder as the collisions.
   for (int axis = 0; axis < 2; ++axis) {
+    if (acc[axis] == 0.0) {
+      // Straight motion along this axis (always so in the ideal model):
+      // the crossing time is a division.
+      if (vel[axis] > 0.0 && idx[axis] + 1 < count[axis]) {
+        const double tau = std::max(0.0, (lo[axis] + cell_size_ - pos[axis]) / vel[axis]);
+        if (tau <= window) consider(best, t + tau, Kind::cell, 2 * axis, 0);
+      } else if (vel[axis] < 0.0 && idx[axis] > 0) {
+        const double tau = std::max(0.0, (lo[axis] - pos[axis]) / vel[axis]);
+        if (tau <= window) consider(best, t + tau, Kind::cell, 2 * axis + 1, 0);
+      }
+      continue;
+    }
     if (idx[axis] + 1 < count[axis]) {
       const double c[3] = {lo[axis] + cell_size_ - pos[axis], -vel[axis], -0.5 * acc[axis]};
       const double tau = first_contact(c, 2, window);
