@@ -100,8 +100,6 @@ Table make_polygon(const std::vector<Vec2>& v) {
       }
     }
   }
-  const double area = signed_area(v);
-  if (!(std::abs(area) > 0.0)) throw std::invalid_argument("the polygon has zero area");
   // Edges that are not neighbours must not touch; neighbours share only
   // their common vertex (they must not fold back onto each other).
   for (std::size_t i = 0; i < n; ++i) {
@@ -126,11 +124,15 @@ Table make_polygon(const std::vector<Vec2>& v) {
       }
       if (segments_intersect(a1, a2, b1, b2)) {
         throw std::invalid_argument("edges " + std::to_string(i) + " and " +
-                                    std::to_string(j) + " cross");
+                                    std::to_string(j) + " cross: the polygon crosses itself");
       }
     }
   }
 
+  // Checked after the crossings, so that a bow tie (zero net area) is
+  // reported as crossing itself.
+  const double area = signed_area(v);
+  if (!(std::abs(area) > 0.0)) throw std::invalid_argument("the polygon has zero area");
   const double turn = area > 0.0 ? 1.0 : -1.0;  // +1 if counter-clockwise
   Table t;
   t.shape = "polygon";
