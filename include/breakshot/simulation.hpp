@@ -116,7 +116,8 @@ class Simulation {
   void predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0, std::int32_t x1,
                      std::int32_t y0, std::int32_t y1, Prediction& best) const;
   void predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
-  void predict_walls(std::int32_t i, Prediction& best) const;
+  void predict_accelerating_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
+  void predict_walls(const Kinematics& ki, Prediction& best) const;
   void predict_cell(std::int32_t i, Prediction& best) const;
   void heap_fix(std::int32_t i);
   bool heap_less(std::int32_t a, std::int32_t b) const;
@@ -146,6 +147,7 @@ class Simulation {
   std::vector<Trajectory> traj_;
   std::vector<double> radius_;  // a copy of each ball's radius, packed
   bool ideal_ = false;          // no ball ever accelerates
+  bool convex_ = false;         // the table has no corner walls
   std::vector<std::uint64_t> counter_;  // events each ball took part in
   std::vector<Prediction> next_;        // each ball's earliest event
   std::vector<Prediction> event_;       // the same, cell crossings left out

@@ -36,6 +36,9 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
   radius_.resize(n);
   for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
   ideal_ = scenario_.physics.model == Model::ideal;
+  // Corner walls exist exactly where a polygon has a reflex vertex.
+  convex_ = std::none_of(scenario_.table.walls.begin(), scenario_.table.walls.end(),
+                         [](const Wall& w) { return w.kind != WallKind::segment; });
   counter_.assign(n, 0);
   next_.resize(n);
   event_.resize(n);
@@ -219,7 +222,10 @@ Simulation::Kinematics Simulation::kinematics(std::int32_t i) const {
   return k;
 }
 
-void Simulation::predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const {
+// Inlined into the neighbour loops: it is most of the cost of an event.
+[[gnu::always_inline]] inline void Simulation::predict_ball_pair(const Kinematics& ki,
+                                                                  std::int32_t j,
+                                                                  Prediction& best) const {
   const Trajectory& B = traj_[static_cast<std::size_t>(j)];
   if (ideal_) {
     // No ball ever accelerates: the quadratic case, written out because
@@ -234,7 +240,7 @@ void Simulation::predict_ball_pair(const Kinematics& ki, std::int32_t j, Predict
     const double c = norm2(dp) - sigma * sigma;
     // The root c / (-b + sqrt(b^2 - a c)) is at least c / (-2 b): skip
     // the square root when even that is later than the best so far.
-    if (c > 0.0 && best.kind != Kind::none && t + c / (-2.0 * b) > best.time) return;
+    if (c > 0.0 && c > (best.time - t) * (-2.0 * b)) return;
     // first_contact_quadratic, inlined.
     double tau = 0.0;
     if (c > 0.0) {
@@ -245,6 +251,12 @@ void Simulation::predict_ball_pair(const Kinematics& ki, std::int32_t j, Predict
     consider(best, t + tau, Kind::ball, j, counter_[static_cast<std::size_t>(j)]);
     return;
   }
+  predict_accelerating_pair(ki, j, best);
+}
+
+void Simulation::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
+                                           Prediction& best) const {
+  const Trajectory& B = traj_[static_cast<std::size_t>(j)];
   const bool b_still = B.state == MotionState::stationary;
   if (ki.still && b_still) return;
   const double t = origin_;
@@ -278,15 +290,14 @@ void Simulation::predict_ball_pair(const Kinematics& ki, std::int32_t j, Predict
   consider(best, t + tau, Kind::ball, j, counter_[static_cast<std::size_t>(j)]);
 }
 
-void Simulation::predict_walls(std::int32_t i, Prediction& best) const {
-  const Trajectory& A = traj_[static_cast<std::size_t>(i)];
-  if (A.state == MotionState::stationary) return;
+void Simulation::predict_walls(const Kinematics& ki, Prediction& best) const {
+  if (ki.still) return;
   const double t = origin_;
-  const double window = std::max(0.0, A.t_end - t);
-  const Vec2 p = position_at(i, t);
-  const Vec2 v = velocity_at(i, t);
-  const Vec2 a = t < A.t_end ? A.acc : Vec2{};
-  const double r = scenario_.balls[static_cast<std::size_t>(i)].radius;
+  const double window = std::max(0.0, ki.t_end - t);
+  const Vec2 p = ki.p;
+  const Vec2 v = ki.v;
+  const Vec2 a = ki.a;
+  const double r = ki.radius;
   const auto& walls = scenario_.table.walls;
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const Wall& wall = walls[w];
@@ -305,6 +316,12 @@ void Simulation::predict_walls(std::int32_t i, Prediction& best) const {
       }
       if (!(tau <= window)) continue;
       // Is the contact on the segment itself, not on its line's extension?
+      // In a convex table the earliest crossing of any wall's line always
+      // is, and the later ones never win, so there is nothing to check.
+      if (convex_) {
+        consider(best, t + tau, Kind::wall, static_cast<std::int32_t>(w), 0);
+        continue;
+      }
       const Vec2 q = p + v * tau + a * (0.5 * tau * tau);
       const Vec2 ab = wall.b - wall.a;
       const double s = dot(q - wall.a, ab) / norm2(ab);
@@ -404,7 +421,7 @@ void Simulation::predict(std::int32_t i) {
       if (j != i) predict_ball_pair(ki, j, best);
     }
   }
-  predict_walls(i, best);
+  predict_walls(ki, best);
   const Trajectory& tr = traj_[ui];
   if (tr.state != MotionState::stationary && tr.t_end < kInf) {
     consider(best, tr.t_end, Kind::stop, -1, 0);
