@@ -83,6 +83,8 @@ class Simulation {
     Vec3 w0;
     double t_end = 0.0;  ///< +inf if the motion never changes by itself
     MotionState state = MotionState::stationary;
+    Vec2 box_lo;  ///< bounds of the centre's path from t0 to t_end
+    Vec2 box_hi;
   };
 
   /// The trajectory a ball follows now (for tools and tests).
@@ -105,6 +107,7 @@ class Simulation {
   // A ball's motion at the prediction origin, computed once per prediction.
   struct Kinematics {
     Vec2 p, v, a;
+    Vec2 box_lo, box_hi;
     double t_end = 0.0;
     double radius = 0.0;
     bool still = true;
@@ -129,6 +132,7 @@ class Simulation {
   Vec2 velocity_at(std::int32_t i, double t) const;
   Vec2 acceleration_for(Vec2 v) const;
   void set_velocity(std::int32_t i, Vec2 v);
+  static void update_box(Trajectory& tr);
   double pair_restitution(std::int32_t i, std::int32_t j) const;
   double outgoing_speed(double closing, double restitution) const;
   bool pressed(double out, double acc_n, double window) const;

@@ -143,6 +143,47 @@ void Simulation::set_velocity(std::int32_t i, Vec2 v) {
   const bool moving = tr.state != MotionState::stationary;
   if (moving && !was_moving) ++moving_;
   if (!moving && was_moving) --moving_;
+  update_box(tr);
+}
+
+// The box that holds the ball's centre from t0 until its motion changes by
+// itself, widened a little against round-off. Two balls whose boxes stay
+// further apart than their radii cannot meet before one of them has an
+// event, so most pairs need no quartic at all.
+void Simulation::update_box(Trajectory& tr) {
+  if (tr.state == MotionState::stationary) {
+    tr.box_lo = tr.p0;
+    tr.box_hi = tr.p0;
+    return;
+  }
+  if (!(tr.t_end < kInf)) {
+    tr.box_lo = {-kInf, -kInf};
+    tr.box_hi = {kInf, kInf};
+    return;
+  }
+  const double T = tr.t_end - tr.t0;
+  const double p[2] = {tr.p0.x, tr.p0.y};
+  const double v[2] = {tr.v0.x, tr.v0.y};
+  const double a[2] = {tr.acc.x, tr.acc.y};
+  double lo[2], hi[2];
+  for (int k = 0; k < 2; ++k) {
+    const double end = p[k] + v[k] * T + 0.5 * a[k] * T * T;
+    lo[k] = std::min(p[k], end);
+    hi[k] = std::max(p[k], end);
+    if (a[k] != 0.0) {
+      const double s = -v[k] / a[k];
+      if (s > 0.0 && s < T) {
+        const double x = p[k] + v[k] * s + 0.5 * a[k] * s * s;
+        lo[k] = std::min(lo[k], x);
+        hi[k] = std::max(hi[k], x);
+      }
+    }
+    const double margin = 1e-9 * (1.0 + std::abs(lo[k]) + std::abs(hi[k]));
+    lo[k] -= margin;
+    hi[k] += margin;
+  }
+  tr.box_lo = {lo[0], lo[1]};
+  tr.box_hi = {hi[0], hi[1]};
 }
 
 Vec2 Simulation::position_at(std::int32_t i, double t) const {
@@ -219,6 +260,8 @@ Simulation::Kinematics Simulation::kinematics(std::int32_t i) const {
   k.t_end = A.t_end;
   k.radius = scenario_.balls[static_cast<std::size_t>(i)].radius;
   k.still = A.state == MotionState::stationary;
+  k.box_lo = A.box_lo;
+  k.box_hi = A.box_hi;
   return k;
 }
 
@@ -259,6 +302,11 @@ void Simulation::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
   const Trajectory& B = traj_[static_cast<std::size_t>(j)];
   const bool b_still = B.state == MotionState::stationary;
   if (ki.still && b_still) return;
+  const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
+  if (B.box_lo.x - ki.box_hi.x > sigma || ki.box_lo.x - B.box_hi.x > sigma ||
+      B.box_lo.y - ki.box_hi.y > sigma || ki.box_lo.y - B.box_hi.y > sigma) {
+    return;  // their paths never come within reach
+  }
   const double t = origin_;
   // B's kinematics at t, inline (this is the innermost loop).
   const double dt = std::min(t, B.t_end) - B.t0;
@@ -267,7 +315,6 @@ void Simulation::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
   const Vec2 dp = pb - ki.p;
   const Vec2 dv = (b_moves ? B.v0 + B.acc * dt : Vec2{}) - ki.v;
   const Vec2 da = (b_moves ? B.acc : Vec2{}) - ki.a;
-  const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
   const double dist2 = norm2(dp);
   double tau = kInf;
   if (da.x == 0.0 && da.y == 0.0) {
