@@ -123,6 +123,7 @@ class Simulation {
   void predict_walls(const Kinematics& ki, Prediction& best) const;
   void predict_cell(std::int32_t i, Prediction& best) const;
   void heap_fix(std::int32_t i);
+  void heap_sift_down(std::size_t pos);
   bool heap_less(std::int32_t a, std::int32_t b) const;
   void heap_swap(std::size_t a, std::size_t b);
   bool step(double limit);

@@ -50,6 +50,9 @@ Table make_polygon(const std::vector<Vec2>& vertices);
 /// wall or if p lies outside the table.
 double wall_clearance(const Table& table, Vec2 p, double r);
 
+/// Distance from p to the segment from a to b.
+double segment_distance(Vec2 p, Vec2 a, Vec2 b);
+
 /// True if p lies inside the outline (boundary counts as outside).
 bool contains(const Table& table, Vec2 p);
 

@@ -101,20 +101,7 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
     heap_pos_[i] = static_cast<std::int32_t>(i);
   }
   for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
-  // Build the heap bottom-up.
-  for (std::size_t k = n / 2; k-- > 0;) {
-    std::size_t pos = k;
-    for (;;) {
-      const std::size_t l = 2 * pos + 1;
-      const std::size_t r = l + 1;
-      std::size_t m = pos;
-      if (l < n && heap_less(heap_[l], heap_[m])) m = l;
-      if (r < n && heap_less(heap_[r], heap_[m])) m = r;
-      if (m == pos) break;
-      heap_swap(pos, m);
-      pos = m;
-    }
-  }
+  for (std::size_t k = n / 2; k-- > 0;) heap_sift_down(k);  // bottom-up
 }
 
 // ---------------------------------------------------------------------------
@@ -509,6 +496,10 @@ void Simulation::heap_fix(std::int32_t i) {
     heap_swap(pos, parent);
     pos = parent;
   }
+  heap_sift_down(pos);
+}
+
+void Simulation::heap_sift_down(std::size_t pos) {
   const std::size_t n = heap_.size();
   for (;;) {
     const std::size_t l = 2 * pos + 1;

@@ -48,14 +48,6 @@ bool segments_intersect(Vec2 p1, Vec2 p2, Vec2 q1, Vec2 q2) {
   return false;
 }
 
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = norm2(ab);
-  double s = len2 > 0.0 ? dot(p - a, ab) / len2 : 0.0;
-  s = std::clamp(s, 0.0, 1.0);
-  return norm(p - (a + ab * s));
-}
-
 Wall make_segment(Vec2 a, Vec2 b, Vec2 inward, std::string name) {
   Wall w;
   w.kind = WallKind::segment;
@@ -168,6 +160,14 @@ Table make_polygon(const std::vector<Vec2>& v) {
     }
   }
   return t;
+}
+
+double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = norm2(ab);
+  double s = len2 > 0.0 ? dot(p - a, ab) / len2 : 0.0;
+  s = std::clamp(s, 0.0, 1.0);
+  return norm(p - (a + ab * s));
 }
 
 bool contains(const Table& table, Vec2 p) {

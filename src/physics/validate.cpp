@@ -97,21 +97,13 @@ std::optional<ScenarioError> check_ball(const Scenario& s, std::size_t i) {
   return std::nullopt;
 }
 
-double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = norm2(ab);
-  double t = len2 > 0.0 ? dot(p - a, ab) / len2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return norm(p - (a + ab * t));
-}
-
 /// The wall nearest to p, to name it in a message. wall_clearance() says
 /// whether a ball crosses a wall; this only says which.
 const Wall* nearest_wall(const Table& table, Vec2 p) {
   const Wall* best = nullptr;
   double best_d = std::numeric_limits<double>::infinity();
   for (const Wall& w : table.walls) {
-    const double d = w.kind == WallKind::segment ? point_segment_distance(p, w.a, w.b)
+    const double d = w.kind == WallKind::segment ? segment_distance(p, w.a, w.b)
                                                  : norm(p - w.a);
     if (d < best_d) {
       best_d = d;
