@@ -10,7 +10,7 @@ namespace breakshot {
 enum class Model : std::uint8_t {
   ideal,     ///< frictionless disks: constant velocity between collisions
   friction,  ///< constant deceleration along minus the velocity until rest
-  pool,      ///< sliding, rolling and spinning spheres (not implemented yet)
+  pool,      ///< sliding, rolling and spinning spheres, cue, cushions, pockets
 };
 
 std::string_view to_string(Model m);
@@ -24,6 +24,10 @@ struct PhysicsParams {
   /// Ball-ball friction coefficient (pool model only; ideal and friction
   /// collisions are frictionless by definition).
   double ball_ball_friction = 0.0;
+  /// Pool model: use the speed-dependent fit mu(v) = a + b exp(-c v)
+  /// (pooltool's default, after Alciatore) instead of the constant
+  /// ball_ball_friction. The reader sets it when the field is not given.
+  bool ball_ball_friction_fit = false;
   double gravity = 9.81;
   /// Deceleration of every moving ball in the friction model (m/s^2).
   /// The scenario reader defaults it to rolling_friction * gravity.

@@ -8,6 +8,7 @@
 
 #include "breakshot/ball.hpp"
 #include "breakshot/physics.hpp"
+#include "breakshot/pool.hpp"
 #include "breakshot/table.hpp"
 
 namespace breakshot {
@@ -25,6 +26,13 @@ struct Until {
   double time = 0.0;  ///< used when rest is false
 };
 
+/// A cue strike at t = 0 (pool model).
+struct CueSpec {
+  std::int32_t ball = -1;  ///< index into Scenario::balls
+  CueStrike strike;
+  CueParams params;
+};
+
 struct Scenario {
   PhysicsParams physics;
   Table table;
@@ -33,6 +41,7 @@ struct Scenario {
   std::vector<PairRestitution> pair_restitution;
   Until until;
   std::optional<double> sample_dt;  ///< report the state every dt seconds
+  std::optional<CueSpec> cue;       ///< pool model: the shot
   std::uint64_t max_events = 10'000'000;
 };
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "breakshot/ball.hpp"
@@ -27,6 +28,7 @@ struct Sample {
 
 struct RunResult {
   bool complete = true;
+  std::optional<StrikeResult> cue;  ///< what the cue strike did, if any
   std::vector<Event> events;
   double final_time = 0.0;
   std::vector<BallState> final_balls;
@@ -73,6 +75,9 @@ class Simulation {
 
   const Scenario& scenario() const { return scenario_; }
 
+  /// The cue strike's outcome (set when the scenario has a cue).
+  const std::optional<StrikeResult>& cue_result() const { return cue_result_; }
+
   /// A ball's motion from t0 on: p(t) = p0 + v0 dt + acc dt^2 / 2 with
   /// dt = t - t0, valid until t_end (its next change of state by itself).
   struct Trajectory {
@@ -81,6 +86,8 @@ class Simulation {
     Vec2 v0;
     Vec2 acc;
     Vec3 w0;
+    Vec2 alpha;            ///< angular acceleration about x and y (pool)
+    double wz_rate = 0.0;  ///< decay of |w_z| per second (pool)
     double t_end = 0.0;  ///< +inf if the motion never changes by itself
     MotionState state = MotionState::stationary;
     Vec2 box_lo;  ///< bounds of the centre's path from t0 to t_end
@@ -96,7 +103,7 @@ class Simulation {
   // later event is recognised when it comes up, instead of being searched
   // for and removed (the DynamO way).
   // Kinds in the order simultaneous events of one ball are taken.
-  enum class Kind : std::uint8_t { ball, wall, stop, cell, none };
+  enum class Kind : std::uint8_t { ball, wall, pocket, stop, cell, none };
   struct Prediction {
     double time = 0.0;
     Kind kind = Kind::none;
@@ -122,6 +129,7 @@ class Simulation {
   void predict_accelerating_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
   void predict_walls(const Kinematics& ki, Prediction& best) const;
   void predict_cell(std::int32_t i, Prediction& best) const;
+  void predict_pockets(const Kinematics& ki, Prediction& best) const;
   void heap_fix(std::int32_t i);
   void heap_sift_down(std::size_t pos);
   bool heap_less(std::int32_t a, std::int32_t b) const;
@@ -133,11 +141,15 @@ class Simulation {
   Vec2 velocity_at(std::int32_t i, double t) const;
   Vec2 acceleration_for(Vec2 v) const;
   void set_velocity(std::int32_t i, Vec2 v);
+  void set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls = false);
+  Vec3 spin_at(std::int32_t i, double t) const;
   static void update_box(Trajectory& tr);
   double pair_restitution(std::int32_t i, std::int32_t j) const;
   double outgoing_speed(double closing, double restitution) const;
   bool pressed(double out, double acc_n, double window) const;
   void collide_balls(std::int32_t i, std::int32_t j);
+  void collide_pool_balls(std::int32_t i, std::int32_t j);
+  void collide_pool_wall(std::int32_t i, std::int32_t w);
   void collide_wall(std::int32_t i, std::int32_t w);
   std::int32_t cell_index(Vec2 p) const;
   void cell_link(std::int32_t i, std::int32_t cell);
@@ -159,6 +171,7 @@ class Simulation {
   std::vector<std::int32_t> heap_;      // ball indices, min-heap on next_
   std::vector<std::int32_t> heap_pos_;  // where each ball sits in heap_
   std::vector<Event> events_;
+  std::optional<StrikeResult> cue_result_;
   // Pairs with a restitution of their own: sorted keys a * n + b (a < b).
   std::vector<std::uint64_t> pair_keys_;
   std::vector<double> pair_values_;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "breakshot/pool.hpp"
 #include "breakshot/vec.hpp"
 
 namespace breakshot {
@@ -15,6 +16,10 @@ namespace breakshot {
 enum class WallKind : std::uint8_t {
   segment,  ///< straight wall from a to b; `normal` points into the table
   corner,   ///< a point (a reflex vertex) that a ball can hit
+  arc,      ///< a convex round piece (a pocket jaw's tip): circle of
+            ///< `radius` about `a`, hit from outside, only where the
+            ///< direction from `a` to the contact lies between the unit
+            ///< vectors `b` (start) and `normal` (end), counter-clockwise
 };
 
 struct Wall {
@@ -22,7 +27,16 @@ struct Wall {
   Vec2 a;       ///< segment start, or the corner point
   Vec2 b;       ///< segment end (unused for a corner)
   Vec2 normal;  ///< unit normal into the table (segment only)
+  double radius = 0.0;  ///< arc only
   std::string name;  ///< stable name used in events ("left", "edge3", ...)
+};
+
+/// A pocket: a ball whose centre comes within `radius` of `centre` has
+/// fallen in (the rule is documented in docs/physics.md).
+struct Pocket {
+  Vec2 centre;
+  double radius = 0.0;
+  std::string name;  ///< "top_left", "side_bottom", ...
 };
 
 /// A table: its outline (for drawing and containment) and its walls.
@@ -30,9 +44,23 @@ struct Table {
   std::string shape;          ///< "rectangle" or "polygon"
   std::vector<Vec2> outline;  ///< counter-clockwise boundary
   std::vector<Wall> walls;
-  Vec2 min;  ///< bounding box
+  std::vector<Pocket> pockets;  ///< pool tables only
+  Vec2 min;  ///< bounding box of everything a ball centre can reach
   Vec2 max;
+  // Pool tables: the playing surface is [0, length] x [0, width].
+  double length = 0.0;
+  double width = 0.0;
+  Vec2 head_spot;
+  Vec2 foot_spot;
+  /// The cushions' nose height and friction (pool model). The restitution
+  /// used is each ball's wall_restitution.
+  CushionParams cushion;
 };
+
+/// A regulation pocket billiards table (WPA): "7ft", "8ft" or "9ft".
+/// Throws std::invalid_argument for another size. Geometry and names are
+/// documented in docs/physics.md.
+Table make_pool_table(const std::string& size);
 
 /// Four walls named left, right, bottom and top. Requires min < max.
 Table make_rectangle(Vec2 min, Vec2 max);

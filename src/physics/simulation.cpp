@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "breakshot/pool.hpp"
 #include "breakshot/roots.hpp"
 
 namespace breakshot {
@@ -24,6 +25,16 @@ constexpr std::size_t kCellThreshold = 48;
 // segment's length) so that a ball arriving exactly at the junction of
 // two walls is caught by one of them.
 constexpr double kSegmentSlack = 1e-9;
+
+// Does a ball in this state change position?
+bool translating(MotionState s) {
+  return s == MotionState::moving || s == MotionState::sliding || s == MotionState::rolling;
+}
+
+// Is a ball in this state done (nothing more will happen by itself)?
+bool resting(MotionState s) {
+  return s == MotionState::stationary || s == MotionState::pocketed;
+}
 
 }  // namespace
 
@@ -51,7 +62,7 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
     tr.w0 = scenario_.start[i].spin;
     tr.state = MotionState::stationary;
     tr.t_end = kInf;
-    set_velocity(static_cast<std::int32_t>(i), scenario_.start[i].velocity);
+    set_motion(static_cast<std::int32_t>(i), scenario_.start[i].velocity, scenario_.start[i].spin);
   }
 
   // Pair restitutions, sorted for binary search at collision time.
@@ -96,6 +107,25 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
     }
   }
 
+  // The cue strike: the shot's first event, at t = 0. A miscue is
+  // reported (cue_result) and not played.
+  if (scenario_.cue && scenario_.cue->ball >= 0 &&
+      static_cast<std::size_t>(scenario_.cue->ball) < n) {
+    const CueSpec& cue = *scenario_.cue;
+    const auto ub = static_cast<std::size_t>(cue.ball);
+    cue_result_ = strike(cue.strike, scenario_.balls[ub].mass, radius_[ub], cue.params);
+    if (!cue_result_->miscue) {
+      set_motion(cue.ball, cue_result_->velocity, cue_result_->spin);
+      Event ev;
+      ev.time = 0.0;
+      ev.type = EventType::cue_strike;
+      ev.ball = cue.ball;
+      events_.push_back(ev);
+      ++event_count_;
+      ++counter_[ub];
+    }
+  }
+
   for (std::size_t i = 0; i < n; ++i) {
     heap_[i] = static_cast<std::int32_t>(i);
     heap_pos_[i] = static_cast<std::int32_t>(i);
@@ -116,20 +146,67 @@ Vec2 Simulation::acceleration_for(Vec2 v) const {
 }
 
 void Simulation::set_velocity(std::int32_t i, Vec2 v) {
-  Trajectory& tr = traj_[static_cast<std::size_t>(i)];
-  const bool was_moving = tr.state != MotionState::stationary;
+  set_motion(i, v, traj_[static_cast<std::size_t>(i)].w0);
+}
+
+// A new motion from t0 on: picks the state and the polynomial of this
+// phase. The pool model's phases (docs/physics.md):
+//   sliding  contact point slips (u != 0): friction -mu_s m g u/|u| until
+//            the slip stops at 2|u| / (7 mu_s g);
+//   rolling  u = 0: rolling resistance -mu_r m g v/|v| until the ball
+//            stops at |v| / (mu_r g); the spin follows the velocity;
+//   spinning in place about z until w_z has decayed;
+// and w_z decays at 5 mu_sp g / (2 R) in every state.
+void Simulation::set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls) {
+  const auto ui = static_cast<std::size_t>(i);
+  Trajectory& tr = traj_[ui];
+  const bool was_active = !resting(tr.state);
+  const PhysicsParams& ph = scenario_.physics;
   tr.v0 = v;
-  tr.acc = acceleration_for(v);
-  const double speed = norm(v);
-  tr.state = speed > 0.0 ? MotionState::moving : MotionState::stationary;
+  tr.acc = {};
+  tr.alpha = {};
+  tr.wz_rate = 0.0;
   tr.t_end = kInf;
-  if (speed > 0.0 && scenario_.physics.model == Model::friction &&
-      scenario_.physics.deceleration > 0.0) {
-    tr.t_end = tr.t0 + speed / scenario_.physics.deceleration;
+  if (ph.model != Model::pool) {
+    tr.w0 = {};
+    tr.acc = acceleration_for(v);
+    const double speed = norm(v);
+    tr.state = speed > 0.0 ? MotionState::moving : MotionState::stationary;
+    if (speed > 0.0 && ph.model == Model::friction && ph.deceleration > 0.0) {
+      tr.t_end = tr.t0 + speed / ph.deceleration;
+    }
+  } else {
+    const double r = radius_[ui];
+    tr.w0 = w;
+    tr.wz_rate = 2.5 * ph.spinning_friction * ph.gravity / r;
+    const Vec2 u{v.x - r * w.y, v.y + r * w.x};  // slip of the contact point
+    const double slip = norm(u);
+    const double speed = norm(v);
+    // `rolls`: the slip has just stopped. w = z x v / R is exact only up
+    // to rounding, so the state is set, not inferred from the slip.
+    if (slip > 0.0 && !rolls) {
+      tr.state = MotionState::sliding;
+      const Vec2 uh = u / slip;
+      const double f = ph.sliding_friction * ph.gravity;
+      tr.acc = uh * -f;
+      tr.alpha = perp(uh) * (2.5 * f / r);
+      if (f > 0.0) tr.t_end = tr.t0 + slip / (3.5 * f);
+    } else if (speed > 0.0) {
+      tr.state = MotionState::rolling;
+      const double f = ph.rolling_friction * ph.gravity;
+      tr.acc = v * (-f / speed);
+      tr.alpha = perp(tr.acc) / r;
+      if (f > 0.0) tr.t_end = tr.t0 + speed / f;
+    } else if (w.z != 0.0) {
+      tr.state = MotionState::spinning;
+      if (tr.wz_rate > 0.0) tr.t_end = tr.t0 + std::abs(w.z) / tr.wz_rate;
+    } else {
+      tr.state = MotionState::stationary;
+    }
   }
-  const bool moving = tr.state != MotionState::stationary;
-  if (moving && !was_moving) ++moving_;
-  if (!moving && was_moving) --moving_;
+  const bool active = !resting(tr.state);
+  if (active && !was_active) ++moving_;
+  if (!active && was_active) --moving_;
   update_box(tr);
 }
 
@@ -138,7 +215,7 @@ void Simulation::set_velocity(std::int32_t i, Vec2 v) {
 // further apart than their radii cannot meet before one of them has an
 // event, so most pairs need no quartic at all.
 void Simulation::update_box(Trajectory& tr) {
-  if (tr.state == MotionState::stationary) {
+  if (!translating(tr.state)) {
     tr.box_lo = tr.p0;
     tr.box_hi = tr.p0;
     return;
@@ -181,8 +258,25 @@ Vec2 Simulation::position_at(std::int32_t i, double t) const {
 
 Vec2 Simulation::velocity_at(std::int32_t i, double t) const {
   const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
-  if (t >= tr.t_end) return {};
+  if (t >= tr.t_end) {
+    // A ball of the friction model stops at t_end; a pool ball's phase
+    // ends there with the velocity the phase reached.
+    if (tr.state == MotionState::moving) return {};
+    t = tr.t_end;
+  }
   return tr.v0 + tr.acc * (t - tr.t0);
+}
+
+Vec3 Simulation::spin_at(std::int32_t i, double t) const {
+  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
+  const double dt = std::min(t, tr.t_end) - tr.t0;
+  Vec3 w = tr.w0;
+  w.x += tr.alpha.x * dt;
+  w.y += tr.alpha.y * dt;
+  // w_z decays linearly to zero and stays there.
+  const double left = std::max(0.0, std::abs(tr.w0.z) - tr.wz_rate * dt);
+  w.z = tr.w0.z < 0.0 ? -left : (tr.w0.z > 0.0 ? left : 0.0);
+  return w;
 }
 
 BallState Simulation::state_at(std::int32_t i, double t) const {
@@ -190,8 +284,8 @@ BallState Simulation::state_at(std::int32_t i, double t) const {
   BallState s;
   s.position = position_at(i, t);
   s.velocity = velocity_at(i, t);
-  s.spin = tr.w0;
-  s.state = t >= tr.t_end ? MotionState::stationary : tr.state;
+  s.spin = spin_at(i, t);
+  s.state = (t >= tr.t_end && tr.state == MotionState::moving) ? MotionState::stationary : tr.state;
   return s;
 }
 
@@ -200,8 +294,10 @@ void Simulation::move_to(std::int32_t i, double t) {
   if (t == tr.t0) return;
   const Vec2 p = position_at(i, t);
   const Vec2 v = velocity_at(i, t);
+  const Vec3 w = spin_at(i, t);
   tr.p0 = p;
   tr.v0 = v;
+  tr.w0 = w;
   tr.t0 = t;
 }
 
@@ -246,7 +342,7 @@ Simulation::Kinematics Simulation::kinematics(std::int32_t i) const {
   k.a = t < A.t_end ? A.acc : Vec2{};
   k.t_end = A.t_end;
   k.radius = scenario_.balls[static_cast<std::size_t>(i)].radius;
-  k.still = A.state == MotionState::stationary;
+  k.still = !translating(A.state);
   k.box_lo = A.box_lo;
   k.box_hi = A.box_hi;
   return k;
@@ -287,7 +383,8 @@ Simulation::Kinematics Simulation::kinematics(std::int32_t i) const {
 void Simulation::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
                                            Prediction& best) const {
   const Trajectory& B = traj_[static_cast<std::size_t>(j)];
-  const bool b_still = B.state == MotionState::stationary;
+  if (B.state == MotionState::pocketed) return;
+  const bool b_still = !translating(B.state);
   if (ki.still && b_still) return;
   const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
   if (B.box_lo.x - ki.box_hi.x > sigma || ki.box_lo.x - B.box_hi.x > sigma ||
@@ -361,25 +458,60 @@ void Simulation::predict_walls(const Kinematics& ki, Prediction& best) const {
       const double s = dot(q - wall.a, ab) / norm2(ab);
       if (s < -kSegmentSlack || s > 1.0 + kSegmentSlack) continue;
     } else {
+      // A corner is a point; an arc is a circle of its radius, hit from
+      // outside. Either way: the centre's distance to wall.a reaches
+      // r (+ the arc's radius).
+      const double reach = r + (wall.kind == WallKind::arc ? wall.radius : 0.0);
       const Vec2 d = p - wall.a;
       if (a.x == 0.0 && a.y == 0.0) {
         const double b = dot(d, v);
         if (b >= 0.0) continue;
-        tau = first_contact_quadratic(norm2(d) - r * r, b, norm2(v));
+        tau = first_contact_quadratic(norm2(d) - reach * reach, b, norm2(v));
       } else {
-        const double c[5] = {norm2(d) - r * r, 2.0 * dot(d, v), norm2(v) + dot(d, a), dot(v, a),
-                             0.25 * norm2(a)};
+        const double c[5] = {norm2(d) - reach * reach, 2.0 * dot(d, v), norm2(v) + dot(d, a),
+                             dot(v, a), 0.25 * norm2(a)};
         tau = first_contact(c, 4, window);
       }
       if (!(tau <= window)) continue;
+      if (wall.kind == WallKind::arc) {
+        // Only the part of the circle between the directions b and normal
+        // (counter-clockwise) is there.
+        const Vec2 q = p + v * tau + a * (0.5 * tau * tau) - wall.a;
+        const double slack = kSegmentSlack * norm(q);
+        if (cross(wall.b, q) < -slack || cross(q, wall.normal) < -slack) continue;
+      }
     }
     consider(best, t + tau, Kind::wall, static_cast<std::int32_t>(w), 0);
   }
 }
 
+// A ball falls into a pocket when its centre comes within the pocket's
+// radius of the pocket's centre (docs/physics.md, "Pockets").
+void Simulation::predict_pockets(const Kinematics& ki, Prediction& best) const {
+  if (ki.still) return;
+  const double t = origin_;
+  const double window = std::max(0.0, ki.t_end - t);
+  const auto& pockets = scenario_.table.pockets;
+  for (std::size_t k = 0; k < pockets.size(); ++k) {
+    const Vec2 d = ki.p - pockets[k].centre;
+    const double rr = pockets[k].radius * pockets[k].radius;
+    double tau = kInf;
+    if (ki.a.x == 0.0 && ki.a.y == 0.0) {
+      const double b = dot(d, ki.v);
+      if (b >= 0.0) continue;
+      tau = first_contact_quadratic(norm2(d) - rr, b, norm2(ki.v));
+    } else {
+      const double c[5] = {norm2(d) - rr, 2.0 * dot(d, ki.v), norm2(ki.v) + dot(d, ki.a),
+                           dot(ki.v, ki.a), 0.25 * norm2(ki.a)};
+      tau = first_contact(c, 4, window);
+    }
+    if (tau <= window) consider(best, t + tau, Kind::pocket, static_cast<std::int32_t>(k), 0);
+  }
+}
+
 void Simulation::predict_cell(std::int32_t i, Prediction& best) const {
   const Trajectory& A = traj_[static_cast<std::size_t>(i)];
-  if (A.state == MotionState::stationary) return;
+  if (!translating(A.state)) return;
   const double t = origin_;
   const double window = std::max(0.0, A.t_end - t);
   const Vec2 p = position_at(i, t);
@@ -442,8 +574,13 @@ void Simulation::predict_cells(std::int32_t i, const Kinematics& ki, std::int32_
 
 void Simulation::predict(std::int32_t i) {
   const auto ui = static_cast<std::size_t>(i);
-  const Kinematics ki = kinematics(i);
   Prediction best{kInf, Kind::none, -1, 0};
+  if (traj_[ui].state == MotionState::pocketed) {
+    event_[ui] = best;
+    next_[ui] = best;
+    return;
+  }
+  const Kinematics ki = kinematics(i);
   if (use_cells_) {
     const std::int32_t cell = ball_cell_[ui];
     const std::int32_t cx = cell % grid_nx_;
@@ -456,8 +593,9 @@ void Simulation::predict(std::int32_t i) {
     }
   }
   predict_walls(ki, best);
+  if (!scenario_.table.pockets.empty()) predict_pockets(ki, best);
   const Trajectory& tr = traj_[ui];
-  if (tr.state != MotionState::stationary && tr.t_end < kInf) {
+  if (!resting(tr.state) && tr.t_end < kInf) {
     consider(best, tr.t_end, Kind::stop, -1, 0);
   }
   event_[ui] = best;
@@ -588,7 +726,74 @@ bool Simulation::pressed(double out, double acc_n, double window) const {
   return 2.0 * out < -acc_n * window;
 }
 
+// The pool model's impacts: friction between the balls (throw, spin
+// transfer) and the cushion model, with the same collapse and parting
+// rules as the simpler models.
+void Simulation::collide_pool_balls(std::int32_t i, std::int32_t j) {
+  const auto ui = static_cast<std::size_t>(i);
+  const auto uj = static_cast<std::size_t>(j);
+  Trajectory& A = traj_[ui];
+  Trajectory& B = traj_[uj];
+  const double ma = scenario_.balls[ui].mass;
+  const double mb = scenario_.balls[uj].mass;
+  Vec2 n = B.p0 - A.p0;
+  const double len = norm(n);
+  n = len > 0.0 ? n / len : Vec2{1.0, 0.0};
+  const double closing = dot(A.v0 - B.v0, n);
+  const double vc = scenario_.physics.collapse_speed;
+  const double e = closing < vc ? 1.0 : pair_restitution(i, j);
+  const PhysicsParams& ph = scenario_.physics;
+  const BallFriction friction = ph.ball_ball_friction_fit
+                                    ? BallFriction{}
+                                    : BallFriction{ph.ball_ball_friction, 0.0, 0.0};
+  const BallImpact r = ball_ball_impact(A.p0, A.v0, A.w0, ma, radius_[ui], B.p0, B.v0, B.w0, mb,
+                                        radius_[uj], e, friction);
+  set_motion(i, r.v1, r.w1);
+  set_motion(j, r.v2, r.w2);
+  const double reduced = ma * mb / (ma + mb);
+  auto push = [&](double dv) {  // extra normal impulse reduced * dv
+    const double impulse = reduced * dv;
+    set_motion(i, A.v0 - n * (impulse / ma), A.w0);
+    set_motion(j, B.v0 + n * (impulse / mb), B.w0);
+  };
+  const double out = dot(B.v0 - A.v0, n);
+  if (pressed(out, dot(B.acc - A.acc, n), std::min(A.t_end, B.t_end) - A.t0)) push(vc - out);
+  const Vec2 dp = B.p0 - A.p0;
+  double extra = 4.0 * std::numeric_limits<double>::epsilon() *
+                 std::max({norm(A.v0), norm(B.v0), vc});
+  for (int k = 0; k < 64 && dot(dp, B.v0 - A.v0) < 0.0; ++k, extra *= 2.0) push(extra);
+}
+
+void Simulation::collide_pool_wall(std::int32_t i, std::int32_t w) {
+  const auto ui = static_cast<std::size_t>(i);
+  Trajectory& A = traj_[ui];
+  const Wall& wall = scenario_.table.walls[static_cast<std::size_t>(w)];
+  Vec2 n = wall.normal;
+  if (wall.kind != WallKind::segment) {
+    n = A.p0 - wall.a;
+    const double len = norm(n);
+    n = len > 0.0 ? n / len : Vec2{1.0, 0.0};
+  }
+  const double closing = -dot(A.v0, n);
+  const double vc = scenario_.physics.collapse_speed;
+  CushionParams cp = scenario_.table.cushion;
+  cp.restitution = closing < vc ? 1.0 : scenario_.balls[ui].wall_restitution;
+  const CushionImpact r = cushion_impact(A.v0, A.w0, n, scenario_.balls[ui].mass, radius_[ui], cp);
+  set_motion(i, r.velocity, r.spin);
+  const double out = dot(A.v0, n);
+  if (pressed(out, dot(A.acc, n), A.t_end - A.t0)) set_motion(i, A.v0 + n * (vc - out), A.w0);
+  const Vec2 away = wall.kind == WallKind::segment ? wall.normal : A.p0 - wall.a;
+  double extra = 4.0 * std::numeric_limits<double>::epsilon() * std::max(norm(A.v0), vc);
+  for (int k = 0; k < 64 && dot(away, A.v0) < 0.0; ++k, extra *= 2.0) {
+    set_motion(i, A.v0 + n * extra, A.w0);
+  }
+}
+
 void Simulation::collide_balls(std::int32_t i, std::int32_t j) {
+  if (scenario_.physics.model == Model::pool) {
+    collide_pool_balls(i, j);
+    return;
+  }
   Trajectory& A = traj_[static_cast<std::size_t>(i)];
   Trajectory& B = traj_[static_cast<std::size_t>(j)];
   const double ma = scenario_.balls[static_cast<std::size_t>(i)].mass;
@@ -630,10 +835,14 @@ void Simulation::collide_balls(std::int32_t i, std::int32_t j) {
 }
 
 void Simulation::collide_wall(std::int32_t i, std::int32_t w) {
+  if (scenario_.physics.model == Model::pool) {
+    collide_pool_wall(i, w);
+    return;
+  }
   Trajectory& A = traj_[static_cast<std::size_t>(i)];
   const Wall& wall = scenario_.table.walls[static_cast<std::size_t>(w)];
   Vec2 n = wall.normal;
-  if (wall.kind == WallKind::corner) {
+  if (wall.kind != WallKind::segment) {
     n = A.p0 - wall.a;
     const double len = norm(n);
     n = len > 0.0 ? n / len : Vec2{1.0, 0.0};
@@ -653,7 +862,7 @@ void Simulation::collide_wall(std::int32_t i, std::int32_t w) {
   // As for two balls: leave the wall in the predictor's own arithmetic.
   double extra = 4.0 * std::numeric_limits<double>::epsilon() *
                  std::max(norm(v), scenario_.physics.collapse_speed);
-  const Vec2 away = wall.kind == WallKind::corner ? A.p0 - wall.a : wall.normal;
+  const Vec2 away = wall.kind != WallKind::segment ? A.p0 - wall.a : wall.normal;
   for (int k = 0; k < 64 && dot(away, A.v0) < 0.0; ++k, extra *= 2.0) {
     dv += extra;
     set_velocity(i, v + n * dv);
@@ -743,14 +952,46 @@ bool Simulation::step(double limit) {
       ev.wall = p.other;
       break;
     case Kind::stop: {
-      // Stop exactly where the closed-form motion ends.
+      // The phase ends exactly where its closed-form motion ends.
       Trajectory& tr = traj_[ui];
+      const MotionState from = tr.state;
+      Vec2 v = velocity_at(i, tr.t_end);
+      Vec3 w = spin_at(i, tr.t_end);
       tr.p0 = position_at(i, tr.t_end);
       tr.t0 = t;
-      set_velocity(i, {});
+      const double r = radius_[ui];
+      switch (from) {
+        case MotionState::sliding:  // the slip has stopped: roll exactly
+          w.x = -v.y / r;
+          w.y = v.x / r;
+          break;
+        case MotionState::rolling:  // stopped; maybe still spinning
+          v = {};
+          w.x = 0.0;
+          w.y = 0.0;
+          break;
+        case MotionState::spinning:
+          w = {};
+          break;
+        default:  // the friction model's stop
+          v = {};
+          break;
+      }
+      set_motion(i, v, w, from == MotionState::sliding);
       ev.type = EventType::state_change;
-      ev.from = MotionState::moving;
-      ev.to = MotionState::stationary;
+      ev.from = from;
+      ev.to = tr.state;
+      break;
+    }
+    case Kind::pocket: {
+      Trajectory& tr = traj_[ui];
+      move_to(i, t);
+      set_motion(i, {}, {});  // at rest (counted as such) ...
+      tr.state = MotionState::pocketed;  // ... and out of play
+      update_box(tr);
+      if (use_cells_) cell_unlink(i);
+      ev.type = EventType::ball_pocket;
+      ev.pocket = p.other;
       break;
     }
     default:
@@ -831,6 +1072,7 @@ RunResult simulate(const Scenario& scenario) {
     complete = r == StopReason::reached;
   }
   result.complete = complete;
+  result.cue = sim.cue_result();
   result.events = sim.events();
   result.final_time = sim.time();
   result.final_balls = sim.balls();

@@ -1,0 +1,142 @@
+// The pool model's impact laws: cue strike, ball-ball with friction, and
+// the cushion. Each is a pure function of the states just before the
+// impact, tested on its own against published figures; the simulation
+// calls them at events.
+#pragma once
+
+#include "breakshot/vec.hpp"
+
+namespace breakshot {
+
+// ---------------------------------------------------------------------------
+// Cue strike (Leckie & Greenspan 2005 eq. 1-3; Alciatore TP A-30, A-31).
+
+struct CueParams {
+  double mass = 0.567;          ///< cue stick mass M (kg), a 20 oz cue
+  double tip_restitution = 0.75;  ///< Alciatore's property constants: 0.71-0.75
+  /// Effective end mass m_e of the shaft for squirt (kg); 0 turns squirt
+  /// off. TP A-31: tan(squirt) = 5/2 a sqrt(1 - a^2) / (1 + m/m_e +
+  /// 5/2 (1 - a^2)). 10 g (m/m_e = 17) gives 1.7 degrees at a = 0.25.
+  double end_mass = 0.010;
+  /// Largest tip offset sqrt(a^2 + b^2) (fraction of the radius) that
+  /// does not miscue. Alciatore: about half the radius.
+  double miscue_limit = 0.5;
+};
+
+/// What the cue stick does: `speed` m/s, aimed `phi` degrees
+/// counter-clockwise from +x, elevated `theta` degrees (0 <= theta < 90),
+/// tip offset `a` (right english > 0) and `b` (follow > 0) as fractions of
+/// the radius. The offsets are measured perpendicular to the cue axis, as
+/// seen sighting along the cue (not the contact point's height on the
+/// ball): a and b are the same whatever the elevation.
+struct CueStrike {
+  double speed = 0.0;
+  double phi = 0.0;
+  double theta = 0.0;
+  double a = 0.0;
+  double b = 0.0;
+};
+
+struct StrikeResult {
+  Vec2 velocity;   ///< of the ball centre, on the table plane
+  Vec3 spin;       ///< rad/s; right english gives spin.z > 0 (counter-clockwise from above)
+  /// Degrees from phi to the ball's direction, counter-clockwise positive:
+  /// right english squirts the ball to the left, a positive angle.
+  double squirt = 0.0;
+  bool miscue = false;  ///< offset beyond CueParams::miscue_limit: not played
+};
+
+/// The ball's velocity and spin just after the tip leaves it. A centre
+/// hit (a = b = 0, theta = 0) gives speed (1 + e) V / (1 + m/M) for tip
+/// restitution e (Leckie & Greenspan's 2 V / (1 + m/M) when e = 1) and no
+/// spin. A miscue returns miscue = true and a zero velocity and spin; an
+/// offset of a whole radius or more is always a miscue. The ball stays on
+/// the cloth (no jumps): the vertical part of the velocity is dropped.
+/// Strokes outside the model (speed not > 0, theta outside [0, 90),
+/// non-finite values, masses or radius not > 0, tip restitution outside
+/// [0, 1], negative end mass) leave the ball at rest with miscue = false:
+/// callers validate; the result is never NaN. See src/physics/cue.cpp.
+StrikeResult strike(const CueStrike& cue, double ball_mass, double ball_radius,
+                    const CueParams& params);
+
+// ---------------------------------------------------------------------------
+// Ball-ball impact with friction (Alciatore TP A-5, A-6, A-14).
+
+struct BallImpact {
+  Vec2 v1, v2;  ///< velocities after
+  Vec3 w1, w2;  ///< spins after
+};
+
+/// Friction coefficient between balls as a function of the sliding speed
+/// of the contact points (m/s): mu(v) = a + b exp(-c |v|), clamped at 0.
+/// The defaults are Alciatore's fit to Marlow's data (TP A-14, A-28; also
+/// pooltool's default); BallFriction{0, 0, 0} is frictionless.
+struct BallFriction {
+  double a = 0.009951;
+  double b = 0.108;
+  double c = 1.088;
+  double operator()(double slip) const;
+};
+
+/// Impact of ball 1 (at p1) and ball 2 (at p2), touching, with restitution
+/// e in [0, 1]. The normal impulse gives the restitution; the tangential
+/// impulse opposes the slip of the contact points (horizontal and
+/// vertical), at most mu(slip at the start) times the normal impulse and
+/// no more than what stops the slip. It changes both balls' velocities
+/// (throw) and spins (spin transfer, including a little draw or follow for
+/// the object ball); its vertical linear part is taken by the cloth.
+/// Momentum on the table plane and angular momentum about vertical axes
+/// are conserved; energy never increases. The line of centres is taken
+/// horizontal, exact for equal radii. Balls not approaching along the line
+/// of centres, coincident centres, or masses or radii not > 0 leave the
+/// state unchanged. See src/physics/ball_impact.cpp.
+BallImpact ball_ball_impact(Vec2 p1, Vec2 v1, Vec3 w1, double m1, double r1, Vec2 p2, Vec2 v2,
+                            Vec3 w2, double m2, double r2, double restitution,
+                            const BallFriction& friction);
+
+// ---------------------------------------------------------------------------
+// Cushion impact with the rail nose above the ball's centre (Han 2005).
+
+struct CushionParams {
+  /// Height of the nose contact above the cloth as a fraction of the
+  /// ball's diameter (WPA: about 63.5 %). The contact normal is tilted
+  /// t = asin(2 nose_height - 1) above the horizontal (15.7 degrees here).
+  /// 0.5 puts the nose at the centre's height. Meaningful in (0, 1).
+  double nose_height = 0.635;
+  /// Newton restitution along the tilted contact normal, in [0, 1]. It is
+  /// not the ratio of rebound to incident speed: with the nose above the
+  /// centre and friction, a rolling ball hitting straight on comes back at
+  /// (1 + e) cos t (cos t + mu sin t) - 1 of its speed: 0.686 with these
+  /// defaults, within the ball-rail range 0.5-0.7 of Alciatore's "pool
+  /// physics property constants" (Marlow gives 0.55 for pool; Mathavan et
+  /// al. 2010 measured 0.818 for a rolling ball on a snooker table).
+  /// Mathavan's fitted 0.98 belongs to his model, which holds the ball on
+  /// the cloth during the impact, and is not comparable.
+  double restitution = 0.75;
+  /// Ball-rail sliding friction, >= 0: Mathavan et al. 2010 (Proc. IMechE
+  /// C 224) fitted 0.14 to high-speed-camera measurements.
+  double friction = 0.14;
+};
+
+struct CushionImpact {
+  Vec2 velocity;
+  Vec3 spin;
+};
+
+/// A ball moving with velocity v and spin w hits a straight cushion whose
+/// normal n (nonzero; normalized here) points into the table. Returns the
+/// velocity and spin just after. Han's model: the rail's impulse acts at
+/// the nose contact, its normal part set by the restitution along the
+/// tilted contact normal, its frictional part opposing the slip of the
+/// contact point (Coulomb, sliding throughout or sticking once the slip
+/// stops). It changes velocity and spin together. The ball stays on the
+/// cloth: the vertical velocity the impulse would give is dropped (the
+/// cloth takes it; no hop, no cloth friction during the impact). The
+/// result never moves into the cushion (v.n >= 0 up to rounding) and never
+/// has more kinetic energy. A ball not moving into the cushion (v.n >= 0)
+/// is returned unchanged. The mass cancels out. Equations and their
+/// derivation: src/physics/cushion.cpp.
+CushionImpact cushion_impact(Vec2 v, Vec3 w, Vec2 n, double mass, double radius,
+                             const CushionParams& params);
+
+}  // namespace breakshot

@@ -1,0 +1,161 @@
+// Racks: the regulation starting positions of the object balls.
+//
+// The balls sit on a triangular lattice whose spacing is the ball diameter
+// plus kLatticeGap, rows toward the foot rail (+x): row k lies k * s *
+// sqrt(3)/2 behind the foot spot, its balls s apart and centred on the long
+// axis. The apex ball is exactly on the foot spot; every other ball is then
+// moved by a random vector shorter than kJitter (< kLatticeGap / 2), so
+// that two balls are always more than 2R + kLatticeGap - 2 kJitter apart
+// (never touching) and neighbours are at most 2R + kLatticeGap + 2 kJitter
+// apart: a rack frozen with the tiny random gaps of a real one.
+//
+// Randomness comes from std::mt19937_64 seeded with `seed`, used through
+// raw 64-bit draws only (no std::*_distribution, whose output is not
+// specified across standard libraries) and plain arithmetic, so a seed
+// gives the same rack everywhere. Draws, in order: the ball assignment
+// (8-ball: the solid, the stripe and the corner that takes the solid, then
+// a Fisher-Yates shuffle of the rest; 9-ball: the shuffle), then the
+// displacement of each ball but the apex, in lattice order.
+#include "breakshot/rack.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace breakshot {
+
+namespace {
+
+constexpr double kLatticeGap = 0.2e-3;  ///< m, added to the lattice spacing
+constexpr double kJitter = 0.09e-3;     ///< m, largest displacement of a ball
+
+class Draws {
+ public:
+  explicit Draws(std::uint64_t seed) : rng_(seed) {}
+
+  /// Uniform in [0, n), without modulo bias.
+  std::uint64_t below(std::uint64_t n) {
+    const std::uint64_t reject = (0 - n) % n;  // 2^64 mod n
+    for (;;) {
+      const std::uint64_t x = rng_();
+      if (x >= reject) return x % n;
+    }
+  }
+
+  /// Uniform in [-1, 1).
+  double symmetric() {
+    const double u = static_cast<double>(rng_() >> 11) * 0x1.0p-53;
+    return 2.0 * u - 1.0;
+  }
+
+  /// Uniform in the unit disk, by rejection.
+  Vec2 in_disk() {
+    for (;;) {
+      const double x = symmetric();
+      const double y = symmetric();
+      if (x * x + y * y < 1.0) return {x, y};
+    }
+  }
+
+  template <class T>
+  void shuffle(std::vector<T>& v) {
+    for (std::size_t i = v.size(); i > 1; --i) {
+      const auto j = static_cast<std::size_t>(below(i));
+      std::swap(v[i - 1], v[j]);
+    }
+  }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+/// The lattice spots, row by row from the apex; row k has counts[k] balls,
+/// listed toward +y.
+std::vector<Vec2> lattice(Vec2 apex, double spacing, const std::vector<int>& counts) {
+  std::vector<Vec2> spots;
+  const double row = spacing * std::sqrt(3.0) * 0.5;
+  for (std::size_t k = 0; k < counts.size(); ++k) {
+    const int c = counts[k];
+    for (int j = 0; j < c; ++j) {
+      spots.push_back({apex.x + static_cast<double>(k) * row,
+                       apex.y + (static_cast<double>(j) - 0.5 * static_cast<double>(c - 1)) * spacing});
+    }
+  }
+  return spots;
+}
+
+}  // namespace
+
+std::vector<RackedBall> make_rack(const std::string& game, const Table& table, double radius,
+                                  std::uint64_t seed) {
+  if (!(radius > 0.0) || !std::isfinite(radius)) {
+    throw std::invalid_argument("the ball radius must be positive and finite");
+  }
+  if (!(table.length > 0.0 && table.width > 0.0)) {
+    throw std::invalid_argument("a rack needs a pool table");
+  }
+  const double spacing = 2.0 * radius + kLatticeGap;
+  Draws draws(seed);
+
+  // balls[i] is the number of the ball on lattice spot i.
+  std::vector<Vec2> spots;
+  std::vector<int> balls;
+  if (game == "eight_ball") {
+    // Rows of 1-2-3-4-5. Spot 4 is the middle of the third row, spots 10
+    // and 14 the back corners.
+    spots = lattice(table.foot_spot, spacing, {1, 2, 3, 4, 5});
+    const int solid = 1 + static_cast<int>(draws.below(7));
+    const int stripe = 9 + static_cast<int>(draws.below(7));
+    const bool solid_first = draws.below(2) == 0;
+    std::vector<int> rest;
+    for (int n = 1; n <= 15; ++n) {
+      if (n != 8 && n != solid && n != stripe) rest.push_back(n);
+    }
+    draws.shuffle(rest);
+    balls.assign(15, 0);
+    balls[4] = 8;
+    balls[10] = solid_first ? solid : stripe;
+    balls[14] = solid_first ? stripe : solid;
+    std::size_t next = 0;
+    for (int& b : balls) {
+      if (b == 0) b = rest[next++];
+    }
+  } else if (game == "nine_ball") {
+    // A diamond of 1-2-3-2-1: the 1 at the apex (spot 0), the 9 in the
+    // middle (spot 4).
+    spots = lattice(table.foot_spot, spacing, {1, 2, 3, 2, 1});
+    std::vector<int> rest{2, 3, 4, 5, 6, 7, 8};
+    draws.shuffle(rest);
+    balls.assign(9, 0);
+    balls[0] = 1;
+    balls[4] = 9;
+    std::size_t next = 0;
+    for (int& b : balls) {
+      if (b == 0) b = rest[next++];
+    }
+  } else {
+    throw std::invalid_argument("unknown game \"" + game +
+                                "\" (expected \"eight_ball\" or \"nine_ball\")");
+  }
+
+  for (std::size_t i = 1; i < spots.size(); ++i) spots[i] += draws.in_disk() * kJitter;
+
+  std::vector<RackedBall> rack;
+  for (std::size_t i = 0; i < spots.size(); ++i) {
+    const Vec2 p = spots[i];
+    if (p.x < radius || p.x > table.length - radius || p.y < radius ||
+        p.y > table.width - radius) {
+      throw std::invalid_argument("the rack does not fit on the table");
+    }
+    rack.push_back({std::to_string(balls[i]), p});
+  }
+  std::sort(rack.begin(), rack.end(), [](const RackedBall& x, const RackedBall& y) {
+    return std::stoi(x.id) < std::stoi(y.id);
+  });
+  return rack;
+}
+
+}  // namespace breakshot
