@@ -172,6 +172,10 @@ class Simulation {
   std::vector<std::int32_t> heap_pos_;  // where each ball sits in heap_
   std::vector<Event> events_;
   std::optional<StrikeResult> cue_result_;
+  struct Box {
+    Vec2 lo, hi;
+  };
+  std::vector<Box> wall_box_;  // bounds of each wall of the table
   // Pairs with a restitution of their own: sorted keys a * n + b (a < b).
   std::vector<std::uint64_t> pair_keys_;
   std::vector<double> pair_values_;

@@ -65,6 +65,24 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
     set_motion(static_cast<std::int32_t>(i), scenario_.start[i].velocity, scenario_.start[i].spin);
   }
 
+  // Boxes around the walls, to skip the ones a ball's path never nears.
+  for (const Wall& w : scenario_.table.walls) {
+    Box b;
+    if (w.kind == WallKind::segment) {
+      b.lo = {std::min(w.a.x, w.b.x), std::min(w.a.y, w.b.y)};
+      b.hi = {std::max(w.a.x, w.b.x), std::max(w.a.y, w.b.y)};
+    } else {
+      const double rad = w.kind == WallKind::arc ? w.radius : 0.0;
+      b.lo = w.a - Vec2{rad, rad};
+      b.hi = w.a + Vec2{rad, rad};
+    }
+    const double margin = 1e-9 * (1.0 + std::abs(b.lo.x) + std::abs(b.hi.x) + std::abs(b.lo.y) +
+                                  std::abs(b.hi.y));
+    b.lo -= Vec2{margin, margin};
+    b.hi += Vec2{margin, margin};
+    wall_box_.push_back(b);
+  }
+
   // Pair restitutions, sorted for binary search at collision time.
   std::vector<std::pair<std::uint64_t, double>> pairs;
   for (const PairRestitution& p : scenario_.pair_restitution) {
@@ -432,6 +450,11 @@ void Simulation::predict_walls(const Kinematics& ki, Prediction& best) const {
   const auto& walls = scenario_.table.walls;
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const Wall& wall = walls[w];
+    const Box& wb = wall_box_[w];
+    if (wb.lo.x - ki.box_hi.x > r || ki.box_lo.x - wb.hi.x > r || wb.lo.y - ki.box_hi.y > r ||
+        ki.box_lo.y - wb.hi.y > r) {
+      continue;  // the ball's path never comes within reach of this wall
+    }
     double tau = kInf;
     if (wall.kind == WallKind::segment) {
       const Vec2 n = wall.normal;
@@ -493,7 +516,13 @@ void Simulation::predict_pockets(const Kinematics& ki, Prediction& best) const {
   const double window = std::max(0.0, ki.t_end - t);
   const auto& pockets = scenario_.table.pockets;
   for (std::size_t k = 0; k < pockets.size(); ++k) {
-    const Vec2 d = ki.p - pockets[k].centre;
+    const Vec2 centre = pockets[k].centre;
+    const double pr = pockets[k].radius;
+    if (centre.x - pr > ki.box_hi.x || ki.box_lo.x > centre.x + pr ||
+        centre.y - pr > ki.box_hi.y || ki.box_lo.y > centre.y + pr) {
+      continue;
+    }
+    const Vec2 d = ki.p - centre;
     const double rr = pockets[k].radius * pockets[k].radius;
     double tau = kInf;
     if (ki.a.x == 0.0 && ki.a.y == 0.0) {
@@ -757,7 +786,9 @@ void Simulation::collide_pool_balls(std::int32_t i, std::int32_t j) {
     set_motion(j, B.v0 + n * (impulse / mb), B.w0);
   };
   const double out = dot(B.v0 - A.v0, n);
-  if (pressed(out, dot(B.acc - A.acc, n), std::min(A.t_end, B.t_end) - A.t0)) push(vc - out);
+  // A pool ball's phase can end within a nanosecond (a tiny slip), while
+  // the push goes on in the next phase: any inward push counts here.
+  if (pressed(out, dot(B.acc - A.acc, n), kInf)) push(vc - out);
   const Vec2 dp = B.p0 - A.p0;
   double extra = 4.0 * std::numeric_limits<double>::epsilon() *
                  std::max({norm(A.v0), norm(B.v0), vc});
