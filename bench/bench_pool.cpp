@@ -30,6 +30,7 @@ Scenario pool_scene() {
   s.physics.model = Model::pool;
   s.physics.ball_ball_restitution = 0.95;
   s.physics.ball_ball_friction_fit = true;
+  s.physics.collapse_speed = kPoolCollapseSpeed;
   s.table = make_pool_table("9ft");
   s.until.rest = true;
   return s;

@@ -204,10 +204,51 @@ TEST_F(Cli, NotJsonExitsTwo) {
 
 TEST_F(Cli, UnsupportedFeatureExitsOne) {
   json doc = good_scenario();
-  doc["physics"]["model"] = "pool";
-  const Run r = run("simulate " + quote(write("pool.json", doc.dump())));
+  doc["table"] = {{"shape", "snooker"}};
+  const Run r = run("simulate " + quote(write("snooker.json", doc.dump())));
   EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_NE(r.err.find("physics.model"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("not supported yet: table.shape"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, PoolBreakRunsToRest) {
+  const json doc = json::parse(R"({
+    "physics": {"model": "pool"},
+    "table": {"shape": "pool", "size": "9ft"},
+    "rack": {"game": "eight_ball", "seed": 1},
+    "cue": {"speed": 8.0}
+  })");
+  const std::string file = quote(write("break.json", doc.dump()));
+  const Run r = run("simulate " + file);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json out = json::parse(r.out);
+  EXPECT_EQ(out["complete"], true);
+  ASSERT_FALSE(out["events"].empty());
+  EXPECT_EQ(out["events"][0]["type"], "cue_strike");
+  EXPECT_EQ(out["events"][0]["balls"], json({"cue"}));
+  EXPECT_EQ(out["cue"]["miscue"], false);
+  ASSERT_EQ(out["final"]["balls"].size(), 16u);
+  EXPECT_EQ(out["final"]["balls"][0]["id"], "cue");
+  for (const json& b : out["final"]["balls"]) {
+    const std::string state = b["state"].get<std::string>();
+    EXPECT_TRUE(state == "stationary" || state == "pocketed") << b.dump();
+  }
+  EXPECT_EQ(run("simulate " + file).out, r.out);  // the same bytes again
+}
+
+TEST_F(Cli, PoolScenarioErrorsExitTwo) {
+  json doc = json::parse(R"({
+    "physics": {"model": "pool"},
+    "table": {"shape": "pool", "size": "10ft"},
+    "rack": {"game": "eight_ball"}
+  })");
+  Run r = run("simulate " + quote(write("size.json", doc.dump())));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("invalid scenario: table.size: "), std::string::npos) << r.err;
+  doc["table"]["size"] = "9ft";
+  doc["cue"] = {{"speed", 3.0}, {"theta", 90.0}};
+  r = run("simulate " + quote(write("theta.json", doc.dump())));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("invalid scenario: cue.theta: "), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, OtherFailuresExitOne) {

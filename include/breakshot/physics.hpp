@@ -42,4 +42,9 @@ struct PhysicsParams {
   double collapse_speed = 1e-5;
 };
 
+/// The pool model's default collapse_speed (m/s): larger, because balls
+/// pushing a cluster stay pressed together for a long time and every
+/// re-contact is an event.
+inline constexpr double kPoolCollapseSpeed = 1e-3;
+
 }  // namespace breakshot

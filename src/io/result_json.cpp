@@ -101,6 +101,7 @@ class ResultWriter {
   void write(const RunResult& r) {
     w_.raw("{\n  \"complete\": ");
     w_.raw(r.complete ? "true" : "false");
+    if (r.cue) cue(*r.cue);
     w_.raw(",\n  \"events\": [");
     for (std::size_t k = 0; k < r.events.size(); ++k) {
       w_.raw(k == 0 ? "\n    " : ",\n    ");
@@ -163,10 +164,12 @@ class ResultWriter {
         }
         break;
       case EventType::ball_pocket:
-        // Tables have no named pockets yet; the index keeps the event
-        // useful until they do.
         w_.raw(", \"pocket\": ");
-        w_.string("pocket" + std::to_string(e.pocket));
+        if (e.pocket >= 0 && static_cast<std::size_t>(e.pocket) < s_.table.pockets.size()) {
+          w_.string(s_.table.pockets[static_cast<std::size_t>(e.pocket)].name);
+        } else {
+          w_.raw("null");
+        }
         break;
       case EventType::state_change:
         w_.raw(", \"from\": ");
@@ -178,6 +181,22 @@ class ResultWriter {
       case EventType::ball_ball:
         break;
     }
+    w_.raw("}");
+  }
+
+  /// What the cue strike did (an extension of the contract): the ball's
+  /// velocity and spin as the tip leaves it, the squirt in degrees, and
+  /// whether it was a miscue (then nothing was played: no cue_strike
+  /// event, and the velocity and spin are zero).
+  void cue(const StrikeResult& c) {
+    w_.raw(",\n  \"cue\": {\"miscue\": ");
+    w_.raw(c.miscue ? "true" : "false");
+    w_.raw(", \"velocity\": ");
+    w_.vec2(c.velocity);
+    w_.raw(", \"spin\": ");
+    w_.vec3(c.spin);
+    w_.raw(", \"squirt\": ");
+    w_.number(c.squirt);
     w_.raw("}");
   }
 

@@ -25,6 +25,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "breakshot/rack.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/scenario_io.hpp"
 
@@ -46,6 +47,14 @@ constexpr double kMaxMagnitude = 1e12;
 /// sample holds the state of every ball, so a tiny dt would otherwise end
 /// as an out-of-memory crash after a long wait.
 constexpr double kMaxSamples = 1e7;
+
+/// Pool model default for physics.ball_ball_restitution: the middle of
+/// Alciatore's measured 0.92-0.98 for phenolic pool balls.
+constexpr double kPoolBallBallRestitution = 0.95;
+
+/// How far a given ball may overlap a ball the rack places and still
+/// count as touching: validate()'s tolerance (src/physics/validate.cpp).
+constexpr double kTouchTolerance = 1e-9;
 
 /// Path shown for problems with the document as a whole.
 constexpr const char* kDocumentPath = "(document)";
@@ -346,16 +355,28 @@ class ScenarioReader {
 
   bool read_physics(const json& doc, Scenario& s);
   bool read_table(const json& doc, Scenario& s);
+  bool read_cushion(const json& t, Scenario& s);
   bool read_balls(const json& doc, Scenario& s);
   bool read_ball(const json& v, const std::string& path, Scenario& s);
+  bool read_rack(const json& v, Scenario& s);
+  void add_placed_ball(std::string id, Vec2 position, Scenario& s);
   bool read_pairs(const json& doc, Scenario& s);
+  bool read_cue(const json& doc, Scenario& s);
   bool read_until(const json& doc, Scenario& s);
   bool read_samples(const json& doc, Scenario& s);
   bool read_max_events(const json& doc, Scenario& s);
   bool check_run_ends(const json& doc, const Scenario& s);
+  bool check_pool_run_ends(const std::string& how, const Scenario& s);
   bool check_sample_count(const Scenario& s);
+  ScenarioError locate(ScenarioError e, const Scenario& s) const;
 
   std::unordered_map<std::string, std::int32_t> index_of_;  // ball id -> index
+  /// wall_restitution of a ball that does not give one: the table's
+  /// cushion_restitution, else the model's default.
+  double default_wall_restitution_ = 1.0;
+  /// Balls [0, given_balls_) come from "balls"; the rest were placed by
+  /// the rack (the cue ball on the head spot, then the object balls).
+  std::size_t given_balls_ = 0;
 };
 
 bool ScenarioReader::read(const json& doc, Scenario& s) {
@@ -367,28 +388,44 @@ bool ScenarioReader::read(const json& doc, Scenario& s) {
   }
   // The physics come first: the model decides what the rest may contain.
   if (!read_physics(doc, s)) return false;
+  // The table next: its cushion fields give the balls' default
+  // wall_restitution, and a rack needs it.
   if (!read_table(doc, s)) return false;
-  if (find(doc, "rack") != nullptr) {
-    return fail("rack", "racks are not implemented yet", true);
-  }
-  if (find(doc, "cue") != nullptr) {
-    // A cue strike gives the ball spin, which only the pool model has.
-    return fail("cue", "a cue strike needs the pool model");
-  }
   if (!read_balls(doc, s)) return false;
   if (!read_pairs(doc, s)) return false;
+  if (!read_cue(doc, s)) return false;
   if (!read_until(doc, s)) return false;
   if (!read_samples(doc, s)) return false;
   if (!read_max_events(doc, s)) return false;
   if (!check_run_ends(doc, s)) return false;
   if (!check_sample_count(s)) return false;
-  // Geometry (inside the table, no overlaps) and everything a scenario
-  // built in code must also satisfy.
+  // Geometry (inside the table, out of the pockets, no overlaps) and
+  // everything a scenario built in code must also satisfy.
   if (auto problem = validate(s)) {
-    error = std::move(problem);
+    error = locate(std::move(*problem), s);
     return false;
   }
   return true;
+}
+
+/// validate() names balls by their index in Scenario::balls. The balls a
+/// rack placed come after the given ones and have no entry in the file's
+/// "balls", so a problem with one of them is reported at "rack".
+ScenarioError ScenarioReader::locate(ScenarioError e, const Scenario& s) const {
+  constexpr std::string_view prefix = "balls[";
+  if (e.path.compare(0, prefix.size(), prefix) != 0) return e;
+  const std::size_t close = e.path.find(']');
+  if (close == std::string::npos) return e;
+  std::size_t index = 0;
+  for (std::size_t k = prefix.size(); k < close; ++k) {
+    const char c = e.path[k];
+    if (c < '0' || c > '9') return e;
+    index = index * 10 + static_cast<std::size_t>(c - '0');
+  }
+  if (index < given_balls_ || index >= s.balls.size()) return e;
+  e.reason = "ball '" + s.balls[index].id + "' placed by the rack: " + e.reason;
+  e.path = "rack";
+  return e;
 }
 
 bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
@@ -417,7 +454,10 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
   } else if (model == "friction") {
     ph.model = Model::friction;
   } else if (model == "pool") {
-    return fail(model_path, "the pool model is not implemented yet", true);
+    ph.model = Model::pool;
+    // A pool ball on a pool ball: Alciatore's measured restitution is
+    // 0.92-0.98; 0.95 is the middle of it.
+    ph.ball_ball_restitution = kPoolBallBallRestitution;
   } else {
     return fail(model_path, "unknown model \"" + model +
                                 "\" (expected \"ideal\", \"friction\" or \"pool\")");
@@ -433,6 +473,11 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
       !non_negative(ph.ball_ball_friction, member_path(path, "ball_ball_friction"))) {
     return false;
   }
+  // Pool: the friction between balls falls with the slip speed. Without a
+  // constant given, the engine uses the measured fit mu(v) (pool.hpp,
+  // BallFriction); a given value is a constant mu for every impact.
+  ph.ball_ball_friction_fit =
+      ph.model == Model::pool && find(*p, "ball_ball_friction") == nullptr;
   if (!optional_number(*p, path, "gravity", ph.gravity) ||
       !non_negative(ph.gravity, member_path(path, "gravity"))) {
     return false;
@@ -454,12 +499,19 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
       !non_negative(ph.spinning_friction, member_path(path, "spinning_friction"))) {
     return false;
   }
+  // Pool balls pushing a frozen cluster are in contact for a long time;
+  // each re-contact of a pressed pair is an event, so the pool model uses
+  // a larger threshold: 1 mm/s, far below anything a player sees.
+  if (ph.model == Model::pool) ph.collapse_speed = kPoolCollapseSpeed;
   if (!optional_number(*p, path, "collapse_speed", ph.collapse_speed) ||
       !positive(ph.collapse_speed, member_path(path, "collapse_speed"))) {
     return false;
   }
   // Without an explicit deceleration a ball slows as a rolling ball does
-  // on cloth: mu_r g (0.0981 m/s^2 with the defaults).
+  // on cloth: mu_r g (0.0981 m/s^2 with the defaults). The pool model
+  // does not use it (its balls slow by the three frictions); a given
+  // value is accepted there, as the contract's example lists every
+  // field, and ignored.
   if (!has_deceleration) ph.deceleration = ph.rolling_friction * ph.gravity;
   return true;
 }
@@ -477,7 +529,10 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
   const std::string shape = shape_v->get<std::string>();
 
   if (shape == "rectangle") {
-    if (!check_fields(*t, path, {"shape", "min", "max"})) return false;
+    if (!check_fields(*t, path, {"shape", "min", "max", "cushion_restitution",
+                                 "cushion_friction", "nose_height"})) {
+      return false;
+    }
     const json* lo = find(*t, "min");
     const json* hi = find(*t, "max");
     if (lo == nullptr) return fail("table.min", "missing required field");
@@ -493,11 +548,14 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
     } catch (const std::exception& e) {
       return fail("table", e.what());
     }
-    return true;
+    return read_cushion(*t, s);
   }
 
   if (shape == "polygon") {
-    if (!check_fields(*t, path, {"shape", "vertices"})) return false;
+    if (!check_fields(*t, path, {"shape", "vertices", "cushion_restitution",
+                                 "cushion_friction", "nose_height"})) {
+      return false;
+    }
     const json* vs = find(*t, "vertices");
     const std::string vpath = "table.vertices";
     if (vs == nullptr) return fail(vpath, "missing required field");
@@ -513,30 +571,195 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
       // vertex, zero area or edges that cross.
       return fail(vpath, e.what());
     }
-    return true;
+    return read_cushion(*t, s);
   }
 
-  if (shape == "pool" || shape == "snooker" || shape == "carom") {
+  if (shape == "pool") {
+    if (!check_fields(*t, path, {"shape", "size", "cushion_restitution", "cushion_friction",
+                                 "nose_height"})) {
+      return false;
+    }
+    const json* size_v = find(*t, "size");
+    const std::string size_path = "table.size";
+    if (size_v == nullptr) {
+      return fail(size_path, "missing required field (\"7ft\", \"8ft\" or \"9ft\")");
+    }
+    if (!size_v->is_string()) return fail(size_path, expected("a string", *size_v));
+    const std::string size = size_v->get<std::string>();
+    if (size != "7ft" && size != "8ft" && size != "9ft") {
+      return fail(size_path,
+                  "unknown size \"" + size + "\" (expected \"7ft\", \"8ft\" or \"9ft\")");
+    }
+    try {
+      s.table = make_pool_table(size);
+    } catch (const std::exception& e) {
+      return fail(size_path, e.what());
+    }
+    return read_cushion(*t, s);
+  }
+
+  if (shape == "snooker" || shape == "carom") {
     return fail(shape_path, "the " + shape + " table is not implemented yet", true);
   }
   return fail(shape_path, "unknown shape \"" + shape +
                               "\" (expected rectangle, polygon, pool, snooker or carom)");
 }
 
-bool ScenarioReader::read_balls(const json& doc, Scenario& s) {
-  const json* bs = find(doc, "balls");
-  const std::string path = "balls";
-  if (bs == nullptr) return fail(path, "missing required field");
-  if (!bs->is_array()) return fail(path, expected("an array of balls", *bs));
-  s.balls.clear();
-  s.start.clear();
-  s.balls.reserve(bs->size());
-  s.start.reserve(bs->size());
-  index_of_.reserve(bs->size());
-  for (std::size_t i = 0; i < bs->size(); ++i) {
-    if (!read_ball((*bs)[i], index_path(path, i), s)) return false;
+/// The optional cushion fields of a table object, read after the table
+/// is built. cushion_restitution is the default wall_restitution of
+/// every ball on any table; the nose height and the rail friction only
+/// mean something for the pool model's cushions, which only pool tables
+/// have, so elsewhere they are errors rather than values silently unused.
+bool ScenarioReader::read_cushion(const json& t, Scenario& s) {
+  const bool pool_table = s.table.shape == "pool";
+  default_wall_restitution_ =
+      s.physics.model == Model::pool ? CushionParams{}.restitution : 1.0;
+  if (const json* v = find(t, "cushion_restitution")) {
+    const std::string path = "table.cushion_restitution";
+    double e = 0.0;
+    if (!number(*v, path, e) || !restitution(e, path)) return false;
+    default_wall_restitution_ = e;
+    s.table.cushion.restitution = e;
+  }
+  for (const char* key : {"cushion_friction", "nose_height"}) {
+    if (find(t, key) != nullptr && !pool_table) {
+      return fail(member_path("table", key),
+                  "only a pool table (\"shape\": \"pool\") has this cushion field");
+    }
+  }
+  const std::string friction_path = "table.cushion_friction";
+  if (!optional_number(t, "table", "cushion_friction", s.table.cushion.friction) ||
+      !non_negative(s.table.cushion.friction, friction_path)) {
+    return false;
+  }
+  const std::string nose_path = "table.nose_height";
+  if (!optional_number(t, "table", "nose_height", s.table.cushion.nose_height)) return false;
+  const double h = s.table.cushion.nose_height;
+  if (!(h > 0.5 && h < 1.0)) {
+    // At or below half the diameter the nose would push the ball down
+    // into the cloth or meet it below its centre; at 1 it would miss it.
+    return fail(nose_path, "must be between 0.5 and 1 (a fraction of the ball's diameter, "
+                           "above its centre), not " + format_number(h));
   }
   return true;
+}
+
+bool ScenarioReader::read_balls(const json& doc, Scenario& s) {
+  const json* bs = find(doc, "balls");
+  const json* rack = find(doc, "rack");
+  const std::string path = "balls";
+  s.balls.clear();
+  s.start.clear();
+  if (bs == nullptr && rack == nullptr) {
+    return fail(path, "missing required field (it may be left out when a \"rack\" is given)");
+  }
+  if (bs != nullptr) {
+    if (!bs->is_array()) return fail(path, expected("an array of balls", *bs));
+    s.balls.reserve(bs->size());
+    s.start.reserve(bs->size());
+    index_of_.reserve(bs->size());
+    for (std::size_t i = 0; i < bs->size(); ++i) {
+      if (!read_ball((*bs)[i], index_path(path, i), s)) return false;
+    }
+  }
+  given_balls_ = s.balls.size();
+  return rack == nullptr || read_rack(*rack, s);
+}
+
+/// "rack": the regulation rack on a pool table, and a cue ball "cue" on
+/// the head spot unless one is given. The placed balls come after the
+/// given ones: "cue" (if placed), then "1", "2", ... in numeric order.
+bool ScenarioReader::read_rack(const json& v, Scenario& s) {
+  const std::string path = "rack";
+  if (!require_object(v, path)) return false;
+  if (s.table.shape != "pool") {
+    return fail(path, "a rack needs a pool table (\"table\": {\"shape\": \"pool\", ...})");
+  }
+  if (!check_fields(v, path, {"game", "seed"})) return false;
+
+  const json* game_v = find(v, "game");
+  const std::string game_path = "rack.game";
+  if (game_v == nullptr) {
+    return fail(game_path, "missing required field (\"eight_ball\" or \"nine_ball\")");
+  }
+  if (!game_v->is_string()) return fail(game_path, expected("a string", *game_v));
+  const std::string game = game_v->get<std::string>();
+  if (game != "eight_ball" && game != "nine_ball") {
+    return fail(game_path,
+                "unknown game \"" + game + "\" (expected \"eight_ball\" or \"nine_ball\")");
+  }
+
+  // The seed of the rack's tiny random gaps: a whole number >= 0, so that
+  // the same file always gives the same rack.
+  std::uint64_t seed = 0;
+  if (const json* seed_v = find(v, "seed")) {
+    const std::string seed_path = "rack.seed";
+    if (seed_v->is_number_unsigned()) {
+      seed = seed_v->get<std::uint64_t>();
+    } else if (seed_v->is_number_integer()) {
+      return fail(seed_path, "must be a whole number >= 0, not " + seed_v->dump());
+    } else if (seed_v->is_number_float()) {
+      const double x = seed_v->get<double>();
+      if (!(x >= 0.0 && x < 18446744073709551616.0 && std::floor(x) == x)) {
+        return fail(seed_path, "must be a whole number >= 0, not " + format_number(x));
+      }
+      seed = static_cast<std::uint64_t>(x);
+    } else {
+      return fail(seed_path, expected("a whole number >= 0", *seed_v));
+    }
+  }
+
+  std::vector<RackedBall> racked;
+  try {
+    racked = make_rack(game, s.table, BallSpec{}.radius, seed);
+  } catch (const std::exception& e) {
+    return fail(path, e.what());
+  }
+  // make_rack lists the balls in rack order; the scenario lists them by
+  // number, so a result reads "1", "2", ... whatever the rack.
+  std::sort(racked.begin(), racked.end(), [](const RackedBall& a, const RackedBall& b) {
+    return a.id.size() < b.id.size() || (a.id.size() == b.id.size() && a.id < b.id);
+  });
+
+  // A given ball may not take an object ball's id: which of the two would
+  // "3" in an event be?
+  for (const RackedBall& rb : racked) {
+    if (const auto it = index_of_.find(rb.id); it != index_of_.end()) {
+      return fail(index_path("balls", static_cast<std::size_t>(it->second)) + ".id",
+                  "the rack places a ball with the id '" + rb.id +
+                      "'; give this ball another id");
+    }
+  }
+  if (index_of_.find("cue") == index_of_.end()) add_placed_ball("cue", s.table.head_spot, s);
+  for (RackedBall& rb : racked) add_placed_ball(std::move(rb.id), rb.position, s);
+
+  // A given ball in the way of a placed one is the given ball's problem:
+  // say so at its own path (validate() would name the placed ball).
+  for (std::size_t i = 0; i < given_balls_; ++i) {
+    for (std::size_t j = given_balls_; j < s.balls.size(); ++j) {
+      const double reach = s.balls[i].radius + s.balls[j].radius - kTouchTolerance;
+      if (norm(s.start[i].position - s.start[j].position) < reach) {
+        return fail(index_path("balls", i) + ".position",
+                    "ball '" + s.balls[i].id + "' overlaps ball '" + s.balls[j].id +
+                        "' placed by the rack");
+      }
+    }
+  }
+  return true;
+}
+
+/// A ball placed by the rack: default radius, mass and wall restitution,
+/// at rest.
+void ScenarioReader::add_placed_ball(std::string id, Vec2 position, Scenario& s) {
+  BallSpec spec;
+  spec.id = std::move(id);
+  spec.wall_restitution = default_wall_restitution_;
+  BallState state;
+  state.position = position;
+  state.state = MotionState::stationary;
+  index_of_.emplace(spec.id, static_cast<std::int32_t>(s.balls.size()));
+  s.balls.push_back(std::move(spec));
+  s.start.push_back(state);
 }
 
 bool ScenarioReader::read_ball(const json& v, const std::string& path, Scenario& s) {
@@ -547,6 +770,7 @@ bool ScenarioReader::read_ball(const json& v, const std::string& path, Scenario&
     return false;
   }
   BallSpec spec;
+  spec.wall_restitution = default_wall_restitution_;
   BallState state;
 
   const json* id = find(v, "id");
@@ -588,7 +812,23 @@ bool ScenarioReader::read_ball(const json& v, const std::string& path, Scenario&
       !restitution(spec.wall_restitution, member_path(path, "wall_restitution"))) {
     return false;
   }
-  state.state = state.velocity == Vec2{} ? MotionState::stationary : MotionState::moving;
+  if (s.physics.model == Model::pool) {
+    // The engine derives the state from the motion itself; this is the
+    // same rule, so that the scenario says what the engine will do.
+    const Vec2 slip{state.velocity.x - spec.radius * state.spin.y,
+                    state.velocity.y + spec.radius * state.spin.x};
+    if (slip != Vec2{}) {
+      state.state = MotionState::sliding;
+    } else if (state.velocity != Vec2{}) {
+      state.state = MotionState::rolling;
+    } else if (state.spin.z != 0.0) {
+      state.state = MotionState::spinning;
+    } else {
+      state.state = MotionState::stationary;
+    }
+  } else {
+    state.state = state.velocity == Vec2{} ? MotionState::stationary : MotionState::moving;
+  }
   s.balls.push_back(std::move(spec));
   s.start.push_back(state);
   return true;
@@ -649,6 +889,76 @@ bool ScenarioReader::read_pairs(const json& doc, Scenario& s) {
     }
     s.pair_restitution.push_back(pr);
   }
+  return true;
+}
+
+/// "cue": the shot at t = 0 (pool model). An offset beyond the miscue
+/// limit is not an error: the engine plays it as a miscue and says so in
+/// the result.
+bool ScenarioReader::read_cue(const json& doc, Scenario& s) {
+  s.cue.reset();
+  const json* c = find(doc, "cue");
+  if (c == nullptr) return true;
+  const std::string path = "cue";
+  // A cue strike gives the ball spin, which only the pool model has.
+  if (s.physics.model != Model::pool) return fail(path, "a cue strike needs the pool model");
+  if (!require_object(*c, path)) return false;
+  if (!check_fields(*c, path,
+                    {"ball", "speed", "phi", "theta", "a", "b", "cue_mass",
+                     "tip_restitution"})) {
+    return false;
+  }
+
+  CueSpec cue;
+  const std::string ball_path = "cue.ball";
+  std::string id = "cue";
+  const json* ball_v = find(*c, "ball");
+  if (ball_v != nullptr) {
+    if (!ball_v->is_string()) return fail(ball_path, expected("a ball id (a string)", *ball_v));
+    id = ball_v->get<std::string>();
+  }
+  const auto it = index_of_.find(id);
+  if (it == index_of_.end()) {
+    return fail(ball_path, ball_v != nullptr
+                               ? "no ball has the id '" + id + "'"
+                               : "no ball has the id 'cue' (the default); name the ball struck");
+  }
+  cue.ball = it->second;
+  const auto ub = static_cast<std::size_t>(cue.ball);
+  // The strike sets the ball's velocity and spin: a motion given in the
+  // file would be dropped without a word, so it is refused instead.
+  if (s.start[ub].velocity != Vec2{} || s.start[ub].spin != Vec3{}) {
+    return fail(ball_path, "ball '" + id +
+                               "' has a velocity or spin; the ball a cue strikes must be at rest");
+  }
+
+  const json* speed = find(*c, "speed");
+  const std::string speed_path = "cue.speed";
+  if (speed == nullptr) return fail(speed_path, "missing required field");
+  if (!number(*speed, speed_path, cue.strike.speed) ||
+      !positive(cue.strike.speed, speed_path)) {
+    return false;
+  }
+  if (!optional_number(*c, path, "phi", cue.strike.phi)) return false;
+  const std::string theta_path = "cue.theta";
+  if (!optional_number(*c, path, "theta", cue.strike.theta)) return false;
+  if (!(cue.strike.theta >= 0.0 && cue.strike.theta < 90.0)) {
+    return fail(theta_path, "the cue elevation must be in [0, 90) degrees, not " +
+                                format_number(cue.strike.theta));
+  }
+  if (!optional_number(*c, path, "a", cue.strike.a) ||
+      !optional_number(*c, path, "b", cue.strike.b)) {
+    return false;
+  }
+  if (!optional_number(*c, path, "cue_mass", cue.params.mass) ||
+      !positive(cue.params.mass, "cue.cue_mass")) {
+    return false;
+  }
+  if (!optional_number(*c, path, "tip_restitution", cue.params.tip_restitution) ||
+      !restitution(cue.params.tip_restitution, "cue.tip_restitution")) {
+    return false;
+  }
+  s.cue = cue;
   return true;
 }
 
@@ -722,14 +1032,16 @@ bool ScenarioReader::read_max_events(const json& doc, Scenario& s) {
   return true;
 }
 
-/// "rest" must come: in the ideal model, or the friction model without
-/// deceleration, a moving ball never stops and the run would only end at
-/// max_events, long after the user wanted an answer.
+/// "rest" must come: in the ideal model, the friction model without
+/// deceleration, or the pool model without one of its frictions, a
+/// moving ball never stops and the run would only end at max_events,
+/// long after the user wanted an answer.
 bool ScenarioReader::check_run_ends(const json& doc, const Scenario& s) {
   if (!s.until.rest) return true;
   const bool given = find(doc, "until") != nullptr;
   const std::string how = given ? "\"rest\" never comes" :
                                   "no \"until\" given and the default \"rest\" never comes";
+  if (s.physics.model == Model::pool) return check_pool_run_ends(how, s);
   for (std::size_t i = 0; i < s.balls.size(); ++i) {
     const double speed = norm(s.start[i].velocity);
     if (speed == 0.0) continue;
@@ -746,6 +1058,67 @@ bool ScenarioReader::check_run_ends(const json& doc, const Scenario& s) {
       if (!std::isfinite(speed / s.physics.deceleration)) {
         return fail("until", how + ": physics.deceleration is too small for " + who +
                                  " ever to stop; give {\"time\": T}");
+      }
+    }
+  }
+  return true;
+}
+
+/// The pool model's balls slow by friction forces mu m g: with gravity
+/// or the sliding or rolling friction at 0, a ball that moves never
+/// stops (a sliding ball never rolls, a rolling ball never stops), and
+/// with the spinning friction at 0 a ball spinning about the vertical
+/// never stops spinning. A cue strike moves its ball, and spins it about
+/// the vertical when it has side english (a != 0). Spin about the
+/// vertical that cushions or other balls give later is not foreseen here:
+/// such a run ends at max_events.
+bool ScenarioReader::check_pool_run_ends(const std::string& how, const Scenario& s) {
+  const PhysicsParams& ph = s.physics;
+  const auto stops = [&](double amount, double mu) {
+    return mu * ph.gravity > 0.0 && std::isfinite(amount / (mu * ph.gravity));
+  };
+  const auto refuse = [&](const std::string& why) {
+    return fail("until", how + ": " + why + "; give {\"time\": T}");
+  };
+  for (std::size_t i = 0; i < s.balls.size(); ++i) {
+    const BallState& b = s.start[i];
+    const double r = s.balls[i].radius;
+    const bool struck = s.cue && static_cast<std::size_t>(s.cue->ball) == i;
+    // A bound on the speed of the ball and of its contact point with the
+    // cloth; a struck ball leaves at less than twice the cue's speed.
+    double speed = norm(b.velocity) + r * std::hypot(b.spin.x, b.spin.y);
+    if (struck) speed = std::max(speed, 2.0 * s.cue->strike.speed);
+    double spin_z = std::fabs(b.spin.z);
+    const bool english = struck && s.cue->strike.a != 0.0;
+    const std::string who = struck ? "the cue strikes ball '" + s.balls[i].id + "'"
+                                   : "ball '" + s.balls[i].id + "' moves";
+    if (speed > 0.0) {
+      if (ph.gravity == 0.0) return refuse("physics.gravity is 0 (no friction acts) and " + who);
+      if (ph.sliding_friction == 0.0) {
+        return refuse("physics.sliding_friction is 0, so a sliding ball never starts rolling, "
+                      "and " + who);
+      }
+      if (ph.rolling_friction == 0.0) {
+        return refuse("physics.rolling_friction is 0, so a rolling ball never stops, and " + who);
+      }
+      if (!stops(speed, ph.sliding_friction) || !stops(speed, ph.rolling_friction)) {
+        return refuse("the frictions are too small for the ball to stop after " + who);
+      }
+    }
+    if (spin_z > 0.0 || english) {
+      const std::string spinner =
+          spin_z > 0.0 ? "ball '" + s.balls[i].id + "' spins about the vertical"
+                       : "the cue strike's side english (cue.a) spins ball '" +
+                             s.balls[i].id + "' about the vertical";
+      if (ph.gravity == 0.0) return refuse("physics.gravity is 0 (no friction acts) and " + spinner);
+      if (ph.spinning_friction == 0.0) {
+        return refuse("physics.spinning_friction is 0 and " + spinner);
+      }
+      // The spin decays at 5 mu_sp g / (2 R).
+      if (english) spin_z = std::max(spin_z, 2.0 * s.cue->strike.speed / r);
+      if (!stops(spin_z * r, ph.spinning_friction)) {
+        return refuse("physics.spinning_friction is too small for the spin of ball '" +
+                      s.balls[i].id + "' ever to stop");
       }
     }
   }

@@ -97,14 +97,114 @@ std::optional<ScenarioError> check_ball(const Scenario& s, std::size_t i) {
   return std::nullopt;
 }
 
-/// The wall nearest to p, to name it in a message. wall_clearance() says
+/// The cushion parameters (pool model; the defaults pass on any table).
+std::optional<ScenarioError> check_cushion(const Table& t) {
+  const CushionParams& c = t.cushion;
+  if (!(c.nose_height > 0.5 && c.nose_height < 1.0)) {
+    return ScenarioError{"table.nose_height",
+                         "must be between 0.5 and 1 (a fraction of the ball's diameter, above "
+                         "its centre), not " + num(c.nose_height)};
+  }
+  if (!non_negative_finite(c.friction)) {
+    return ScenarioError{"table.cushion_friction", "must be finite and >= 0, not " +
+                                                       num(c.friction)};
+  }
+  if (!in_unit_interval(c.restitution)) {
+    return ScenarioError{"table.cushion_restitution",
+                         "restitution must be in [0, 1], not " + num(c.restitution)};
+  }
+  return std::nullopt;
+}
+
+/// The cue strike (pool model), with the paths of the file's "cue".
+std::optional<ScenarioError> check_cue(const Scenario& s) {
+  if (!s.cue) return std::nullopt;
+  const CueSpec& cue = *s.cue;
+  if (s.physics.model != Model::pool) {
+    return ScenarioError{"cue", "a cue strike needs the pool model"};
+  }
+  if (cue.ball < 0 || static_cast<std::size_t>(cue.ball) >= s.balls.size()) {
+    return ScenarioError{"cue.ball", "ball index out of range"};
+  }
+  const BallState& b = s.start[static_cast<std::size_t>(cue.ball)];
+  if (b.velocity != Vec2{} || b.spin != Vec3{}) {
+    return ScenarioError{"cue.ball", "ball '" + s.balls[static_cast<std::size_t>(cue.ball)].id +
+                                         "' has a velocity or spin; the ball a cue strikes "
+                                         "must be at rest"};
+  }
+  const CueStrike& k = cue.strike;
+  if (!positive_finite(k.speed)) {
+    return ScenarioError{"cue.speed", "must be finite and positive, not " + num(k.speed)};
+  }
+  if (!std::isfinite(k.phi)) return ScenarioError{"cue.phi", "must be finite"};
+  if (!(k.theta >= 0.0 && k.theta < 90.0)) {
+    return ScenarioError{"cue.theta",
+                         "the cue elevation must be in [0, 90) degrees, not " + num(k.theta)};
+  }
+  if (!std::isfinite(k.a)) return ScenarioError{"cue.a", "must be finite"};
+  if (!std::isfinite(k.b)) return ScenarioError{"cue.b", "must be finite"};
+  if (!positive_finite(cue.params.mass)) {
+    return ScenarioError{"cue.cue_mass",
+                         "must be finite and positive, not " + num(cue.params.mass)};
+  }
+  if (!in_unit_interval(cue.params.tip_restitution)) {
+    return ScenarioError{"cue.tip_restitution", "restitution must be in [0, 1], not " +
+                                                    num(cue.params.tip_restitution)};
+  }
+  return std::nullopt;
+}
+
+/// Signed distance from p to an arc wall (table.hpp): the circle of
+/// `radius` about `a`, hit from outside, only where the direction from
+/// `a` lies counter-clockwise from the unit vector `b` (start) to the
+/// unit vector `normal` (end). Where the direction is within that range
+/// the nearest point is on the circle, and a centre inside the circle
+/// gives a negative distance (the ball is in the jaw); elsewhere the
+/// nearest point is an end of the arc.
+double arc_distance(Vec2 p, const Wall& w) {
+  const Vec2 d = p - w.a;
+  const double dist = norm(d);
+  // Counter-clockwise of the start and clockwise of the end, for a range
+  // of at most half a turn; a wider range is the whole circle less the
+  // range from its end to its start.
+  const bool after_start = cross(w.b, d) >= 0.0;
+  const bool before_end = cross(d, w.normal) >= 0.0;
+  const bool wide = cross(w.b, w.normal) < 0.0;
+  const bool within = wide ? (after_start || before_end) : (after_start && before_end);
+  if (within) return dist - w.radius;
+  return std::min(norm(p - (w.a + w.b * w.radius)), norm(p - (w.a + w.normal * w.radius)));
+}
+
+/// Distance from p to one wall piece, for naming the nearest.
+double wall_distance(Vec2 p, const Wall& w) {
+  switch (w.kind) {
+    case WallKind::segment: return segment_distance(p, w.a, w.b);
+    case WallKind::corner: return norm(p - w.a);
+    case WallKind::arc: return std::max(0.0, arc_distance(p, w));
+  }
+  return norm(p - w.a);
+}
+
+/// wall_clearance() with the round pieces of a pool table's jaws too:
+/// table.cpp's measures the straight walls only (a reflex corner is the
+/// end of two of them, so for rectangles and polygons that is every
+/// wall). For a centre inside the table; tables without arcs get exactly
+/// wall_clearance().
+double clearance_of(const Table& table, Vec2 p, double r) {
+  double c = wall_clearance(table, p, r);
+  for (const Wall& w : table.walls) {
+    if (w.kind == WallKind::arc) c = std::min(c, arc_distance(p, w) - r);
+  }
+  return c;
+}
+
+/// The wall nearest to p, to name it in a message. The clearance says
 /// whether a ball crosses a wall; this only says which.
 const Wall* nearest_wall(const Table& table, Vec2 p) {
   const Wall* best = nullptr;
   double best_d = std::numeric_limits<double>::infinity();
   for (const Wall& w : table.walls) {
-    const double d = w.kind == WallKind::segment ? segment_distance(p, w.a, w.b)
-                                                 : norm(p - w.a);
+    const double d = wall_distance(p, w);
     if (d < best_d) {
       best_d = d;
       best = &w;
@@ -116,12 +216,22 @@ const Wall* nearest_wall(const Table& table, Vec2 p) {
 std::optional<ScenarioError> check_against_table(const Scenario& s, std::size_t i) {
   const Vec2 p = s.start[i].position;
   const double r = s.balls[i].radius;
+  // A ball that starts in a pocket has fallen in before the run begins.
+  // Checked first: such a centre usually lies outside the outline too,
+  // and "inside pocket" says more than "outside the table".
+  for (const Pocket& pocket : s.table.pockets) {
+    if (norm(p - pocket.centre) <= pocket.radius) {
+      return ScenarioError{ball_path(i, "position"),
+                           "ball '" + s.balls[i].id + "' at (" + num(p.x) + ", " + num(p.y) +
+                               ") is inside pocket '" + pocket.name + "'"};
+    }
+  }
   if (!contains(s.table, p)) {
     return ScenarioError{ball_path(i, "position"), "ball '" + s.balls[i].id + "' at (" +
                                                        num(p.x) + ", " + num(p.y) +
                                                        ") lies outside the table"};
   }
-  const double clearance = wall_clearance(s.table, p, r);
+  const double clearance = clearance_of(s.table, p, r);
   if (clearance < -kTouchTolerance) {
     std::string reason = "ball '" + s.balls[i].id + "' overlaps ";
     const Wall* w = nearest_wall(s.table, p);
@@ -236,6 +346,8 @@ std::optional<ScenarioError> validate(const Scenario& s) {
     return ScenarioError{"samples.dt", "must be finite and positive, not " + num(*s.sample_dt)};
   }
   if (s.max_events == 0) return ScenarioError{"max_events", "must be a positive integer"};
+  if (auto e = check_cue(s)) return e;
+  if (auto e = check_cushion(s.table)) return e;
 
   for (std::size_t i = 0; i < s.balls.size(); ++i) {
     if (auto e = check_against_table(s, i)) return e;
