@@ -113,3 +113,54 @@ TEST(PoolProperties, HundredThousandRandomShotsOnARackedTable) {
   EXPECT_GT(events, 100u * static_cast<std::uint64_t>(shots) / 10u);
   EXPECT_GT(pocketed, shots / 10);  // the pockets take balls
 }
+
+// A frozen rack: every ball touching its neighbours exactly (to rounding),
+// broken hard and soft. No overlap, no repeated collision stalls the run.
+TEST(PoolProperties, FrozenRackBreaks) {
+  for (double speed : {0.5, 3.0, 9.0}) {
+    Scenario s;
+    s.physics.model = Model::pool;
+    s.physics.ball_ball_restitution = 0.95;
+    s.physics.ball_ball_friction_fit = true;
+    s.physics.collapse_speed = kPoolCollapseSpeed;
+    s.table = make_pool_table("9ft");
+    s.until.rest = true;
+    s.max_events = 100000;
+    s.balls.push_back({"cue", kR, 0.17, 0.75});
+    BallState cue;
+    cue.position = s.table.head_spot;
+    s.start.push_back(cue);
+    const double d = 2 * kR;  // touching
+    int id = 1;
+    for (int row = 0; row < 5; ++row) {
+      for (int k = 0; k <= row; ++k) {
+        s.balls.push_back({std::to_string(id++), kR, 0.17, 0.75});
+        BallState st;
+        st.position = {s.table.foot_spot.x + row * d * std::sqrt(3.0) / 2,
+                       s.table.foot_spot.y + (k - row / 2.0) * d};
+        s.start.push_back(st);
+      }
+    }
+    CueSpec c;
+    c.ball = 0;
+    c.strike.speed = speed;
+    s.cue = c;
+    Simulation sim(s);
+    int ball_ball = 0;
+    while (!sim.at_rest()) {
+      const double t = sim.next_event_time();
+      ASSERT_LT(sim.event_count(), s.max_events) << "speed " << speed;
+      sim.advance_to(t);
+      const auto balls = sim.balls();
+      for (std::size_t i = 0; i < balls.size(); ++i) {
+        ASSERT_TRUE(on_table(s.table, balls[i])) << "speed " << speed;
+        for (std::size_t j = i + 1; j < balls.size(); ++j) {
+          if (balls[i].state == MotionState::pocketed || balls[j].state == MotionState::pocketed) continue;
+          ASSERT_GE(norm(balls[i].position - balls[j].position), 2 * kR - 1e-9) << "speed " << speed;
+        }
+      }
+    }
+    for (const Event& e : sim.events()) ball_ball += e.type == EventType::ball_ball;
+    EXPECT_GT(ball_ball, 15) << "speed " << speed;  // the hit went through the rack
+  }
+}
