@@ -36,7 +36,8 @@ struct Quartic {
 
 // As in tests/test_roots.cpp: `aimed` pairs pass within 1.5 sigma of each
 // other at a random time (about 2/3 collide); the others are placed at
-// random on the table (about 1% collide).
+// random on the table (about 1% collide). `touching` pairs are aimed ones
+// moved to just after a collision (in contact up to round-off, opening).
 Quartic ball_pair(Rng& rng, bool aimed) {
   double v[2][2], a[2][2];
   double window = std::numeric_limits<double>::infinity();
@@ -76,13 +77,18 @@ Quartic ball_pair(Rng& rng, bool aimed) {
   return q;
 }
 
-enum class Mix { random, aimed, colliding, missing };
+enum class Mix { random, aimed, colliding, missing, touching };
 
 std::vector<Quartic> quartics(Mix mix) {
   Rng rng(0xbe9c4000 + static_cast<std::uint64_t>(mix));
   std::vector<Quartic> out;
   while (out.size() < kCases) {
-    const Quartic q = ball_pair(rng, mix != Mix::random);
+    Quartic q = ball_pair(rng, mix != Mix::random);
+    if (mix == Mix::touching) {
+      // Just after a collision: touching up to round-off and separating.
+      q.c[0] = (rng.uniform() < 0.5 ? -1e-17 : 1e-17) * rng.uniform(0.0, 1.0);
+      q.c[1] = std::fabs(q.c[1]);
+    }
     const bool hit = breakshot::first_contact(q.c, 4, q.t_max) <= q.t_max;
     if ((mix == Mix::colliding && !hit) || (mix == Mix::missing && hit)) continue;
     out.push_back(q);
@@ -104,27 +110,33 @@ void BM_FirstContactQuartic_RandomPairs(benchmark::State& s) { run_quartics(s, M
 void BM_FirstContactQuartic_AimedPairs(benchmark::State& s) { run_quartics(s, Mix::aimed); }
 void BM_FirstContactQuartic_Colliding(benchmark::State& s) { run_quartics(s, Mix::colliding); }
 void BM_FirstContactQuartic_NearMisses(benchmark::State& s) { run_quartics(s, Mix::missing); }
+void BM_FirstContactQuartic_Touching(benchmark::State& s) { run_quartics(s, Mix::touching); }
 BENCHMARK(BM_FirstContactQuartic_RandomPairs);
 BENCHMARK(BM_FirstContactQuartic_AimedPairs);
 BENCHMARK(BM_FirstContactQuartic_Colliding);
 BENCHMARK(BM_FirstContactQuartic_NearMisses);
+BENCHMARK(BM_FirstContactQuartic_Touching);
 
 // Degree 2: a decelerating ball reaching a cushion line or a grid cell
-// edge, c0 = distance, c1 = -approach speed, c2 = deceleration / 2.
-void BM_FirstContactDegree2(benchmark::State& state) {
+// edge, c0 = distance, c1 = -approach speed, c2 = deceleration / 2; all
+// of them, or only those that get there.
+void run_degree2(benchmark::State& state, bool reaching) {
   Rng rng(0xbe9c4100);
   struct Case {
     double c[3];
     double t_max;
   };
-  std::vector<Case> cs(kCases);
-  for (Case& k : cs) {
+  std::vector<Case> cs;
+  while (cs.size() < kCases) {
+    Case k{};
     const double speed = rng.pow10(-1.5, 0.8), decel = rng.uniform() < 0.5 ? 0.0981 : 1.962;
     const double along = rng.uniform(-1.0, 1.0) * speed;  // velocity towards the line
     k.c[0] = rng.uniform(0.0, 1.0);
     k.c[1] = -along;
     k.c[2] = 0.5 * decel * along / speed;
     k.t_max = speed / decel;
+    if (reaching && !(breakshot::first_contact(k.c, 2, k.t_max) <= k.t_max)) continue;
+    cs.push_back(k);
   }
   std::size_t i = 0;
   for (auto _ : state) {
@@ -133,7 +145,10 @@ void BM_FirstContactDegree2(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations());
 }
+void BM_FirstContactDegree2(benchmark::State& s) { run_degree2(s, false); }
+void BM_FirstContactDegree2_Reaching(benchmark::State& s) { run_degree2(s, true); }
 BENCHMARK(BM_FirstContactDegree2);
+BENCHMARK(BM_FirstContactDegree2_Reaching);
 
 // Ideal model: constant velocities, approaching pairs aimed to pass within
 // 1.5 sigma (the simulator calls it only when dp.dv < 0).

@@ -5,15 +5,18 @@
 // arithmetic, with the same rules as first_contact (monotone pieces from
 // the critical points, decreasing pieces only). Its roots are exact to
 // ~1e-33 relative, so the difference from first_contact is the latter's
-// own error, which we measure in ulps.
+// own error, which we measure in ulps. At the end, first_contact is also
+// compared bit for bit with a frozen copy of its full method (see there).
 #include "breakshot/roots.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <string>
@@ -925,6 +928,798 @@ TEST(SolveQuadratic, DegenerateCases) {
   EXPECT_DOUBLE_EQ(r[0], 1.0);
   EXPECT_DOUBLE_EQ(r[1], 2.0);
   EXPECT_EQ(solve_quadratic(std::numeric_limits<double>::quiet_NaN(), 1.0, 1.0, r), 0);
+}
+
+// ---------------------------------------------------------------------------
+// The fast paths of first_contact against the full method, bit for bit.
+//
+// first_contact settles most calls with cheap proofs (no contact, or the
+// contact at a given double) and leaves the rest to its full method. Its
+// results must not change by a single bit (the simulation's determinism
+// hashes depend on them), so the test below compares it with a frozen
+// copy of first_contact as it was before the fast paths, on a few hundred
+// thousand realistic and adversarial inputs. The copy is test code: keep
+// it as it is (it is the reference, not the implementation).
+
+namespace frozen {
+
+int solve_quadratic(double a, double b, double c, double roots[2]);
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kUnit = 0x1p-53;  // unit roundoff of double
+// Bound factor for the rounding error of Horner's rule (value and first
+// derivative) at degree <= 4: gamma_8 ~ 8u, with a safety factor of 4.
+constexpr double kGamma = 32.0 * kUnit;
+// The solver needs at most 64 halvings of the bit pattern (every other
+// fallback step) plus a few Newton steps; this cap only guards against
+// pathological input.
+constexpr int kMaxIter = 200;
+
+// --- Error-free transformations (Knuth, Dekker). They need strict IEEE
+// --- evaluation, which the build guarantees with -ffp-contract=off.
+
+struct Pair {
+  double hi, lo;  // the exact result is hi + lo
+};
+
+inline Pair two_sum(double a, double b) {
+  const double s = a + b;
+  const double bv = s - a;
+  const double av = s - bv;
+  return {s, (a - av) + (b - bv)};
+}
+
+// Veltkamp's split: a = hi + lo with both halves of 26 bits.
+inline Pair split(double a) {
+  const double c = 134217729.0 * a;  // 2^27 + 1
+  const double hi = c - (c - a);
+  return {hi, a - hi};
+}
+
+// Dekker's product. We use it rather than std::fma because without
+// -mfma the latter is a library call, and this is just as exact.
+inline Pair two_prod(double a, double b) {
+  const double p = a * b;
+  const Pair x = split(a);
+  const Pair y = split(b);
+  return {p, ((x.hi * y.hi - p) + x.hi * y.lo + x.lo * y.hi) + x.lo * y.lo};
+}
+
+// --- Stepping through doubles. Times are never negative here, and for
+// --- non-negative doubles the bit pattern is monotone in the value.
+
+inline std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+inline double from_bits(std::uint64_t b) { return std::bit_cast<double>(b); }
+inline double next_up(double x) { return from_bits(bits(x) + 1); }      // x >= +0
+inline double next_down(double x) { return from_bits(bits(x) - 1); }    // x > 0
+inline double ulp_of(double x) { return next_up(x) - x; }                // x >= +0
+// Midpoint of the bit patterns: roughly the geometric mean when lo and
+// hi are orders of magnitude apart, the arithmetic one when they are
+// close, so any bracket shrinks to adjacent doubles in <= 64 halvings.
+inline double bit_mid(double lo, double hi) {
+  const std::uint64_t a = bits(lo);
+  return from_bits(a + (bits(hi) - a) / 2);
+}
+
+inline int sign_of(double v) { return (v > 0.0) - (v < 0.0); }
+
+// --- The polynomial and its derivative.
+
+template <int N>
+struct Poly {
+  double p[N + 1];  // f
+  double d[N];      // f' = sum (d[k] + dl[k]) t^k, exactly: 3 c3 needs
+  double dl[N];     // a low part, the other multiples are exact.
+
+  explicit Poly(const double* c) {
+    for (int k = 0; k <= N; ++k) p[k] = c[k];
+    for (int k = 0; k < N; ++k) {
+      d[k] = static_cast<double>(k + 1) * p[k + 1];
+      dl[k] = 0.0;
+    }
+    if constexpr (N >= 3) {
+      const Pair m = two_sum(2.0 * p[3], p[3]);  // 3 c3, exactly
+      d[2] = m.hi;
+      dl[2] = m.lo;
+    }
+  }
+};
+
+// Plain Horner at x: f and its first three derivatives, with bounds on the
+// rounding errors of f and f' (Higham, Accuracy and Stability, ch. 5).
+struct Sample {
+  double x;
+  double f, f1, f2, f3;
+  double ef, ef1;
+};
+
+template <int N>
+inline Sample sample(const Poly<N>& P, double x) {
+  double r0 = P.p[N], r1 = 0.0, r2 = 0.0, r3 = 0.0;
+  const double ax = std::fabs(x);
+  double b0 = std::fabs(P.p[N]), b1 = 0.0;
+#pragma GCC unroll 4
+  for (int k = N - 1; k >= 0; --k) {
+    r3 = r3 * x + r2;
+    r2 = r2 * x + r1;
+    r1 = r1 * x + r0;
+    r0 = r0 * x + P.p[k];
+    b1 = b1 * ax + b0;
+    b0 = b0 * ax + std::fabs(P.p[k]);
+  }
+  return {x, r0, r1, 2.0 * r2, 6.0 * r3, kGamma * b0, kGamma * b1};
+}
+
+// Compensated Horner (Graillat, Langlois, Louvet 2005): the rounding error
+// of every step is captured exactly and summed in a second Horner
+// recurrence, together with the low parts of the coefficients if any.
+template <int N, bool WithLow>
+double compensated(const double* c, const double* cl, double x) {
+  double s = c[N];
+  double e = WithLow ? cl[N] : 0.0;
+#pragma GCC unroll 4
+  for (int k = N - 1; k >= 0; --k) {
+    const Pair pr = two_prod(s, x);
+    const Pair sm = two_sum(pr.hi, c[k]);
+    s = sm.hi;
+    e = e * x + ((pr.lo + sm.lo) + (WithLow ? cl[k] : 0.0));
+  }
+  return s + e;
+}
+
+// f(x) with a reliable sign and, near a root, full accuracy: Horner's
+// value when it is well clear of its error bound (relative error below
+// 2^-20), the compensated value otherwise. The accuracy near the root is
+// what makes the solver's last step land on the right ulp.
+constexpr double kClear = 0x1p20;
+
+template <int N>
+double exact_f(const Poly<N>& P, const Sample& s) {
+  if (std::fabs(s.f) > kClear * s.ef) return s.f;
+  const double v = compensated<N, false>(P.p, nullptr, s.x);
+  return std::isfinite(v) ? v : s.f;
+}
+
+// f'(x) likewise; the compensated pass uses the exact coefficients of f'.
+template <int N>
+double exact_f1(const Poly<N>& P, const Sample& s) {
+  if (std::fabs(s.f1) > kClear * s.ef1) return s.f1;
+  const double v = compensated<N - 1, true>(P.d, P.dl, s.x);
+  return std::isfinite(v) ? v : s.f1;
+}
+
+// --- The bracketed solver. Level 0 solves f = 0 (contacts), level 1
+// --- solves f' = 0 (critical points of f).
+
+struct Probe {
+  Sample s;
+  double g;  // reliable value of the level's function at s.x
+};
+
+template <int N, int L>
+double level_g(const Poly<N>& P, const Sample& s) {
+  if constexpr (L == 0) {
+    return exact_f(P, s);
+  } else {
+    return exact_f1(P, s);
+  }
+}
+template <int L>
+double level_g1(const Sample& s) {
+  return L == 0 ? s.f1 : s.f2;
+}
+template <int L>
+double level_g2(const Sample& s) {
+  return L == 0 ? s.f2 : s.f3;
+}
+
+// At a probe x where f was evaluated with compensated Horner (nearly
+// exactly), is f on the other side of zero at the adjacent double x + h
+// towards the root? First-order Taylor with rigorous bounds on every
+// error: of the compensated value (Graillat et al.: u |f| + gamma_2n^2
+// sum |c_k| |x|^k, with gamma_8^2 < 65 u^2), of Horner's f' (ef1), and
+// of the second-order term. Saves the last probe of most solves.
+inline bool neighbour_crosses(const Probe& pr, bool is_lo) {
+  const Sample& s = pr.s;
+  if (!(std::fabs(s.f) <= kClear * s.ef)) return false;  // not compensated
+  const double h = (is_lo ? next_up(s.x) : next_down(s.x)) - s.x;
+  const double predicted = pr.g + s.f1 * h;
+  const double terms = s.ef / kGamma;  // sum |c_k| |x|^k
+  const double err = 2.0 * kUnit * std::fabs(pr.g) + 128.0 * kUnit * kUnit * terms +
+                     s.ef1 * std::fabs(h) + (std::fabs(s.f2) + std::fabs(s.f3)) * h * h;
+  return std::fabs(predicted) > err && (predicted > 0.0) != (pr.g > 0.0);
+}
+
+// Halley's correction at a probe: x - step is the next estimate. Where the
+// curvature term is large (far from the root) it falls back to Newton's.
+template <int L>
+double halley_step(const Probe& p) {
+  const double g1 = level_g1<L>(p.s);
+  const double newton = p.g / g1;
+  const double h = 0.5 * newton * level_g2<L>(p.s) / g1;
+  return std::fabs(h) < 0.5 ? newton / (1.0 - h) : newton;
+}
+
+// Step u > 0 from a bracket end along dir (+1 or -1) to the nearest root
+// of the second-order Taylor model g + dir g1 u + g2 u^2 / 2 there. For a
+// quadratic g the model is exact, and near a critical point of g (where
+// a first-order step is useless) it is the right model. NaN if none.
+// Only a starting point, so the plain stable formula will do.
+template <int L>
+double taylor_guess(const Probe& e, double dir) {
+  const double a = 0.5 * level_g2<L>(e.s), b = dir * level_g1<L>(e.s), c = e.g;
+  double u;
+  if (a == 0.0) {
+    u = -c / b;
+  } else {
+    const double disc = b * b - 4.0 * a * c;
+    if (!(disc >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    const double r1 = q / a, r2 = c / q;
+    u = r1 > 0.0 && (r1 < r2 || !(r2 > 0.0)) ? r1 : r2;
+  }
+  return u > 0.0 ? e.s.x + dir * u : std::numeric_limits<double>::quiet_NaN();
+}
+
+struct Refined {
+  Probe lo, hi;  // adjacent doubles unless stopped (or the cap was hit)
+  bool stopped;  // the caller's stop test accepted `at`
+  Probe at;
+};
+
+// Halving, alternately of the value and of the bit pattern. The latter
+// guarantees progress however far apart lo and hi are in magnitude (the
+// bracket shrinks to adjacent doubles in <= 64 of them) and the former is
+// faster when the root is not much closer to lo than to hi, as usual.
+inline double halve(double lo, double hi, bool& by_bits) {
+  double x = by_bits ? bit_mid(lo, hi) : lo + 0.5 * (hi - lo);
+  by_bits = !by_bits;
+  if (!(x > lo && x < hi)) x = bit_mid(lo, hi);
+  return x;
+}
+
+struct NeverStop {
+  bool operator()(const Sample&) const { return false; }
+};
+
+// Root of g (level L) in [lo, hi] where g(lo) and g(hi) are on opposite
+// sides: g > 0 on one end, g <= 0 on the other. Probes keep that
+// invariant, so the bracket always holds the crossing.
+template <int N, int L, class Stop>
+Refined refine(const Poly<N>& P, Probe lo, Probe hi, Stop stop) {
+  const bool pos_lo = lo.g > 0.0;
+  if (!(next_up(lo.s.x) < hi.s.x)) return {lo, hi, false, lo};
+
+  // Start from the Taylor model at the end where g is smaller (the root
+  // is most likely near it), else at the other end, else from the secant.
+  const bool from_lo = std::fabs(lo.g) <= std::fabs(hi.g);
+  double x = taylor_guess<L>(from_lo ? lo : hi, from_lo ? 1.0 : -1.0);
+  if (!(x > lo.s.x && x < hi.s.x)) x = taylor_guess<L>(from_lo ? hi : lo, from_lo ? -1.0 : 1.0);
+  if (!(x > lo.s.x && x < hi.s.x)) x = lo.s.x + (hi.s.x - lo.s.x) * (lo.g / (lo.g - hi.g));
+  bool by_bits = false;
+  if (!(x > lo.s.x && x < hi.s.x)) x = halve(lo.s.x, hi.s.x, by_bits);
+
+  double step_old = kInf;
+  double nudge = 0.0;
+  for (int it = 0; it < kMaxIter; ++it) {
+    Probe pr{sample<N>(P, x), 0.0};
+    if (stop(pr.s)) return {lo, hi, true, pr};  // before the costlier exact g
+    pr.g = level_g<N, L>(P, pr.s);
+    const bool is_lo = (pr.g > 0.0) == pos_lo;
+    if (is_lo) {
+      lo = pr;
+    } else {
+      hi = pr;
+    }
+    if (!(next_up(lo.s.x) < hi.s.x)) break;
+    if constexpr (L == 0) {
+      if (neighbour_crosses(pr, is_lo)) {
+        // The adjacent double towards the root is on the other side: the
+        // bracket is closed without evaluating there.
+        if (is_lo) {
+          hi.s.x = next_up(x);
+        } else {
+          lo.s.x = next_down(x);
+        }
+        break;
+      }
+    }
+
+    // Halley's step (third order: we have g'' for free) from the end where
+    // it is shorter (near a flat end g may be small but its step is long)
+    // is taken if it stays inside the bracket and is at most a quarter of
+    // the previous step, or a few ulps: that holds once convergence sets
+    // in; otherwise (far from the root, or creeping towards it linearly as
+    // from far out on a cubic) halving is faster.
+    const double d_lo = halley_step<L>(lo);
+    const double d_hi = halley_step<L>(hi);
+    const bool at_lo = std::fabs(d_lo) <= std::fabs(d_hi) || std::isnan(d_hi);
+    const double bx = at_lo ? lo.s.x : hi.s.x;
+    const double xn = bx - (at_lo ? d_lo : d_hi);
+    const double step = std::fabs(xn - bx);
+    const bool close = step <= 16.0 * ulp_of(bx);
+    double next;
+    if (xn > lo.s.x && xn < hi.s.x && (step <= 0.25 * step_old || close)) {
+      next = xn;
+      nudge = 0.0;
+    } else if (close) {
+      // Converged onto this end of the bracket, but the root is on the
+      // other side of it: creep inwards by 1, 2, 4... ulps.
+      nudge = nudge == 0.0 ? ulp_of(bx) : 2.0 * nudge;
+      next = at_lo ? bx + nudge : bx - nudge;
+      if (!(next > lo.s.x && next < hi.s.x)) next = halve(lo.s.x, hi.s.x, by_bits);
+    } else {
+      next = halve(lo.s.x, hi.s.x, by_bits);
+      nudge = 0.0;
+    }
+    step_old = std::fabs(next - bx);
+    x = next;
+  }
+  return {lo, hi, false, lo};
+}
+
+// The contact root in a piece where f(lo) > 0 >= f(hi): the first double
+// at which f (evaluated exactly) is <= 0, so at or just after the root.
+template <int N>
+double contact_root(const Poly<N>& P, const Probe& lo, const Probe& hi) {
+  return refine<N, 0>(P, lo, hi, NeverStop{}).hi.s.x;
+}
+
+// The critical point of f in [a, b], where f' changes sign (a and b carry
+// f' as g). Returns the point with f there as g.
+//
+// It is enough to locate the critical point as precisely as the caller's
+// decision needs, so the solver stops early when:
+// - at a minimum, f < 0 at a probe: the minimum is below zero, and the
+//   probe is as good an end for the contact bracket as the minimum (f only
+//   rises from the minimum to the probe, staying <= 0);
+// - at a minimum, f > 0 at a probe and the quadratic model around the
+//   probe proves, with a margin of 8, that f stays > 0 down to the minimum;
+// - at a maximum, f > 0 at a probe: the maximum is higher still.
+// Otherwise (a grazing minimum, or a maximum at or below zero, where the
+// maximum itself is the answer) it runs to the last bit, and we keep the
+// lower (at a minimum) or higher (at a maximum) of the two adjacent doubles.
+template <int N>
+Probe critical_point(const Poly<N>& P, const Probe& a, const Probe& b) {
+  if constexpr (N == 2) {
+    // The vertex of the parabola, correctly rounded: the double nearest
+    // to the exact minimum or maximum is also where f is lowest or highest.
+    const Sample s = sample<N>(P, std::clamp(-P.p[1] / (2.0 * P.p[2]), a.s.x, b.s.x));
+    return {s, exact_f(P, s)};
+  }
+  const bool is_min = a.g < 0.0;
+  const auto stop = [is_min](const Sample& s) {
+    if (!is_min) return s.f > s.ef;
+    if (s.f < -s.ef) return true;
+    if (s.f > s.ef && s.f2 > 0.0) {
+      const double dist = std::fabs(s.f1) / s.f2;  // Newton's estimate of |x - x_min|
+      return dist * std::fabs(s.f3) <= 0.5 * s.f2 && s.f - s.ef > 4.0 * std::fabs(s.f1) * dist;
+    }
+    return false;
+  };
+  const Refined r = refine<N, 1>(P, a, b, stop);
+  if (r.stopped) return {r.at.s, r.at.s.f};  // its sign is certain, which is all we need
+  const Probe lo{r.lo.s, exact_f(P, r.lo.s)};
+  const Probe hi{r.hi.s, exact_f(P, r.hi.s)};
+  if (is_min) return hi.g < lo.g ? hi : lo;
+  return hi.g >= lo.g ? hi : lo;
+}
+
+// first_contact for a polynomial of exact degree N (c[N] != 0).
+template <int N>
+double first_contact_n(const double* c, double t_max) {
+  const Poly<N> P(c);
+  // At t = 0 the values are the coefficients themselves, exactly (c is
+  // padded with zeros to 5 entries).
+  const Sample s0{0.0, c[0], c[1], 2.0 * c[2], 6.0 * c[3], 0.0, 0.0};
+
+  // Roots of f'' inside (0, t_max): f' is monotone between them.
+  double brk[2];
+  int nb = 0;
+  if constexpr (N == 3) {
+    const double r = -P.p[2] / (3.0 * P.p[3]);
+    if (r > 0.0 && r < t_max) brk[nb++] = r;
+  } else if constexpr (N == 4) {
+    double r[2];
+    const int k = solve_quadratic(6.0 * P.p[4], 3.0 * P.p[3], P.p[2], r);
+    for (int i = 0; i < k; ++i) {
+      if (r[i] > 0.0 && r[i] < t_max) brk[nb++] = r[i];
+    }
+  }
+
+  // Walk the monotone pieces of f, found lazily from left to right.
+  // `start` begins the current piece of f (g = f there), `dir` is the sign
+  // of f' inside it (0 while unknown: f' may vanish at t = 0).
+  Probe start{s0, P.p[0]};
+  int dir = 0;
+  Probe a{s0, P.p[1]};  // left end of the current piece of f' (g = f')
+  int sa = sign_of(a.g);
+  for (int i = 0; i <= nb; ++i) {
+    const Sample sb = sample<N>(P, i < nb ? brk[i] : t_max);
+    const Probe b{sb, exact_f1(P, sb)};
+    const int sgb = sign_of(b.g);
+    if (sa != 0 && sgb != 0 && sa != sgb) {
+      // f' changes sign inside (a, b): a critical point ends this piece.
+      dir = sa;
+      if (dir < 0 && start.g <= 0.0) return start.s.x;  // overlap closing
+      const Probe crit = critical_point<N>(P, a, b);
+      if (dir < 0 && crit.g <= 0.0) return contact_root<N>(P, start, crit);
+      start = crit;
+      dir = sgb;
+    } else if (const int inside = sa != 0 ? sa : sgb; inside != 0) {
+      if (dir != 0 && inside != dir) {
+        // f' vanishes exactly at the breakpoint a and changes sign there.
+        const Probe at{a.s, exact_f(P, a.s)};
+        if (dir < 0) {
+          if (start.g <= 0.0) return start.s.x;
+          if (at.g <= 0.0) return contact_root<N>(P, start, at);
+        }
+        start = at;
+      }
+      dir = inside;
+    }
+    a = b;
+    sa = sgb;
+  }
+  // The last piece ends at t_max.
+  if (dir < 0) {
+    if (start.g <= 0.0) return start.s.x;
+    const Probe end{a.s, exact_f(P, a.s)};
+    if (end.g <= 0.0) return contact_root<N>(P, start, end);
+  }
+  return kInf;
+}
+
+// Fujiwara's bound on the moduli of the roots of f (and so of f', f'' by
+// Gauss-Lucas), enlarged a little against rounding: no piece boundary or
+// contact lies beyond it, so it can replace a longer or infinite window.
+double root_bound(const double* p, int n) {
+  const double lead = std::fabs(p[n]);
+  double r = 0.0;
+  for (int k = 1; k <= n; ++k) {
+    // |c_{n-k} / c_n|^(1/k), with the powers taken apart so that the
+    // ratio cannot overflow.
+    const double q = std::fabs(p[n - k]) * (k == n ? 0.5 : 1.0);
+    r = std::max(r, k == 1 ? q / lead : std::pow(q, 1.0 / k) / std::pow(lead, 1.0 / k));
+  }
+  r *= 2.0 * (1.0 + 0x1p-20);
+  return std::isfinite(r) ? r : std::numeric_limits<double>::max();
+}
+
+double reference_first_contact(const double* c, int degree, double t_max) {
+  if (c == nullptr || degree < 0 || degree > 4 || !(t_max >= 0.0)) return kInf;
+  double p[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+  int n = 0;
+  double big = 0.0;
+  for (int k = 0; k <= degree; ++k) {
+    if (!std::isfinite(c[k])) return kInf;
+    p[k] = c[k];
+    if (c[k] != 0.0) n = k;
+    big = std::max(big, std::fabs(c[k]));
+  }
+  if (n == 0) return kInf;                        // constant: never closing
+  if (p[0] <= 0.0 && p[1] < 0.0) return 0.0;      // touching and closing now
+  bool falls = false;                              // can f' be < 0 for t > 0?
+  for (int k = 1; k <= n; ++k) falls = falls || p[k] < 0.0;
+  if (!falls) return kInf;
+
+  // The largest term of f over the window, and how much the negative
+  // terms can remove from f(0) at most.
+  double T = t_max + 0.0;  // turns -0 into +0
+  double top = 0.0, drop = 0.0;
+  const auto measure = [&] {
+    double tk = 1.0;
+    top = std::fabs(p[0]);
+    drop = 0.0;
+    for (int k = 1; k <= n; ++k) {
+      tk *= T;
+      const double term = p[k] * tk;
+      top = std::max(top, std::fabs(term));
+      if (term < 0.0) drop -= term;
+    }
+  };
+  measure();
+  if (!(top <= 0x1p+400)) {
+    // A huge (or infinite) window: nothing happens beyond the roots of f,
+    // f' and f'', so we may cut it down to a bound on them.
+    T = std::min(T, root_bound(p, n));
+    measure();
+  }
+  if (T == 0.0) {
+    // Only t = 0 is allowed: a contact if f <= 0 and the first nonzero
+    // derivative is negative (p[1] < 0 was handled above; p[1] > 0 means
+    // the contact is opening).
+    if (p[0] > 0.0) return kInf;
+    for (int k = 1; k <= n; ++k) {
+      if (p[k] != 0.0) return p[k] < 0.0 ? 0.0 : kInf;
+    }
+    return kInf;
+  }
+  // If the terms are so large or small that Horner's intermediates (or the
+  // compensated evaluation's error terms) could overflow or go subnormal,
+  // rescale time and f by powers of two (exact, so the answer is the same
+  // double): t = 2^m s with 2^m ~ T, and f divided by 2^e ~ its largest
+  // term over the window (from the exponents, which cannot overflow). Then
+  // s runs over [0, 2) and every coefficient is at most 32; terms too
+  // small to matter may underflow.
+  int m = 0;
+  const bool apart = p[0] > 0.0;
+  if (!(top >= 0x1p-400 && top <= 0x1p+400)) {
+    m = std::ilogb(T);
+    int e = std::numeric_limits<int>::min();
+    for (int k = 0; k <= n; ++k) {
+      if (p[k] != 0.0) e = std::max(e, std::ilogb(p[k]) + m * k);
+    }
+    for (int k = 0; k <= n; ++k) p[k] = std::ldexp(p[k], m * k - e);
+    // A positive constant term too small to survive is still "apart".
+    if (apart && p[0] == 0.0) p[0] = std::numeric_limits<double>::denorm_min();
+    T = std::ldexp(T, -m);
+    measure();
+  }
+  // Cheap rejection: f stays above p[0] - drop > 0 on [0, T]. The margin
+  // covers the rounding of `drop` (a few ulps).
+  if (p[0] > drop * (1.0 + 1e-14)) return kInf;
+
+  double s = kInf;
+  switch (n) {
+    case 1: s = first_contact_n<1>(p, T); break;
+    case 2: s = first_contact_n<2>(p, T); break;
+    case 3: s = first_contact_n<3>(p, T); break;
+    default: s = first_contact_n<4>(p, T); break;
+  }
+  if (m == 0) return s;
+  s = std::ldexp(s, m);
+  // Apart at t = 0 means a contact strictly later, even if it underflows.
+  return apart && s == 0.0 ? std::numeric_limits<double>::denorm_min() : s;
+}
+
+int solve_quadratic(double a, double b, double c, double roots[2]) {
+  if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c)) return 0;
+  if (a == 0.0) {
+    if (b == 0.0) return 0;  // constant: no root (or every x if c == 0)
+    roots[0] = -c / b + 0.0;
+    return 1;
+  }
+  // Scaling by a power of two keeps b^2 and ac finite and normal.
+  const double big = std::max({std::fabs(a), std::fabs(b), std::fabs(c)});
+  if (big > 0x1p+480 || big < 0x1p-480) {
+    const int e = std::ilogb(big);
+    a = std::ldexp(a, -e);
+    b = std::ldexp(b, -e);
+    c = std::ldexp(c, -e);
+  }
+  const double bb = b * b;
+  const double ac4 = 4.0 * (a * c);
+  double disc = bb - ac4;
+  if (3.0 * std::fabs(disc) < bb + std::fabs(ac4)) {
+    // Near a double root b^2 and 4ac cancel: compute the discriminant
+    // exactly from the error-free products (Kahan). The difference of the
+    // high parts is exact by Sterbenz's lemma.
+    const Pair x = two_prod(b, b);
+    const Pair y = two_prod(a, c);
+    disc = (x.hi - 4.0 * y.hi) + (x.lo - 4.0 * y.lo);
+  }
+  if (disc < 0.0) return 0;
+  if (disc == 0.0) {
+    roots[0] = -b / (2.0 * a) + 0.0;
+    return 1;
+  }
+  // q has the sign of -b and no cancellation; the roots are q/a and c/q.
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  double r1 = q / a;
+  double r2 = c / q;
+  if (r2 < r1) std::swap(r1, r2);
+  roots[0] = r1 + 0.0;
+  roots[1] = r2 + 0.0;
+  return 2;
+}
+
+}  // namespace frozen
+
+// Compares first_contact with the frozen copy, memcmp of the doubles
+// (+inf included); keeps the first mismatch for the message.
+struct BitCompare {
+  long cases = 0;
+  long mismatches = 0;
+  std::string first;
+  void operator()(const char* family, const double* c, int degree, double t_max) {
+    double cc[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+    for (int k = 0; k <= degree && k < 5; ++k) cc[k] = c[k];
+    const double want = frozen::reference_first_contact(cc, degree, t_max);
+    const double got = first_contact(cc, degree, t_max);
+    ++cases;
+    if (std::memcmp(&want, &got, sizeof want) != 0 && mismatches++ == 0) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, " [%s]: %a instead of %a", family, got, want);
+      first = dump(cc, degree, t_max) + buf;
+    }
+  }
+};
+
+// f(t) by Horner in double (for the generators only).
+double horner_d(const double* c, int n, double t) {
+  double r = c[n];
+  for (int k = n - 1; k >= 0; --k) r = r * t + c[k];
+  return r;
+}
+
+// sum g_j (t - a)^j in powers of t, in long double.
+void shifted_poly(const long double* g, long double a, long double* c) {
+  const long double binom[5][5] = {
+      {1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
+  for (int k = 0; k < 5; ++k) c[k] = 0;
+  for (int j = 0; j <= 4; ++j) {
+    long double ap = 1;
+    for (int k = j; k >= 0; --k) {
+      c[k] += g[j] * binom[j][k] * ap;
+      ap *= -a;
+    }
+  }
+}
+
+TEST(FirstContact, FastPathsMatchFullMethodBitForBit) {
+  Rng rng(0x5eed000c);
+  BitCompare check;
+  // Ball pairs on the table and aimed at each other, over the window until
+  // a ball stops, and with no window at all; the same with the window
+  // ending exactly at, just before and just after the contact.
+  for (int i = 0; i < 60000; ++i) {
+    const Quartic q = ball_pair(rng, (i & 1) != 0);
+    check("ball pair", q.c, 4, q.t_max);
+    if (i % 8 == 0) check("ball pair, no window", q.c, 4, kInf);
+    const double t = frozen::reference_first_contact(q.c, 4, q.t_max);
+    if (t < kInf && t > 0.0) {
+      check("window at contact", q.c, 4, t);
+      check("window before contact", q.c, 4, std::nextafter(t, 0.0));
+      check("window after contact", q.c, 4, std::nextafter(t, kInf));
+    }
+  }
+  // Pairs touching after a collision: c0 ~ round-off either way, opening
+  // (or not at all), maybe pulled back together by friction.
+  for (int i = 0; i < 30000; ++i) {
+    Quartic q = ball_pair(rng, true);
+    q.c[0] = rng.sign() * rng.pow10(-40.0, -9.0);
+    q.c[1] = std::fabs(q.c[1]) * (rng.uniform() < 0.2 ? rng.pow10(-8.0, 0.0) : 1.0);
+    if (rng.uniform() < 0.5) q.c[2] = -std::fabs(q.c[2]);
+    if (rng.uniform() < 0.2) q.c[1] = 0.0;
+    check("touching pair", q.c, 4, q.t_max);
+  }
+  // Grazing pairs: c0 moved so that the minimum of f over the window is
+  // zero or +-1e-6 .. 1e-18 of c0.
+  for (int i = 0; i < 10000; ++i) {
+    Quartic q = ball_pair(rng, true);
+    double best = kInf, tb = 0.0;
+    for (int j = 0; j <= 64; ++j) {
+      const double t = q.t_max * j / 64.0;
+      if (horner_d(q.c, 4, t) < best) {
+        best = horner_d(q.c, 4, t);
+        tb = t;
+      }
+    }
+    double a = std::max(0.0, tb - q.t_max / 64.0), b = std::min(q.t_max, tb + q.t_max / 64.0);
+    for (int j = 0; j < 80; ++j) {
+      const double m1 = a + (b - a) * 0.382, m2 = a + (b - a) * 0.618;
+      if (horner_d(q.c, 4, m1) < horner_d(q.c, 4, m2)) {
+        b = m2;
+      } else {
+        a = m1;
+      }
+    }
+    const double fmin = horner_d(q.c, 4, 0.5 * (a + b));
+    const double c0 = q.c[0];
+    q.c[0] = c0 - fmin;
+    check("grazing pair", q.c, 4, q.t_max);
+    q.c[0] = c0 - fmin + rng.sign() * rng.pow10(-18.0, -6.0) * (std::fabs(c0) + 1e-3);
+    check("grazing pair", q.c, 4, q.t_max);
+  }
+  // Pairs at power-of-two scales of f and of time, up to absurd ones (the
+  // full method's own rescaling and root bound, and coefficients spanning
+  // more than 2^800).
+  for (int i = 0; i < 10000; ++i) {
+    const Quartic q = ball_pair(rng, (i & 1) != 0);
+    double c[5];
+    const int e = rng.below(1201) - 600, te = rng.below(401) - 200;
+    for (int k = 0; k < 5; ++k) c[k] = std::ldexp(q.c[k], e);
+    check("scaled pair", c, 4, q.t_max);
+    check("scaled pair, huge window", c, 4, 1e300);
+    for (int k = 0; k < 5; ++k) c[k] = std::ldexp(q.c[k], -te * k);
+    check("time-scaled pair", c, 4, std::ldexp(q.t_max, te));
+  }
+  // A decelerating ball and a cushion line (degree 2): apart, just
+  // reaching it as it stops, and touching after a bounce.
+  for (int i = 0; i < 30000; ++i) {
+    const double speed = rng.pow10(-1.5, 0.8), decel = rng.uniform() < 0.5 ? 0.0981 : 1.962;
+    const double along = rng.uniform(-1.0, 1.0) * speed;
+    const double t_max = speed / decel;
+    double c[3] = {rng.uniform(0.0, 1.0), -along, 0.5 * decel * along / speed};
+    check("cushion", c, 2, t_max);
+    const double t = frozen::reference_first_contact(c, 2, t_max);
+    if (t < kInf && t > 0.0) {
+      check("cushion, window at contact", c, 2, t);
+      check("cushion, window before contact", c, 2, std::nextafter(t, 0.0));
+    }
+    c[0] = 0.5 * std::fabs(along) * speed / decel * (1.0 + rng.sign() * rng.pow10(-17.0, -1.0));
+    check("cushion, stopping at it", c, 2, t_max);
+    c[0] = rng.sign() * rng.pow10(-18.0, -10.0);
+    c[1] = std::fabs(along) * rng.sign();
+    c[2] = -0.5 * decel * c[1] / speed;
+    check("cushion, touching", c, 2, t_max);
+  }
+  // Exact grazing parabolas (dips down to 1e-30 either way) in time and
+  // coefficient scales.
+  for (int i = 0; i < 300; ++i) {
+    const Grazing g = grazing_parabola(rng.sign() * rng.pow10(-30.0, -5.0));
+    const int te = rng.below(41) - 20, ce = rng.below(41) - 20;
+    const double c[3] = {std::ldexp(g.c[0], ce), std::ldexp(g.c[1], ce - te),
+                         std::ldexp(g.c[2], ce - 2 * te)};
+    check("grazing parabola", c, 2, std::ldexp(2.0, te));
+    const double c4[5] = {0.0, 0.0, g.c[0], g.c[1], 1.0};
+    check("grazing parabola", c4, 4, 2.0);
+  }
+  // The test families above: products of roots, random and broad
+  // coefficients, wild input, near-double roots.
+  for (int i = 0; i < 20000; ++i) {
+    double c[5];
+    const int degree = product_poly(rng, c);
+    const double t_max = rng.uniform(0.0, 3.5);
+    check("product of roots", c, degree, t_max);
+    const double t = frozen::reference_first_contact(c, degree, t_max);
+    if (t < kInf && t > 0.0) {
+      check("product of roots, window at contact", c, degree, t);
+      check("product of roots, window before contact", c, degree, std::nextafter(t, 0.0));
+    }
+    for (int k = 0; k <= 4; ++k) c[k] = k <= degree ? rng.sign() * rng.pow10(-3.0, 3.0) : 0.0;
+    check("random coefficients", c, degree, rng.pow10(-2.0, 2.0));
+    for (int k = 0; k <= 4; ++k) {
+      c[k] = k <= degree && rng.uniform() >= 0.1 ? rng.sign() * rng.pow10(-100.0, 100.0) : 0.0;
+    }
+    check("broad scales", c, degree, rng.pow10(-20.0, 20.0));
+    const int wild = rng.below(5);
+    for (int k = 0; k <= 4; ++k) {
+      c[k] = k <= wild && rng.uniform() >= 0.1 ? rng.sign() * rng.pow10(-300.0, 300.0) : 0.0;
+    }
+    check("wild", c, wild, rng.uniform() < 0.1 ? kInf : rng.pow10(-300.0, 300.0));
+    // ((t - r)^2 + dip r^2) times a positive quadratic, or alone.
+    const double r = rng.uniform(0.1, 2.0);
+    const double dip = rng.sign() * rng.pow10(-18.0, -2.0) * r * r;
+    const double x = rng.uniform(-2.0, 3.0), y = rng.pow10(-1.0, 0.5);
+    const Q a[3] = {static_cast<Q>(r) * r + dip, -2 * static_cast<Q>(r), 1};
+    const Q b[3] = {static_cast<Q>(x) * x + static_cast<Q>(y) * y, -2 * static_cast<Q>(x), 1};
+    const bool quartic = (i & 1) != 0;
+    for (int k = 0; k <= 4; ++k) {
+      Q s = 0;
+      for (int j = 0; j <= 2; ++j) {
+        if (k - j >= 0 && k - j <= 2) s += a[j] * (quartic ? b[k - j] : (k == j ? 1 : 0));
+      }
+      c[k] = static_cast<double>(s);
+    }
+    check("near-double root", c, quartic ? 4 : 2, rng.uniform(r, 2.0 * r + 1.0));
+  }
+  // Flat spots: clustered roots and near-inflections of f, f' and f''
+  // around the contact, e.g. (t - a)^3 + e1 (t - a) + e0 with tiny e_k.
+  for (int i = 0; i < 20000; ++i) {
+    const long double a = rng.uniform(0.0, 2.0);
+    const auto tiny = [&](double lo) { return static_cast<long double>(rng.sign() * rng.pow10(lo, 0.0)); };
+    long double g[5] = {0, 0, 0, 0, 0};
+    switch (rng.below(4)) {
+      case 0: g[3] = -1; g[1] = tiny(-16.0); g[0] = tiny(-16.0); break;
+      case 1: g[4] = 1; g[2] = tiny(-16.0); g[1] = tiny(-16.0); g[0] = tiny(-16.0); break;
+      case 2: g[4] = 1; g[3] = tiny(-12.0); g[2] = tiny(-16.0); g[1] = tiny(-16.0); g[0] = tiny(-16.0); break;
+      default: g[2] = 1; g[1] = tiny(-12.0); g[0] = tiny(-16.0); break;
+    }
+    long double cl[5];
+    shifted_poly(g, a, cl);
+    const int degree = g[4] != 0 ? 4 : g[3] != 0 ? 3 : 2;
+    const double s = rng.sign() * rng.pow10(-2.0, 2.0);
+    double c[5];
+    for (int k = 0; k < 5; ++k) c[k] = static_cast<double>(cl[k] * s);
+    check("flat spot", c, degree, rng.uniform(0.0, 3.0));
+    c[0] = -c[0];
+    check("flat spot", c, degree, rng.uniform(0.0, 3.0));
+  }
+  std::printf("  [bit-identical to the full method] %ld cases\n", check.cases);
+  EXPECT_GT(check.cases, 300000);
+  EXPECT_EQ(check.mismatches, 0) << check.mismatches << " mismatches, the first: " << check.first;
 }
 
 }  // namespace

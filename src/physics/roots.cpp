@@ -29,6 +29,13 @@
 //      located to the last bit. No absolute tolerance on f is used
 //      anywhere, so the results do not depend on the scale of f (scaling
 //      f by a power of two gives bit-identical results).
+//   6. Fast paths (below, "Fast paths with certificates") come first and
+//      settle almost every call with a cheap proof instead: no contact
+//      (f clear of zero, or rising, over the window, from the Bernstein
+//      form of f), or the contact at a given double x (f > 0 up to the
+//      double before x, f < 0 at x, both by a margin). The answer they
+//      prove is the one steps 1-5 give, bit for bit; whatever they cannot
+//      prove (grazing contacts, near-double roots, ...) goes to steps 1-5.
 //
 // Everything is on the stack and the polynomial degree is a template
 // parameter, so the loops unroll; this runs about 30 times per event.
@@ -108,6 +115,12 @@ struct Poly {
   double p[N + 1];  // f
   double d[N];      // f' = sum (d[k] + dl[k]) t^k, exactly: 3 c3 needs
   double dl[N];     // a low part, the other multiples are exact.
+
+  // Only f, for the fast paths (f' is not needed there).
+  struct ValuesOnly {};
+  Poly(const double* c, ValuesOnly) : d{}, dl{} {
+    for (int k = 0; k <= N; ++k) p[k] = c[k];
+  }
 
   explicit Poly(const double* c) {
     for (int k = 0; k <= N; ++k) p[k] = c[k];
@@ -405,8 +418,7 @@ Probe critical_point(const Poly<N>& P, const Probe& a, const Probe& b) {
 
 // first_contact for a polynomial of exact degree N (c[N] != 0).
 template <int N>
-double first_contact_n(const double* c, double t_max) {
-  const Poly<N> P(c);
+double first_contact_n(const Poly<N>& P, const double* c, double t_max) {
   // At t = 0 the values are the coefficients themselves, exactly (c is
   // padded with zeros to 5 entries).
   const Sample s0{0.0, c[0], c[1], 2.0 * c[2], 6.0 * c[3], 0.0, 0.0};
@@ -468,6 +480,499 @@ double first_contact_n(const double* c, double t_max) {
   return kInf;
 }
 
+// --- Fast paths with certificates.
+//
+// The method above is exact but it always locates every critical point
+// and runs its bracketed solver to the last bit. Most calls have an
+// answer that can be proven much more cheaply, and since its result is a
+// function of f alone wherever its sign decisions are right (they are,
+// wherever |f| is above its evaluation error, ~1e-30 relative), a proof
+// of the same answer gives the same double:
+// - no contact: f > 0 on [0, T] by a margin far above every evaluation
+//   error (so every probe of the method above would see f > 0 too), or f
+//   increasing on [0, T] likewise (no decreasing piece at all);
+// - contact at x: f > 0 on [0, x-] and f(x) < 0 (x- is the double before
+//   x), both by the margin kMargin, which also dwarfs how far f can move
+//   against the direction the method above assigns to a monotone piece
+//   (~u^2 relative, where f' is within its rounding error of zero). Then
+//   that method returns x: it returns only doubles at which f <= 0, so
+//   none before x; x lies in a piece it takes as decreasing, with f <= 0
+//   at its end, and every double of that piece has f > 0 up to x- and
+//   f < 0 from x on, so its bracket closes on (x-, x).
+// The proofs use the Bernstein form of f on [0, T] and on halves of it
+// (de Casteljau): its coefficients bound f, their differences bound f'
+// and their second differences f'', with rounding errors bounded
+// rigorously in units of Q = sum |c_k| T^k. Whenever a proof fails, the
+// method above decides.
+
+// Bound on the rounding error of any Bernstein coefficient (and so of
+// their differences' parts), in units of Q: the conversion costs about
+// 13 u and every halving level 4 u (four averages); kMaxDepth levels stay
+// far below 2^-44.
+constexpr double kErrB = 0x1p-44;
+// The margin by which f must clear zero at a contact's end points.
+constexpr double kMargin = 0x1p-90;
+constexpr int kMaxDepth = 6;
+// Slack for underflow in the error bounds of Horner's rule.
+constexpr double kTiny = 0x1p-1000;
+
+enum class Verdict { unknown, none, contact };
+
+// Bernstein coefficients of f(T s) on [0, 1] from q_k = c_k T^k.
+template <int N>
+void to_bernstein(const double* q, double* b) {
+  if constexpr (N == 2) {
+    b[0] = q[0];
+    b[1] = q[0] + 0.5 * q[1];
+    b[2] = q[0] + q[1] + q[2];
+  } else if constexpr (N == 3) {
+    b[0] = q[0];
+    b[1] = q[0] + q[1] / 3.0;
+    b[2] = q[0] + (2.0 * q[1] + q[2]) / 3.0;
+    b[3] = q[0] + q[1] + q[2] + q[3];
+  } else {
+    b[0] = q[0];
+    b[1] = q[0] + 0.25 * q[1];
+    b[2] = q[0] + 0.5 * q[1] + q[2] / 6.0;
+    b[3] = q[0] + 0.75 * q[1] + 0.5 * q[2] + 0.25 * q[3];
+    b[4] = q[0] + q[1] + q[2] + q[3] + q[4];
+  }
+}
+
+// Halves of a Bernstein polygon (de Casteljau at 1/2).
+template <int N>
+void split_half(const double* b, double* left, double* right) {
+  double w[N + 1];
+  for (int i = 0; i <= N; ++i) w[i] = b[i];
+  left[0] = w[0];
+  right[N] = w[N];
+  for (int r = 1; r <= N; ++r) {
+    for (int i = 0; i <= N - r; ++i) w[i] = 0.5 * (w[i] + w[i + 1]);
+    left[r] = w[0];
+    right[N - r] = w[N - r];
+  }
+}
+
+// An upper bound on |f''| / 2 over [0, z]: sum C(k, 2) |c_k| z^(k-2).
+template <int N>
+double half_f2_bound(const Poly<N>& P, double z) {
+  double r = 0.0;
+  for (int k = N; k >= 2; --k) r = r * z + 0.5 * static_cast<double>(k * (k - 1)) * std::fabs(P.p[k]);
+  return r * (1.0 + 0x1p-40);
+}
+
+// In one pass at x >= 0: f(x) by compensated Horner, with an error of
+// at most u |f| + gamma_2n^2 sum |c_k| x^k (Graillat et al.; gamma_8^2 <
+// 2^-99.9), and f'(x) by Horner with its error bound.
+struct Exact {
+  double v;      // f(x)
+  double ev;     // bound on |v - f(x)| (with slack for underflow)
+  double f1;     // f'(x)
+  double ef1;    // bound on |f1 - f'(x)|
+};
+
+template <int N>
+inline Exact exact_sample(const Poly<N>& P, double x) {
+  double s = P.p[N], e = 0.0, r1 = 0.0;
+  double b0 = std::fabs(P.p[N]), b1 = 0.0;
+#pragma GCC unroll 4
+  for (int k = N - 1; k >= 0; --k) {
+    r1 = r1 * x + s;
+    b1 = b1 * x + b0;
+    const Pair pr = two_prod(s, x);
+    const Pair sm = two_sum(pr.hi, P.p[k]);
+    s = sm.hi;
+    e = e * x + (pr.lo + sm.lo);
+    b0 = b0 * x + std::fabs(P.p[k]);
+  }
+  const double v = s + e;
+  return {v, 0x1p-52 * std::fabs(v) + 0x1p-98 * b0 + kTiny, r1, kGamma * b1 + kTiny};
+}
+
+// Plain Horner for f, f', f'', f''' and sum |c_k| x^k (x >= 0), for the
+// iterations that only need to get close.
+struct Plain {
+  double f, f1, f2, f3, fa;
+};
+
+template <int N>
+inline Plain horner4(const Poly<N>& P, double x) {
+  double r0 = P.p[N], r1 = 0.0, r2 = 0.0, r3 = 0.0, a = std::fabs(P.p[N]);
+#pragma GCC unroll 4
+  for (int k = N - 1; k >= 0; --k) {
+    r3 = r3 * x + r2;
+    r2 = r2 * x + r1;
+    r1 = r1 * x + r0;
+    r0 = r0 * x + P.p[k];
+    a = a * x + std::fabs(P.p[k]);
+  }
+  return {r0, r1, 2.0 * r2, 6.0 * r3, a};
+}
+
+// The smallest u > 0 with c + b u + a u^2 = 0, or NaN: of the roots
+// q / a and c / q, the latter is the smaller in magnitude.
+inline double model_root(double c, double b, double a) {
+  if (a == 0.0) return -c / b;
+  const double disc = b * b - 4.0 * a * c;
+  if (!(disc >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  return (c > 0.0) == (q > 0.0) ? c / q : q / a;
+}
+
+// Pins down the contact near y: x, the first double with f(x) <= 0,
+// proving f(x-) > margin and f(x) < -margin, for x in (0, cap]. It is
+// known that f > 0 on [0, y0] for some y0 < x and that f is quasi-concave
+// on [y0, cap] (f' changes sign at most once there, from + to -, and
+// f(y0) > margin), or, with `convex`, that f is convex on [y0, cap]; then
+// f' < 0 at x is checked here, so that f decreases on [y0, x]. Either way
+// f >= min(f(y0), f(x-)) on [y0, x-], so f > 0 up to x- follows.
+// Each step evaluates f at y (nearly) exactly and takes Newton's step
+// from there, which lands within an ulp of the root when y is within
+// ~1e-10 of it; the value of f at the doubles there follows from the
+// Taylor expansion at y, with rigorous bounds on every error.
+template <int N>
+Verdict pin_contact(const Poly<N>& P, double Q, double y, double cap, bool convex, double& out) {
+  const double M = kMargin * Q;
+  for (int it = 0; it < 6; ++it) {
+    if (!(y > 0.0 && y <= cap)) return Verdict::unknown;
+    const Exact s = exact_sample<N>(P, y);
+    const double v = s.v, ev = s.ev;
+    if (!std::isfinite(v) || !(s.f1 < 0.0)) return Verdict::unknown;
+    const double f1_hi = s.f1 + s.ef1, f1_lo = s.f1 - s.ef1;
+    // f(t) = f(y) + f'(y) d + f''(xi) d^2 / 2 with d = t - y.
+    const double up = next_up(y), down = next_down(y);
+    const double h = up - y, hd = y - down;      // hd <= h
+    double f2b = half_f2_bound<N>(P, up);        // |f''| / 2 up to y+
+    if (v <= 0.0) {
+      // Usually y is the contact: f(y-) > 0 (by the margin).
+      if (v - ev - f1_hi * hd - f2b * hd * hd > M && v + ev < -M &&
+          (!convex || f1_hi < -0x1p-50 * std::fabs(s.f1))) {
+        out = y;
+        return Verdict::contact;
+      }
+    } else if (v + ev + f1_hi * h + f2b * h * h < -M && v - ev > M &&
+               (!convex || f1_hi + 2.0 * f2b * h < -0x1p-50 * std::fabs(s.f1)) && up <= cap) {
+      // Or the double after it.
+      out = up;
+      return Verdict::contact;
+    }
+    // Else Newton's step from the (nearly) exact value lands within an
+    // ulp of the root if y was within ~1e-10 of it; f there follows from
+    // the same expansion at y (the slack covers the bounds' rounding).
+    const double z = y - v / s.f1;
+    if (!(z > 0.0 && z <= cap) || z == y) return Verdict::unknown;
+    f2b = half_f2_bound<N>(P, next_up(next_up(std::max(y, z))));
+    const auto bound = [&](double t, bool upper) {
+      const double d = t - y;
+      const double lin = (d >= 0.0) == upper ? f1_hi * d : f1_lo * d;
+      const double quad = f2b * d * d;
+      const double slack = 0x1p-50 * (std::fabs(v) + std::fabs(lin) + quad);
+      return upper ? v + ev + lin + quad + slack : v - ev + lin - quad - slack;
+    };
+    for (int k = 0; k < 2; ++k) {
+      const double x = k == 0 ? z : next_up(z);
+      if (x <= cap && bound(x, true) < -M && bound(next_down(x), false) > M &&
+          (!convex || f1_hi + 2.0 * f2b * std::fabs(x - y) < -0x1p-50 * std::fabs(s.f1))) {
+        out = x;
+        return Verdict::contact;
+      }
+    }
+    y = z;
+  }
+  return Verdict::unknown;
+}
+
+// The contact root in [lo, hi] (f(lo) > 0 > f(hi), lo >= y0 of
+// pin_contact): first close in with Halley's method (plain Horner),
+// safeguarded by the bracket, then pin it down. Halley starts from the
+// quadratic Taylor model at the end where |f| is smaller (free at t = 0),
+// else from the secant.
+template <int N>
+Verdict contact_in(const Poly<N>& P, double Q, double lo, double hi, double flo, double fhi,
+                   double cap, bool convex, double& out) {
+  double y;
+  {
+    const bool from_lo = flo <= -fhi;
+    const double e = from_lo ? lo : hi;
+    double f, f1, f2;
+    if (e == 0.0) {
+      f = P.p[0];
+      f1 = P.p[1];
+      f2 = 2.0 * P.p[2];
+    } else {
+      const Plain h = horner4<N>(P, e);
+      f = h.f;
+      f1 = h.f1;
+      f2 = h.f2;
+    }
+    const double u = model_root(f, from_lo ? f1 : -f1, 0.5 * f2);
+    y = from_lo ? e + u : e - u;
+    if (!(y > lo && y < hi)) y = lo + (hi - lo) * (flo / (flo - fhi));
+    if (!(y > lo && y < hi)) y = lo + 0.5 * (hi - lo);
+  }
+  for (int it = 0;; ++it) {
+    if (it == 40) return Verdict::unknown;
+    const Plain h = horner4<N>(P, y);
+    const double f = h.f, f1 = h.f1, f2 = h.f2;
+    if (f > 0.0) {
+      lo = y;
+    } else {
+      hi = y;
+    }
+    const double den = 2.0 * f1 * f1 - f * f2;
+    const double step = den > 0.0 ? 2.0 * f * f1 / den : f / f1;
+    const double yn = y - step;
+    const bool inside = yn > lo && yn < hi;
+    // Close enough for the final Newton step: Halley's error after a
+    // step is about K step^3 with K = (f'' / 2f')^2 - f''' / 6f'; take the
+    // step and stop once that is below ~1e-11 relative. Or as close as
+    // plain Horner can tell.
+    const double as = std::fabs(step);
+    const double k_f1f1 = 0.25 * f2 * f2 + std::fabs(h.f3 * f1) * (1.0 / 6.0);  // >= |K| f'^2
+    if (k_f1f1 * (as * as * as) <= 0x1p-36 * y * (f1 * f1) || as <= 0x1p-40 * y ||
+        std::fabs(f) <= 0x1p-50 * h.fa) {
+      if (inside) y = yn;
+      break;
+    }
+    if (!(next_up(lo) < hi)) break;
+    y = inside ? yn : lo + 0.5 * (hi - lo);
+  }
+  return pin_contact<N>(P, Q, y, cap, convex, out);
+}
+
+// Degree 2 directly: f = c0 + c1 t + c2 t^2 is convex or concave, its
+// minimum over [0, T] and its first root have closed forms.
+Verdict fast_quadratic(const Poly<2>& P, const double* q, double Q, double T, double& out) {
+  const double eb = kErrB * Q;
+  const double M = kMargin * Q;
+  const double c0 = P.p[0], c1 = P.p[1], c2 = P.p[2];
+  const double fT = q[0] + q[1] + q[2];  // f(T), error < 3 u Q
+  const double dT = q[1] + 2.0 * q[2];   // T f'(T), error < 3 u Q
+  if (!(c0 > 0.0)) {
+    // Touching or overlapping and opening (c1 > 0): no contact if f rises
+    // over the whole window (f' is linear: f'(0) > 0 and f'(T) > 0), or
+    // if it is concave and f(T) > 0: then f stays above f(T) from its
+    // maximum on, where the only decreasing piece starts.
+    if (c1 > 0.0 && (dT > 4.0 * eb || (c2 < 0.0 && fT > 2.0 * eb))) return Verdict::none;
+    return Verdict::unknown;
+  }
+  bool convex = c2 > 0.0;
+  if (convex) {
+    if (dT < -4.0 * eb) {
+      // Decreasing over the whole window: the minimum is f(T).
+      if (fT > 2.0 * eb) return Verdict::none;
+      if (!(fT < -2.0 * eb)) return Verdict::unknown;
+    } else {
+      // Below the tangent at T: f(t) >= f(T) + f'(T) (t - T) on [0, T].
+      if (fT - std::max(dT, 0.0) > 2.0 * eb) return Verdict::none;
+      // The vertex value is -disc / (4 q2) with disc = q1^2 - 4 q0 q2; the
+      // rounding error of disc (with that of the q_k) is below 16 u
+      // (q1^2 + 4 q0 q2) plus underflow (q2 normal keeps that tiny).
+      const double a = q[1] * q[1], b = 4.0 * (q[0] * q[2]);
+      const double disc = a - b;
+      if (q[2] > 0x1p-1000 && -disc - 0x1p-48 * (a + b) - 0x1p-1060 > 8.0 * q[2] * M) {
+        return Verdict::none;
+      }
+      if (!(disc > 0x1p-48 * (a + b))) return Verdict::unknown;
+      if (!(c1 < 0.0)) return Verdict::unknown;
+    }
+    // The first root is the smaller one (convex, c0 > 0, c1 < 0).
+  } else {
+    // Concave (c2 < 0): f >= min(f(0), f(t)) on [0, t].
+    if (!(c0 > M)) return Verdict::unknown;
+    if (fT > 2.0 * eb) return Verdict::none;
+    if (!(fT < -2.0 * eb)) return Verdict::unknown;
+    // The positive root (c0 > 0 > c2: one root of each sign).
+  }
+  // The stable closed form, with Kahan's exact discriminant where b^2
+  // and 4ac nearly cancel.
+  const double bb = c1 * c1;
+  const double ac4 = 4.0 * (c0 * c2);
+  double disc = bb - ac4;
+  if (3.0 * std::fabs(disc) < bb + std::fabs(ac4)) {
+    const Pair x = two_prod(c1, c1);
+    const Pair z = two_prod(c0, c2);
+    disc = (x.hi - 4.0 * z.hi) + (x.lo - 4.0 * z.lo);
+  }
+  if (!(disc >= 0.0)) return Verdict::unknown;
+  const double qq = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+  // Roots qq / c2 and c0 / qq. Convex with c1 < 0: qq > 0, both roots
+  // positive, the smaller is c0 / qq. Concave: the positive one.
+  double y = convex ? c0 / qq : (c1 >= 0.0 ? qq / c2 : c0 / qq);
+  if (!(y > 0.0)) return Verdict::unknown;
+  y = std::min(y, T);
+  return pin_contact<2>(P, Q, y, T, convex, out);
+}
+
+template <int N>
+struct Span {
+  double b[N + 1];  // Bernstein coefficients of f on [T sa, T sb]
+  double sa, sb;    // dyadic, so T sa and T sb are exact reals
+  int depth;
+};
+
+// The first contact of f (c_0 > 0 or c_0 <= 0 <= c_1) on [0, T], if it
+// can be proven cheaply; q_k = c_k T^k, Q = sum |q_k|. The spans are
+// visited from left to right (depth first, left halves first), so when
+// one holds a contact, f > 0 on all of [0, T sa] is already proven.
+template <int N>
+Verdict fast_contact(const Poly<N>& P, const double* q, double Q, double T, double& out) {
+  const double eb = kErrB * Q;  // bounds every coefficient's error
+  const double M = kMargin * Q;
+  Span<N> cur;
+  to_bernstein<N>(q, cur.b);
+  {
+    // f increasing on the whole window (every difference > 0): no
+    // decreasing piece, no contact whatever c_0.
+    bool up = true;
+#pragma GCC unroll 4
+    for (int i = 0; i < N; ++i) up = up && cur.b[i + 1] - cur.b[i] > 4.0 * eb;
+    if (up) return Verdict::none;
+  }
+  if (!(P.p[0] > 0.0)) return Verdict::unknown;
+  cur.sa = 0.0;
+  cur.sb = 1.0;
+  cur.depth = 0;
+  Span<N> pending[kMaxDepth];  // right halves still to visit
+  int npending = 0;
+  for (;;) {
+    const double* b = cur.b;
+    double bmin = b[0];
+#pragma GCC unroll 4
+    for (int i = 1; i <= N; ++i) bmin = std::min(bmin, b[i]);
+    bool done = bmin > 2.0 * eb;  // f > 0 here
+    if (!done) {
+      // f at the left end: c_0 itself on the first span.
+      const bool left_ok = cur.sa == 0.0 ? P.p[0] > M : b[0] > 2.0 * eb;
+      // Signs of the differences (f') and second differences (f'').
+      int dneg = 0, epos = 0, eneg = 0;
+      bool qconc = true;  // differences + ... + - ... -, all clear
+      double d[N];
+#pragma GCC unroll 4
+      for (int i = 0; i < N; ++i) {
+        d[i] = b[i + 1] - b[i];
+        if (d[i] > 4.0 * eb) {
+          qconc = qconc && dneg == 0;
+        } else if (d[i] < -4.0 * eb) {
+          ++dneg;
+        } else {
+          qconc = false;
+        }
+      }
+#pragma GCC unroll 4
+      for (int i = 0; i + 1 < N; ++i) {
+        const double e = d[i + 1] - d[i];
+        epos += e > 8.0 * eb;
+        eneg += e < -8.0 * eb;
+      }
+      const bool convex = epos == N - 1, concave = eneg == N - 1;
+      const bool falling = dneg == N;  // f decreasing on the span
+      const double ta = T * cur.sa, tb = T * cur.sb;  // rounded ends
+      // Any x <= cap has x- < T sb (cap = T on the last span, exact).
+      const double cap = cur.sb == 1.0 ? T : tb;
+      if (falling || ((qconc || concave) && left_ok)) {
+        // Decreasing, or rising then falling: f is above the lower of its
+        // end values up to any point.
+        if (b[N] < -2.0 * eb) return contact_in<N>(P, Q, ta, tb, b[0], b[N], cap, false, out);
+        done = b[N] > 2.0 * eb;
+      } else if (convex) {
+        // One minimum. Find it (Newton on f'), then either bound f below
+        // by the tangent there, or find the contact before it, where
+        // f' < 0. The probes stay inside [T sa, T sb].
+        const double lo = cur.sa == 0.0 ? 0.0 : next_up(ta);
+        const double hi = cur.sb == 1.0 ? T : next_down(tb);
+        if (!(lo < hi)) return Verdict::unknown;
+        const double w = (hi - lo) * (1.0 + 0x1p-40) + 0x1p-50 * T;  // >= any distance inside
+        double x = lo + (hi - lo) * (d[0] / (d[0] - d[N - 1]));
+        if (!(x >= lo && x <= hi)) x = lo + 0.5 * (hi - lo);
+        Sample s = sample<N>(P, x);
+        double lower = 0.0, upper = 0.0;
+        for (int it = 0;; ++it) {
+          // f(t) >= f(x) + f'(x) (t - x) (convexity); the slack covers the
+          // rounding of this bound.
+          const double slope = (std::fabs(s.f1) + s.ef1 + kTiny) * w;
+          lower = s.f - (s.ef + kTiny) - slope - 0x1p-50 * (std::fabs(s.f) + slope);
+          upper = s.f + s.ef + kTiny;
+          if (lower > M || upper < -M || it == 8 || !(s.f2 > 0.0)) break;
+          const double xn = std::clamp(x - s.f1 / s.f2, lo, hi);
+          if (xn == x) break;
+          x = xn;
+          s = sample<N>(P, x);
+        }
+        if (upper < -M) return contact_in<N>(P, Q, ta, x, b[0], s.f, std::min(cap, x), true, out);
+        done = lower > M;
+      }
+    }
+    if (done) {
+      if (npending == 0) return Verdict::none;
+      cur = pending[--npending];
+      continue;
+    }
+    if (cur.depth == kMaxDepth) return Verdict::unknown;
+    Span<N>& right = pending[npending++];
+    double left[N + 1];
+    split_half<N>(cur.b, left, right.b);
+    const double mid = 0.5 * (cur.sa + cur.sb);
+    right.sa = mid;
+    right.sb = cur.sb;
+    right.depth = cur.depth + 1;
+#pragma GCC unroll 5
+    for (int i = 0; i <= N; ++i) cur.b[i] = left[i];
+    cur.sb = mid;
+    cur.depth += 1;
+  }
+}
+
+// Exact degree N: the fast paths, else the full method.
+// Is |c| zero or in [2^-400, 2^400] (on the bit patterns of |c|, which
+// are monotone in the value; NaN and infinity lie above every finite
+// value)?
+inline bool tame(double c) {
+  constexpr std::uint64_t lo = std::bit_cast<std::uint64_t>(0x1p-400);
+  constexpr std::uint64_t hi = std::bit_cast<std::uint64_t>(0x1p+400);
+  const std::uint64_t a = bits(c) & ~(std::uint64_t{1} << 63);
+  return (a == 0) | (a - lo <= hi - lo);
+}
+
+template <int N>
+bool all_tame(const double* p) {
+  bool ok = true;
+  for (int k = 0; k <= N; ++k) ok = ok && tame(p[k]);
+  return ok;
+}
+
+// Exact degree N: the fast paths, else (or if they cannot decide) steps
+// 1-5.
+template <int N>
+double solve_n(const double* p, const double* q, double Q, double T) {
+  if constexpr (N >= 2) {
+    if (Q > 0.0) {
+      const Poly<N> P(p, typename Poly<N>::ValuesOnly{});
+      double out = kInf;
+      Verdict v;
+      if constexpr (N == 2) {
+        v = fast_quadratic(P, q, Q, T, out);
+      } else {
+        v = fast_contact<N>(P, q, Q, T, out);
+      }
+      if (v == Verdict::none) return kInf;
+      if (v == Verdict::contact) {
+        // A proven contact is also the answer of steps 1-5 if they are as
+        // exact as they claim. That holds unless products of coefficients
+        // under- or overflow (as in solve_quadratic for the roots of f''
+        // when the coefficients span more than ~2^500, possible only for
+        // absurd time scales): then steps 1-5 decide, as ever. (A proof of
+        // no contact needs no such care: wherever steps 1-5 look, f > 0.)
+        if (all_tame<N>(p)) return out;
+      }
+    }
+  } else {
+    (void)q;
+    (void)Q;
+  }
+  return first_contact_n<N>(Poly<N>(p), p, T);
+}
+
 // Fujiwara's bound on the moduli of the roots of f (and so of f', f'' by
 // Gauss-Lucas), enlarged a little against rounding: no piece boundary or
 // contact lies beyond it, so it can replace a longer or infinite window.
@@ -484,18 +989,15 @@ double root_bound(const double* p, int n) {
   return std::isfinite(r) ? r : std::numeric_limits<double>::max();
 }
 
-}  // namespace
-
-double first_contact(const double* c, int degree, double t_max) {
+// first_contact in general.
+double first_contact_any(const double* c, int degree, double t_max) {
   if (c == nullptr || degree < 0 || degree > 4 || !(t_max >= 0.0)) return kInf;
   double p[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
   int n = 0;
-  double big = 0.0;
   for (int k = 0; k <= degree; ++k) {
     if (!std::isfinite(c[k])) return kInf;
     p[k] = c[k];
     if (c[k] != 0.0) n = k;
-    big = std::max(big, std::fabs(c[k]));
   }
   if (n == 0) return kInf;                        // constant: never closing
   if (p[0] <= 0.0 && p[1] < 0.0) return 0.0;      // touching and closing now
@@ -507,13 +1009,17 @@ double first_contact(const double* c, int degree, double t_max) {
   // terms can remove from f(0) at most.
   double T = t_max + 0.0;  // turns -0 into +0
   double top = 0.0, drop = 0.0;
+  double q[5] = {0.0, 0.0, 0.0, 0.0, 0.0};  // the terms c_k T^k
+  double tk = 1.0;                             // T^n
   const auto measure = [&] {
-    double tk = 1.0;
+    tk = 1.0;
     top = std::fabs(p[0]);
     drop = 0.0;
+    q[0] = p[0];
     for (int k = 1; k <= n; ++k) {
       tk *= T;
       const double term = p[k] * tk;
+      q[k] = term;
       top = std::max(top, std::fabs(term));
       if (term < 0.0) drop -= term;
     }
@@ -560,17 +1066,70 @@ double first_contact(const double* c, int degree, double t_max) {
   // covers the rounding of `drop` (a few ulps).
   if (p[0] > drop * (1.0 + 1e-14)) return kInf;
 
+  // The fast paths' error bounds need the powers of T to be normal
+  // numbers (an underflowing T^k times a huge c_k would be far off).
+  double Q = 0.0;
+  if (tk >= 0x1p-1000) {
+    for (int k = 0; k <= n; ++k) Q += std::fabs(q[k]);
+  }
   double s = kInf;
   switch (n) {
-    case 1: s = first_contact_n<1>(p, T); break;
-    case 2: s = first_contact_n<2>(p, T); break;
-    case 3: s = first_contact_n<3>(p, T); break;
-    default: s = first_contact_n<4>(p, T); break;
+    case 1: s = solve_n<1>(p, q, Q, T); break;
+    case 2: s = solve_n<2>(p, q, Q, T); break;
+    case 3: s = solve_n<3>(p, q, Q, T); break;
+    default: s = solve_n<4>(p, q, Q, T); break;
   }
   if (m == 0) return s;
   s = std::ldexp(s, m);
   // Apart at t = 0 means a contact strictly later, even if it underflows.
   return apart && s == 0.0 ? std::numeric_limits<double>::denorm_min() : s;
+}
+
+// The same for degree exactly N (c[N] != 0) where no rescaling is
+// needed, the usual case, with the loops unrolled; it hands everything
+// else to first_contact_any, which then gives the same results.
+template <int N>
+double first_contact_fixed(const double* c, double t_max) {
+  double p[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+  bool finite = true, falls = false;
+#pragma GCC unroll 5
+  for (int k = 0; k <= N; ++k) {
+    p[k] = c[k];
+    finite = finite && std::isfinite(p[k]);
+    if (k > 0) falls = falls || p[k] < 0.0;
+  }
+  if (!finite) return kInf;
+  if (p[0] <= 0.0 && p[1] < 0.0) return 0.0;
+  if (!falls) return kInf;
+  const double T = t_max + 0.0;
+  double q[5] = {p[0], 0.0, 0.0, 0.0, 0.0};
+  double tk = 1.0, top = std::fabs(p[0]), drop = 0.0;
+#pragma GCC unroll 4
+  for (int k = 1; k <= N; ++k) {
+    tk *= T;
+    const double term = p[k] * tk;
+    q[k] = term;
+    top = std::max(top, std::fabs(term));
+    if (term < 0.0) drop -= term;
+  }
+  if (!(top >= 0x1p-400 && top <= 0x1p+400) || T == 0.0) return first_contact_any(c, N, t_max);
+  if (p[0] > drop * (1.0 + 1e-14)) return kInf;
+  double Q = 0.0;
+  if (tk >= 0x1p-1000) {
+#pragma GCC unroll 5
+    for (int k = 0; k <= N; ++k) Q += std::fabs(q[k]);
+  }
+  return solve_n<N>(p, q, Q, T);
+}
+
+}  // namespace
+
+double first_contact(const double* c, int degree, double t_max) {
+  if (c != nullptr && t_max >= 0.0) {
+    if (degree == 4 && c[4] != 0.0) return first_contact_fixed<4>(c, t_max);
+    if (degree == 2 && c[2] != 0.0) return first_contact_fixed<2>(c, t_max);
+  }
+  return first_contact_any(c, degree, t_max);
 }
 
 double first_contact_quadratic(double c, double b, double a) {
