@@ -498,19 +498,29 @@ double first_contact_n(const Poly<N>& P, const double* c, double t_max) {
 //   that method returns x: it returns only doubles at which f <= 0, so
 //   none before x; x lies in a piece it takes as decreasing, with f <= 0
 //   at its end, and every double of that piece has f > 0 up to x- and
-//   f < 0 from x on, so its bracket closes on (x-, x).
+//   f < 0 from x on, so its bracket closes on (x-, x). (This needs the
+//   method above to be as exact as it claims, which it is unless products
+//   of the coefficients under- or overflow: see all_tame.)
 // The proofs use the Bernstein form of f on [0, T] and on halves of it
 // (de Casteljau): its coefficients bound f, their differences bound f'
 // and their second differences f'', with rounding errors bounded
-// rigorously in units of Q = sum |c_k| T^k. Whenever a proof fails, the
-// method above decides.
+// rigorously in units of Q = sum |c_k| T^k. f > 0 up to x- follows from
+// the spans before x's being clear of zero and from the shape of f on
+// x's span: decreasing, rising then falling, or convex with f'(x) < 0.
+// Near the root, f is evaluated with compensated Horner and the values
+// at neighbouring doubles follow from Taylor bounds. Degree 2 has closed
+// forms instead (fast_quadratic). Whenever a proof fails, the method
+// above decides.
 
 // Bound on the rounding error of any Bernstein coefficient (and so of
 // their differences' parts), in units of Q: the conversion costs about
 // 13 u and every halving level 4 u (four averages); kMaxDepth levels stay
 // far below 2^-44.
 constexpr double kErrB = 0x1p-44;
-// The margin by which f must clear zero at a contact's end points.
+// The margin by which f must clear zero at a contact's end points, in
+// units of Q: far above the evaluation errors of the method above (about
+// 2^-100 Q) and far below the values of f at the doubles next to a root
+// (about 2^-52 |f'| t), so that it rarely stops a proof.
 constexpr double kMargin = 0x1p-90;
 constexpr int kMaxDepth = 6;
 // Slack for underflow in the error bounds of Horner's rule.
