@@ -43,19 +43,9 @@ void add(Scenario& s, const std::string& id, Vec2 p) {
   s.start.push_back(st);
 }
 
-Scenario break_scene(const char* game) {
-  Scenario s = pool_scene();
-  add(s, "cue", s.table.head_spot);
-  for (const RackedBall& b : make_rack(game, s.table, kR, 1)) add(s, b.id, b.position);
-  CueSpec cue;
-  cue.ball = 0;
-  cue.strike.speed = 7.5;
-  s.cue = cue;
-  return s;
-}
-
 void BM_Break(benchmark::State& state) {
-  const Scenario s = break_scene(state.range(0) == 8 ? "eight_ball" : "nine_ball");
+  const Scenario s =
+      make_break_scenario(state.range(0) == 8 ? "eight_ball" : "nine_ball", "9ft", 1, 7.5);
   std::uint64_t events = 0;
   for (auto _ : state) {
     Simulation sim(s);

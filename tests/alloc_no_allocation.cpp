@@ -26,27 +26,7 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 using namespace breakshot;
 
 TEST(NoAllocation, PoolBreakAfterSetUp) {
-  Scenario s;
-  s.physics.model = Model::pool;
-  s.physics.ball_ball_restitution = 0.95;
-  s.physics.ball_ball_friction_fit = true;
-  s.physics.collapse_speed = kPoolCollapseSpeed;
-  s.table = make_pool_table("9ft");
-  const double r = 0.028575;
-  s.balls.push_back({"cue", r, 0.17, 0.75});
-  BallState cue;
-  cue.position = s.table.head_spot;
-  s.start.push_back(cue);
-  for (const RackedBall& b : make_rack("nine_ball", s.table, r, 3)) {
-    s.balls.push_back({b.id, r, 0.17, 0.75});
-    BallState st;
-    st.position = b.position;
-    s.start.push_back(st);
-  }
-  CueSpec c;
-  c.ball = 0;
-  c.strike.speed = 7.0;
-  s.cue = c;
+  Scenario s = make_break_scenario("nine_ball", "9ft", 3, 7.0);
   Simulation sim(s);
   const long before = g_allocations.load();
   sim.advance_to_rest();

@@ -40,34 +40,17 @@ bool on_table(const Table& t, const BallState& b) {
 }  // namespace
 
 TEST(PoolProperties, HundredThousandRandomShotsOnARackedTable) {
-  Scenario base;
-  base.physics.model = Model::pool;
-  base.physics.ball_ball_restitution = 0.95;
-  base.physics.ball_ball_friction_fit = true;
-  base.physics.collapse_speed = kPoolCollapseSpeed;
-  base.table = make_pool_table("9ft");
-  base.until.rest = true;
-  base.max_events = 5000;
   std::mt19937_64 g(7);
   const int shots = 100000;
   std::uint64_t events = 0;
   int pocketed = 0;
   for (int k = 0; k < shots; ++k) {
-    Scenario s = base;
     // A rack (new seed each time) and the cue ball anywhere behind the
     // head string, shot in any direction with any spin.
-    BallState cue;
-    cue.position = {kR + 0.01 + (s.table.length / 4 - kR - 0.01) * unit(g),
-                    kR + 0.01 + (s.table.width - 2 * kR - 0.02) * unit(g)};
-    s.balls.push_back({"cue", kR, 0.17, CushionParams{}.restitution});
-    s.start.push_back(cue);
-    const char* game = (k % 2) ? "nine_ball" : "eight_ball";
-    for (const RackedBall& b : make_rack(game, s.table, kR, g())) {
-      s.balls.push_back({b.id, kR, 0.17, CushionParams{}.restitution});
-      BallState st;
-      st.position = b.position;
-      s.start.push_back(st);
-    }
+    Scenario s = make_break_scenario((k % 2) ? "nine_ball" : "eight_ball", "9ft", g(), 1.0);
+    s.max_events = 5000;
+    s.start[0].position = {kR + 0.01 + (s.table.length / 4 - kR - 0.01) * unit(g),
+                           kR + 0.01 + (s.table.width - 2 * kR - 0.02) * unit(g)};
     CueSpec c;
     c.ball = 0;
     c.strike.speed = 0.5 + 8.0 * unit(g);

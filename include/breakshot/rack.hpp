@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "breakshot/scenario.hpp"
 #include "breakshot/table.hpp"
 
 namespace breakshot {
@@ -23,5 +24,13 @@ struct RackedBall {
 /// std::invalid_argument for an unknown game.
 std::vector<RackedBall> make_rack(const std::string& game, const Table& table, double radius,
                                   std::uint64_t seed);
+
+/// A break as the pool examples describe it: the pool model with its
+/// defaults (docs/scenario.md), a `size` table, the rack of `game` from
+/// `seed`, a cue ball "cue" on the head spot (first in the ball list), and
+/// a level centre-ball strike at `cue_speed` m/s toward the apex, run to
+/// rest. Tests, benchmarks and programs change what they need from there.
+Scenario make_break_scenario(const std::string& game, const std::string& size,
+                             std::uint64_t seed, double cue_speed);
 
 }  // namespace breakshot

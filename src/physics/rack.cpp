@@ -158,4 +158,33 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
   return rack;
 }
 
+Scenario make_break_scenario(const std::string& game, const std::string& size,
+                             std::uint64_t seed, double cue_speed) {
+  constexpr double kRadius = 0.028575;
+  constexpr double kMass = 0.170;
+  Scenario s;
+  s.physics.model = Model::pool;
+  s.physics.ball_ball_restitution = 0.95;
+  s.physics.ball_ball_friction_fit = true;
+  s.physics.collapse_speed = kPoolCollapseSpeed;
+  s.table = make_pool_table(size);
+  const double e = CushionParams{}.restitution;
+  BallState cue;
+  cue.position = s.table.head_spot;
+  s.balls.push_back({"cue", kRadius, kMass, e});
+  s.start.push_back(cue);
+  for (const RackedBall& b : make_rack(game, s.table, kRadius, seed)) {
+    BallState st;
+    st.position = b.position;
+    s.balls.push_back({b.id, kRadius, kMass, e});
+    s.start.push_back(st);
+  }
+  CueSpec strike_spec;
+  strike_spec.ball = 0;
+  strike_spec.strike.speed = cue_speed;
+  s.cue = strike_spec;
+  s.until.rest = true;
+  return s;
+}
+
 }  // namespace breakshot
