@@ -101,33 +101,18 @@ TEST(PoolProperties, HundredThousandRandomShotsOnARackedTable) {
 // broken hard and soft. No overlap, no repeated collision stalls the run.
 TEST(PoolProperties, FrozenRackBreaks) {
   for (double speed : {0.5, 3.0, 9.0}) {
-    Scenario s;
-    s.physics.model = Model::pool;
-    s.physics.ball_ball_restitution = 0.95;
-    s.physics.ball_ball_friction_fit = true;
-    s.physics.collapse_speed = kPoolCollapseSpeed;
-    s.table = make_pool_table("9ft");
-    s.until.rest = true;
+    // The regulation break, with the rack pushed together until every
+    // ball touches its neighbours.
+    Scenario s = make_break_scenario("eight_ball", "9ft", 0, speed);
     s.max_events = 100000;
-    s.balls.push_back({"cue", kR, 0.17, 0.75});
-    BallState cue;
-    cue.position = s.table.head_spot;
-    s.start.push_back(cue);
     const double d = 2 * kR;  // touching
-    int id = 1;
+    std::size_t ball = 1;
     for (int row = 0; row < 5; ++row) {
       for (int k = 0; k <= row; ++k) {
-        s.balls.push_back({std::to_string(id++), kR, 0.17, 0.75});
-        BallState st;
-        st.position = {s.table.foot_spot.x + row * d * std::sqrt(3.0) / 2,
-                       s.table.foot_spot.y + (k - row / 2.0) * d};
-        s.start.push_back(st);
+        s.start[ball++].position = {s.table.foot_spot.x + row * d * std::sqrt(3.0) / 2,
+                                    s.table.foot_spot.y + (k - row / 2.0) * d};
       }
     }
-    CueSpec c;
-    c.ball = 0;
-    c.strike.speed = speed;
-    s.cue = c;
     Simulation sim(s);
     int ball_ball = 0;
     while (!sim.at_rest()) {
