@@ -128,6 +128,7 @@ class Simulation {
   void predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
   void predict_accelerating_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
   void predict_walls(const Kinematics& ki, Prediction& best) const;
+  void predict_wall(const Kinematics& ki, std::size_t w, double window, Prediction& best) const;
   void predict_cell(std::int32_t i, Prediction& best) const;
   void predict_pockets(const Kinematics& ki, Prediction& best) const;
   void heap_fix(std::int32_t i);
@@ -176,6 +177,11 @@ class Simulation {
     Vec2 lo, hi;
   };
   std::vector<Box> wall_box_;  // bounds of each wall of the table
+  struct WallRun {
+    Box box;  // bounds of walls [begin, end)
+    std::uint32_t begin = 0, end = 0;
+  };
+  std::vector<WallRun> wall_runs_;
   // Pairs with a restitution of their own: sorted keys a * n + b (a < b).
   std::vector<std::uint64_t> pair_keys_;
   std::vector<double> pair_values_;

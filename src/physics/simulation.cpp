@@ -85,6 +85,29 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
     b.hi += Vec2{margin, margin};
     wall_box_.push_back(b);
   }
+  // Runs of consecutive walls (tables list them around the boundary, so
+  // a run is a pocket's jaw pieces or a stretch of a polygon) under one
+  // box: a ball far from a run skips all its walls with one test.
+  Box all{{kInf, kInf}, {-kInf, -kInf}};
+  for (const Box& b : wall_box_) {
+    all.lo = {std::min(all.lo.x, b.lo.x), std::min(all.lo.y, b.lo.y)};
+    all.hi = {std::max(all.hi.x, b.hi.x), std::max(all.hi.y, b.hi.y)};
+  }
+  const double run_size = norm(all.hi - all.lo) / 16.0;
+  for (std::size_t w = 0; w < wall_box_.size(); ++w) {
+    const Box& b = wall_box_[w];
+    if (!wall_runs_.empty()) {
+      WallRun& run = wall_runs_.back();
+      const Box merged{{std::min(run.box.lo.x, b.lo.x), std::min(run.box.lo.y, b.lo.y)},
+                       {std::max(run.box.hi.x, b.hi.x), std::max(run.box.hi.y, b.hi.y)}};
+      if (norm(merged.hi - merged.lo) <= run_size) {
+        run.box = merged;
+        run.end = static_cast<std::uint32_t>(w + 1);
+        continue;
+      }
+    }
+    wall_runs_.push_back({b, static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(w + 1)});
+  }
 
   // Pair restitutions, sorted for binary search at collision time.
   std::vector<std::pair<std::uint64_t, double>> pairs;
@@ -352,6 +375,16 @@ void consider(P& best, double t, K kind, std::int32_t other, std::uint64_t count
   }
 }
 
+// The part of a window worth searching: a contact later than the best
+// candidate so far can never be taken, so the search stops a little past
+// it (the slack covers the rounding of t + tau; anything found beyond the
+// best loses in `consider`).
+template <class P>
+double within_best(const P& best, double t, double window) {
+  const double left = best.time - t;
+  return std::min(window, left + left * 1e-12 + best.time * 1e-15);
+}
+
 }  // namespace
 
 Simulation::Kinematics Simulation::kinematics(std::int32_t i) const {
@@ -428,7 +461,8 @@ void Simulation::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
     tau = first_contact_quadratic(dist2 - sigma * sigma, b, norm2(dv));
     if (!(tau <= std::min(ki.t_end, B.t_end) - t)) return;
   } else {
-    const double window = std::max(0.0, std::min(ki.t_end, B.t_end) - t);
+    const double window =
+        within_best(best, t, std::max(0.0, std::min(ki.t_end, B.t_end) - t));
     // Cheap rejection: the gap can close by at most |dv| w + |da| w^2 / 2.
     const double gap = std::sqrt(dist2) - sigma;
     const double w = window;
@@ -445,70 +479,82 @@ void Simulation::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
 void Simulation::predict_walls(const Kinematics& ki, Prediction& best) const {
   if (ki.still) return;
   const double t = origin_;
-  const double window = std::max(0.0, ki.t_end - t);
+  const double r = ki.radius;
+  for (const WallRun& run : wall_runs_) {
+    const Box& rb = run.box;
+    if (rb.lo.x - ki.box_hi.x > r || ki.box_lo.x - rb.hi.x > r || rb.lo.y - ki.box_hi.y > r ||
+        ki.box_lo.y - rb.hi.y > r) {
+      continue;  // the ball's path never comes within reach of these walls
+    }
+    for (std::size_t w = run.begin; w < run.end; ++w) {
+      predict_wall(ki, w, within_best(best, t, std::max(0.0, ki.t_end - t)), best);
+    }
+  }
+}
+
+void Simulation::predict_wall(const Kinematics& ki, std::size_t w, double window,
+                              Prediction& best) const {
+  const double t = origin_;
   const Vec2 p = ki.p;
   const Vec2 v = ki.v;
   const Vec2 a = ki.a;
   const double r = ki.radius;
-  const auto& walls = scenario_.table.walls;
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    const Wall& wall = walls[w];
-    const Box& wb = wall_box_[w];
-    if (wb.lo.x - ki.box_hi.x > r || ki.box_lo.x - wb.hi.x > r || wb.lo.y - ki.box_hi.y > r ||
-        ki.box_lo.y - wb.hi.y > r) {
-      continue;  // the ball's path never comes within reach of this wall
-    }
-    double tau = kInf;
-    if (wall.kind == WallKind::segment) {
-      const Vec2 n = wall.normal;
-      const double c1 = dot(n, v);
-      const double c2 = 0.5 * dot(n, a);
-      if (c2 == 0.0 && c1 >= 0.0) continue;  // moving away or along
-      const double c0 = dot(n, p - wall.a) - r;
-      if (c2 == 0.0) {
-        tau = c0 <= 0.0 ? 0.0 : -c0 / c1;
-      } else {
-        const double c[3] = {c0, c1, c2};
-        tau = first_contact(c, 2, window);
-      }
-      if (!(tau <= window)) continue;
-      // Is the contact on the segment itself, not on its line's extension?
-      // In a convex table the earliest crossing of any wall's line always
-      // is, and the later ones never win, so there is nothing to check.
-      if (convex_) {
-        consider(best, t + tau, Kind::wall, static_cast<std::int32_t>(w), 0);
-        continue;
-      }
-      const Vec2 q = p + v * tau + a * (0.5 * tau * tau);
-      const Vec2 ab = wall.b - wall.a;
-      const double s = dot(q - wall.a, ab) / norm2(ab);
-      if (s < -kSegmentSlack || s > 1.0 + kSegmentSlack) continue;
-    } else {
-      // A corner is a point; an arc is a circle of its radius, hit from
-      // outside. Either way: the centre's distance to wall.a reaches
-      // r (+ the arc's radius).
-      const double reach = r + (wall.kind == WallKind::arc ? wall.radius : 0.0);
-      const Vec2 d = p - wall.a;
-      if (a.x == 0.0 && a.y == 0.0) {
-        const double b = dot(d, v);
-        if (b >= 0.0) continue;
-        tau = first_contact_quadratic(norm2(d) - reach * reach, b, norm2(v));
-      } else {
-        const double c[5] = {norm2(d) - reach * reach, 2.0 * dot(d, v), norm2(v) + dot(d, a),
-                             dot(v, a), 0.25 * norm2(a)};
-        tau = first_contact(c, 4, window);
-      }
-      if (!(tau <= window)) continue;
-      if (wall.kind == WallKind::arc) {
-        // Only the part of the circle between the directions b and normal
-        // (counter-clockwise) is there.
-        const Vec2 q = p + v * tau + a * (0.5 * tau * tau) - wall.a;
-        const double slack = kSegmentSlack * norm(q);
-        if (cross(wall.b, q) < -slack || cross(q, wall.normal) < -slack) continue;
-      }
-    }
-    consider(best, t + tau, Kind::wall, static_cast<std::int32_t>(w), 0);
+  const Wall& wall = scenario_.table.walls[w];
+  const Box& wb = wall_box_[w];
+  if (wb.lo.x - ki.box_hi.x > r || ki.box_lo.x - wb.hi.x > r || wb.lo.y - ki.box_hi.y > r ||
+      ki.box_lo.y - wb.hi.y > r) {
+    return;  // the ball's path never comes within reach of this wall
   }
+  double tau = kInf;
+  if (wall.kind == WallKind::segment) {
+    const Vec2 n = wall.normal;
+    const double c1 = dot(n, v);
+    const double c2 = 0.5 * dot(n, a);
+    if (c2 == 0.0 && c1 >= 0.0) return;  // moving away or along
+    const double c0 = dot(n, p - wall.a) - r;
+    if (c2 == 0.0) {
+      tau = c0 <= 0.0 ? 0.0 : -c0 / c1;
+    } else {
+      const double c[3] = {c0, c1, c2};
+      tau = first_contact(c, 2, window);
+    }
+    if (!(tau <= window)) return;
+    // Is the contact on the segment itself, not on its line's extension?
+    // In a convex table the earliest crossing of any wall's line always
+    // is, and the later ones never win, so there is nothing to check.
+    if (convex_) {
+      consider(best, t + tau, Kind::wall, static_cast<std::int32_t>(w), 0);
+      return;
+    }
+    const Vec2 q = p + v * tau + a * (0.5 * tau * tau);
+    const Vec2 ab = wall.b - wall.a;
+    const double s = dot(q - wall.a, ab) / norm2(ab);
+    if (s < -kSegmentSlack || s > 1.0 + kSegmentSlack) return;
+  } else {
+    // A corner is a point; an arc is a circle of its radius, hit from
+    // outside. Either way: the centre's distance to wall.a reaches
+    // r (+ the arc's radius).
+    const double reach = r + (wall.kind == WallKind::arc ? wall.radius : 0.0);
+    const Vec2 d = p - wall.a;
+    if (a.x == 0.0 && a.y == 0.0) {
+      const double b = dot(d, v);
+      if (b >= 0.0) return;
+      tau = first_contact_quadratic(norm2(d) - reach * reach, b, norm2(v));
+    } else {
+      const double c[5] = {norm2(d) - reach * reach, 2.0 * dot(d, v), norm2(v) + dot(d, a),
+                           dot(v, a), 0.25 * norm2(a)};
+      tau = first_contact(c, 4, window);
+    }
+    if (!(tau <= window)) return;
+    if (wall.kind == WallKind::arc) {
+      // Only the part of the circle between the directions b and normal
+      // (counter-clockwise) is there.
+      const Vec2 q = p + v * tau + a * (0.5 * tau * tau) - wall.a;
+      const double slack = kSegmentSlack * norm(q);
+      if (cross(wall.b, q) < -slack || cross(q, wall.normal) < -slack) return;
+    }
+  }
+  consider(best, t + tau, Kind::wall, static_cast<std::int32_t>(w), 0);
 }
 
 // A ball falls into a pocket when its centre comes within the pocket's
@@ -516,7 +562,7 @@ void Simulation::predict_walls(const Kinematics& ki, Prediction& best) const {
 void Simulation::predict_pockets(const Kinematics& ki, Prediction& best) const {
   if (ki.still) return;
   const double t = origin_;
-  const double window = std::max(0.0, ki.t_end - t);
+  const double window = within_best(best, t, std::max(0.0, ki.t_end - t));
   const auto& pockets = scenario_.table.pockets;
   for (std::size_t k = 0; k < pockets.size(); ++k) {
     const Vec2 centre = pockets[k].centre;
@@ -613,6 +659,13 @@ void Simulation::predict(std::int32_t i) {
     return;
   }
   const Kinematics ki = kinematics(i);
+
+  // breaks ties by kind and index), but each search stops at the best
+  // candidate so far, so the cheap ones go first.
+  const Trajectory& tr = traj_[ui];
+  if (!resting(tr.state) && tr.t_end < kInf) {
+    consider(best, tr.t_end, Kind::stop, -1, 0);
+  }
   if (use_cells_) {
     const std::int32_t cell = ball_cell_[ui];
     const std::int32_t cx = cell % grid_nx_;
@@ -626,10 +679,6 @@ void Simulation::predict(std::int32_t i) {
   }
   predict_walls(ki, best);
   if (!scenario_.table.pockets.empty()) predict_pockets(ki, best);
-  const Trajectory& tr = traj_[ui];
-  if (!resting(tr.state) && tr.t_end < kInf) {
-    consider(best, tr.t_end, Kind::stop, -1, 0);
-  }
   event_[ui] = best;
   finish_prediction(i);
 }
