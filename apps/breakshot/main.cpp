@@ -1,13 +1,24 @@
-// The breakshot command: simulate a scenario file and write the result.
+// The breakshot command: simulate a scenario file and write the result;
+// play matches between computer players; replay game records.
 //
 //   breakshot simulate FILE|- [-o PATH] [--plot PREFIX]
+//   breakshot match --game eight_ball|nine_ball --players A,B --games N
+//                   --seed S --noise LEVEL [--table 7ft|8ft|9ft] [--records DIR]
+//   breakshot replay RECORD|-
 //
-// Exit status (shared/contract/scenario-format.md): 0 the run is
-// complete, 2 the scenario is invalid (nothing simulated), 3 max_events
-// stopped the run (the partial result is written), 1 anything else.
+// Exit status of simulate (shared/contract/scenario-format.md): 0 the run
+// is complete, 2 the scenario is invalid (nothing simulated), 3
+// max_events stopped the run (the partial result is written), 1 anything
+// else. match: 0 played (the summary JSON on standard output), 2 a bad
+// argument (named on standard error), 1 anything else. replay: 0 the
+// record replays identical, 4 it differs (what and where on standard
+// output), 2 the record cannot be read or is invalid (standard error
+// names the JSON path), 1 anything else.
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -17,13 +28,21 @@
 #include <iterator>
 #include <new>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <system_error>
 #include <variant>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "breakshot/game.hpp"
 #include "breakshot/lab.hpp"
+#include "breakshot/match.hpp"
+#include "breakshot/noise.hpp"
+#include "breakshot/player.hpp"
+#include "breakshot/record.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
 
@@ -39,6 +58,7 @@ constexpr int kExitOk = 0;
 constexpr int kExitOther = 1;
 constexpr int kExitInvalid = 2;
 constexpr int kExitEventLimit = 3;
+constexpr int kExitReplayDiffers = 4;
 
 /// Thrown for the failures that end the command with exit status 1; the
 /// message is what the user sees after "breakshot: ".
@@ -138,6 +158,127 @@ int run_simulate(const SimulateOptions& opt) {
   return result.complete ? kExitOk : kExitEventLimit;
 }
 
+/// A bad command-line value: exit status 2, the message after "breakshot: ".
+struct BadArgument {
+  std::string message;
+};
+
+/// Options of `match` as typed: numbers and names are checked here, not
+/// by CLI11, so that a bad value is exit status 2 with a message naming
+/// the option (CLI11's own errors are usage errors, status 1).
+struct MatchArgs {
+  std::string game;
+  std::string players;
+  std::string games;
+  std::string seed;
+  std::string noise;
+  std::string table = "9ft";
+  std::string records;
+};
+
+template <class T>
+bool parse_whole(const std::string& text, T& out) {
+  const char* last = text.data() + text.size();
+  const auto r = std::from_chars(text.data(), last, out);
+  return !text.empty() && r.ec == std::errc() && r.ptr == last;
+}
+
+bs::MatchOptions match_options(const MatchArgs& a) {
+  bs::MatchOptions opt;
+  const auto game = bs::parse_game_type(a.game);
+  if (!game) throw BadArgument{"--game: unknown game '" + a.game + "' (eight_ball or nine_ball)"};
+  opt.game = *game;
+
+  const std::size_t comma = a.players.find(',');
+  if (comma == std::string::npos || a.players.find(',', comma + 1) != std::string::npos ||
+      comma == 0 || comma + 1 == a.players.size()) {
+    throw BadArgument{"--players: expected two player names separated by a comma (like "
+                      "baseline,baseline), not '" + a.players + "'"};
+  }
+  opt.players = {a.players.substr(0, comma), a.players.substr(comma + 1)};
+  for (const std::string& name : opt.players) {
+    try {
+      (void)bs::make_player(name);
+    } catch (const std::invalid_argument& e) {
+      throw BadArgument{"--players: " + std::string(e.what())};
+    }
+  }
+
+  if (!parse_whole(a.games, opt.games) || opt.games < 1) {
+    throw BadArgument{"--games: expected a whole number of games >= 1, not '" + a.games + "'"};
+  }
+  if (!parse_whole(a.seed, opt.seed)) {
+    throw BadArgument{"--seed: expected a whole number in [0, 2^64), not '" + a.seed + "'"};
+  }
+  try {
+    opt.noise = bs::parse_noise(a.noise);
+  } catch (const std::invalid_argument& e) {
+    std::string_view why = e.what();
+    if (why.substr(0, 7) == "noise: ") why.remove_prefix(7);
+    throw BadArgument{"--noise: " + std::string(why)};
+  }
+  if (a.table != "7ft" && a.table != "8ft" && a.table != "9ft") {
+    throw BadArgument{"--table: unknown table size '" + a.table + "' (7ft, 8ft or 9ft)"};
+  }
+  opt.table_size = a.table;
+  opt.records_dir = a.records;
+  return opt;
+}
+
+int run_match(const MatchArgs& args) {
+  bs::MatchOptions opt;
+  try {
+    opt = match_options(args);
+  } catch (const BadArgument& bad) {
+    std::cerr << "breakshot: " << bad.message << '\n';
+    return kExitInvalid;
+  }
+  try {
+    write_output("", bs::match_summary_json(bs::play_match(opt)));
+  } catch (const std::runtime_error& e) {
+    // A record that cannot be written: the message names the path.
+    throw Failure{e.what()};
+  }
+  return kExitOk;
+}
+
+int run_replay(const std::string& file) {
+  std::string text;
+  try {
+    text = read_input(file);
+  } catch (const Failure& f) {
+    std::cerr << "breakshot: " << f.message << '\n';
+    return kExitInvalid;
+  }
+  auto parsed = bs::read_record(text);
+  if (const auto* err = std::get_if<bs::RecordError>(&parsed)) {
+    std::cerr << "breakshot: invalid record: " << err->path << ": " << err->reason << '\n';
+    return kExitInvalid;
+  }
+  const bs::GameRecord& record = std::get<bs::GameRecord>(parsed);
+  const bs::ReplayReport report = bs::replay(record);
+  std::ostringstream out;
+  if (!report.identical) {
+    out << "replayed " << report.actions_identical << " of " << record.actions.size()
+        << " actions identical, then: " << report.message << '\n';
+    write_output("", out.str());
+    return kExitReplayDiffers;
+  }
+  out << "replayed " << record.actions.size() << " actions: identical\n";
+  const bs::GameState& end = report.final_state;
+  if (end.phase != bs::Phase::game_over) {
+    out << "the game is not over (phase " << bs::to_string(end.phase) << ")\n";
+  } else if (end.winner < 0) {
+    out << "draw: " << end.result << '\n';
+  } else {
+    // Numbered from 1, as the rulings' texts number the players.
+    out << "winner: Player " << end.winner + 1 << " ("
+        << record.players[static_cast<std::size_t>(end.winner)] << "): " << end.result << '\n';
+  }
+  write_output("", out.str());
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -145,7 +286,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("breakshot ") + BREAKSHOT_VERSION);
   app.require_subcommand(1);
   app.footer(
-      "Run 'breakshot simulate --help' for the scenario file and exit status.\n"
+      "Run 'breakshot simulate --help' for the scenario file and exit status,\n"
+      "'breakshot match --help' and 'breakshot replay --help' for games.\n"
       "The scenario and result file formats are described in docs/scenario.md.");
 
   SimulateOptions opt;
@@ -165,6 +307,52 @@ int main(int argc, char** argv) {
       "     with \"complete\": false\n"
       "  1  anything else (unreadable file, unsupported feature, cannot write)");
 
+  MatchArgs match_args;
+  CLI::App* match = app.add_subcommand(
+      "match", "Play games between computer players and print a summary (JSON)");
+  match->add_option("--game", match_args.game, "eight_ball or nine_ball")
+      ->type_name("GAME")
+      ->required();
+  match->add_option("--players", match_args.players,
+                    "The two players, by name, comma separated (e.g. baseline,baseline)")
+      ->type_name("A,B")
+      ->required();
+  match->add_option("--games", match_args.games, "Number of games (>= 1); breaks alternate")
+      ->type_name("N")
+      ->required();
+  match->add_option("--seed", match_args.seed, "Match seed (0 to 2^64 - 1): same seed, same match")
+      ->type_name("S")
+      ->required();
+  match->add_option("--noise", match_args.noise,
+                    "Shot noise: none, tournament, <k>x (k times tournament) or "
+                    "custom:phi=..,theta=..,speed=..,a=..,b=..")
+      ->type_name("LEVEL")
+      ->required();
+  match->add_option("--table", match_args.table, "Table size: 7ft, 8ft or 9ft (default 9ft)")
+      ->type_name("SIZE");
+  match->add_option("--records", match_args.records,
+                    "Write each game's record to DIR/game-0001.json, ... (DIR is created)")
+      ->type_name("DIR");
+  match->footer(
+      "Exit status:\n"
+      "  0  played; the summary JSON is on standard output\n"
+      "  2  a bad argument (unknown game, player or table, games < 1, bad seed\n"
+      "     or noise): standard error names it\n"
+      "  1  anything else (a record cannot be written, a missing option)");
+
+  std::string record_file;
+  CLI::App* rep = app.add_subcommand(
+      "replay", "Replay a game record and check that it comes out identical");
+  rep->add_option("RECORD", record_file, "Game record (JSON), or - for standard input")
+      ->required();
+  rep->footer(
+      "Exit status:\n"
+      "  0  the record replays identical (the winner is printed)\n"
+      "  4  the replay differs: standard output names the first action and field\n"
+      "  2  the record cannot be read or is invalid: standard error names the\n"
+      "     JSON path\n"
+      "  1  anything else");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -175,6 +363,8 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (match->parsed()) return run_match(match_args);
+    if (rep->parsed()) return run_replay(record_file);
     return run_simulate(opt);
   } catch (const Failure& f) {
     std::cerr << "breakshot: " << f.message << '\n';

@@ -35,6 +35,7 @@ struct CueStrike {
   double theta = 0.0;
   double a = 0.0;
   double b = 0.0;
+  bool operator==(const CueStrike&) const = default;
 };
 
 struct StrikeResult {

@@ -1,0 +1,232 @@
+// Games: 8-ball and 9-ball by the WPA rules (docs/rules.md).
+//
+// A game is a plain value (GameState) and the rules are a function of it:
+// Rules::apply(state, action) returns the next state, the shot's events
+// and the ruling. Outcomes are read from the shot's event list (first ball
+// hit, cushion contacts, pockets), so the rules and the physics never
+// disagree. Balls are numbered as on the table: 0 is the cue ball, then
+// 1-15 (8-ball) or 1-9 (9-ball); index = number in every array here.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "breakshot/event.hpp"
+#include "breakshot/pool.hpp"
+#include "breakshot/scenario.hpp"
+#include "breakshot/table.hpp"
+#include "breakshot/vec.hpp"
+
+namespace breakshot {
+
+/// The fastest cue stick a game accepts (m/s); a hard break is about 11.
+inline constexpr double kMaxCueSpeed = 20.0;
+
+enum class GameType : std::uint8_t { eight_ball, nine_ball };
+std::string_view to_string(GameType g);
+/// "eight_ball" or "nine_ball"; nullopt otherwise.
+std::optional<GameType> parse_game_type(std::string_view s);
+
+/// Equipment and limits of a game. Everything else is fixed by the rules.
+struct GameConfig {
+  GameType game = GameType::eight_ball;
+  std::string table_size = "9ft";  ///< "7ft", "8ft" or "9ft"
+  double ball_radius = 0.028575;   ///< m (WPA 2.25 in)
+  double ball_mass = 0.170;        ///< kg
+  /// A game still going after this many shots is ended as a draw (the
+  /// stalemate clause, docs/rules.md). 0: no limit.
+  int max_shots = 400;
+  bool operator==(const GameConfig&) const = default;
+};
+
+/// 8-ball groups. `none` while the table is open.
+enum class Group : std::uint8_t { none, solids, stripes };
+std::string_view to_string(Group g);
+std::optional<Group> parse_group(std::string_view s);
+
+/// What the game waits for.
+enum class Phase : std::uint8_t {
+  break_shot,             ///< `player` breaks (cue ball in hand behind the head string)
+  shot,                   ///< `player` shoots, placing the cue ball first if in hand
+  push_out_choice,        ///< 9-ball: `player` takes the table after a push-out or passes it back
+  illegal_break_choice,   ///< 8-ball: `player` (incoming) decides after an illegal break
+  eight_on_break_choice,  ///< 8-ball: `player` decides after the 8 fell on the break
+  game_over,
+};
+std::string_view to_string(Phase p);
+std::optional<Phase> parse_phase(std::string_view s);
+
+/// Where the cue ball may be placed before the next shot.
+enum class BallInHand : std::uint8_t { none, kitchen, anywhere };
+std::string_view to_string(BallInHand b);
+std::optional<BallInHand> parse_ball_in_hand(std::string_view s);
+
+/// Decisions the rules leave to a player.
+enum class Choice : std::uint8_t {
+  shoot,                   ///< after a push-out: take the table as it is
+  pass_back,               ///< after a push-out: the pushing player must shoot
+  accept_table,            ///< after an illegal 8-ball break: shoot from here
+  rerack_and_break,        ///< after an illegal break or the 8 on the break: re-rack, I break
+  rerack_opponent_breaks,  ///< after an illegal break: re-rack, the original breaker breaks again
+  respot_eight,            ///< after the 8 on the break: spot the 8 and play on
+};
+std::string_view to_string(Choice c);
+std::optional<Choice> parse_choice(std::string_view s);
+
+enum class Foul : std::uint8_t {
+  scratch,           ///< cue ball pocketed
+  no_contact,        ///< the cue ball touched no object ball (a miscue included)
+  wrong_ball_first,  ///< first ball touched not a legal target (8-ball: the 8 on an open table)
+  no_rail,           ///< after contact, nothing pocketed and no ball reached a cushion
+  illegal_break,     ///< nothing pocketed and fewer than four object balls reached a cushion
+  behind_head_string,  ///< from the kitchen, first contact with a ball behind the head string
+};
+std::string_view to_string(Foul f);
+std::optional<Foul> parse_foul(std::string_view s);
+
+/// The state between shots: every ball at rest.
+struct GameState {
+  GameType game = GameType::eight_ball;
+  std::vector<Vec2> position;       ///< by ball number; meaningful where on_table
+  std::vector<std::uint8_t> on_table;  ///< by ball number: 1 on the table, 0 pocketed
+  Phase phase = Phase::break_shot;
+  int player = 0;                   ///< 0 or 1: who acts next
+  int breaker = 0;                  ///< who broke (or breaks) this rack
+  BallInHand ball_in_hand = BallInHand::kitchen;
+  /// The cue ball was placed behind the head string for the coming
+  /// (non-break) shot: it must first contact a ball outside the kitchen.
+  bool kitchen_shot = false;
+  std::array<Group, 2> group{Group::none, Group::none};  ///< 8-ball
+  std::array<int, 2> fouls_in_a_row{0, 0};               ///< 9-ball three-foul rule
+  bool push_out_allowed = false;  ///< 9-ball: the next shot may be declared a push-out
+  bool after_push_out = false;    ///< 9-ball: the last shot was a push-out
+  bool scratch_on_break = false;  ///< 8-ball: set with eight_on_break_choice
+  int winner = -1;                ///< -1: none yet (or a draw once game_over)
+  std::string result;             ///< why the game ended, in words
+  int shots = 0;                  ///< shots taken in this game
+  int innings = 0;                ///< turns at the table begun in this game
+  std::uint64_t rack_seed = 0;    ///< seed of the current rack's jitter
+  int racks = 1;                  ///< racks set up in this game (re-racks add one)
+
+  bool operator==(const GameState&) const = default;
+};
+
+/// 8-ball calls: the ball and the pocket (index into Table::pockets).
+struct Call {
+  int ball = -1;
+  int pocket = -1;
+  bool operator==(const Call&) const = default;
+};
+
+struct PlaceCueBall {
+  Vec2 position;
+  bool operator==(const PlaceCueBall&) const = default;
+};
+
+struct Shoot {
+  CueStrike strike;
+  /// 8-ball: the called ball and pocket. Without a call a shot counts
+  /// only as an obvious one (docs/rules.md); the 8 must always be called.
+  std::optional<Call> call;
+  bool safety = false;    ///< 8-ball: declared safety, the turn ends after it
+  bool push_out = false;  ///< 9-ball: declared push-out
+  bool operator==(const Shoot&) const = default;
+};
+
+struct Decide {
+  Choice choice = Choice::shoot;
+  bool operator==(const Decide&) const = default;
+};
+
+using Action = std::variant<PlaceCueBall, Shoot, Decide>;
+
+/// What the player to act may do now.
+struct LegalActions {
+  BallInHand place = BallInHand::none;  ///< may place the cue ball (and must, if it is off the table)
+  bool must_place = false;              ///< the cue ball is off the table
+  bool shoot = false;
+  bool push_out = false;                ///< a shot may be declared a push-out
+  bool call = false;                    ///< 8-ball: shots carry calls
+  std::vector<int> targets;             ///< balls the cue ball may legally hit first
+  std::vector<Choice> choices;          ///< decisions on offer
+};
+
+/// What a shot did, read from its events. Ball numbers, not indices.
+struct ShotFacts {
+  bool miscue = false;
+  int first_hit = -1;              ///< first object ball the cue ball touched, -1: none
+  std::vector<int> pocketed;       ///< in order, the cue ball (0) included
+  std::vector<int> pocket_of;      ///< pocket index for each entry of `pocketed`
+  bool cushion_after_contact = false;  ///< any ball touched a cushion after the first contact
+  int object_balls_to_cushion = 0;     ///< distinct object balls that touched a cushion
+  bool operator==(const ShotFacts&) const = default;
+};
+
+struct Ruling {
+  std::vector<Foul> fouls;       ///< empty: no foul
+  bool legal_break = true;       ///< break shots only
+  bool turn_continues = false;   ///< the same player shoots again
+  Group assigned = Group::none;  ///< 8-ball: the group the shooter got with this shot
+  std::vector<int> spotted;      ///< balls put back on the table
+  int winner = -1;               ///< set when the game ended with this action
+  std::string text;              ///< the ruling in words
+  bool operator==(const Ruling&) const = default;
+};
+
+struct Outcome {
+  GameState state;            ///< after the action
+  std::vector<Event> events;  ///< the shot's events; ball fields are ball numbers
+  ShotFacts facts;
+  Ruling ruling;
+};
+
+/// The rules of one game type on one table. Immutable once built; all
+/// functions are pure functions of their arguments.
+class Rules {
+ public:
+  /// Throws std::invalid_argument for an unknown table size or bad sizes.
+  explicit Rules(GameConfig config);
+
+  const GameConfig& config() const { return config_; }
+  const Table& table() const { return table_; }
+  /// Number of balls including the cue ball: 16 or 10.
+  int ball_count() const;
+  /// x of the head string: the kitchen is x <= head_string().
+  double head_string() const;
+
+  /// A new game: rack from `rack_seed`, cue ball on the head spot,
+  /// `breaker` (0 or 1) to break.
+  GameState start(std::uint64_t rack_seed, int breaker) const;
+
+  LegalActions legal_actions(const GameState& state) const;
+  /// Why `action` is not allowed now, or nullopt if it is.
+  std::optional<std::string> check(const GameState& state, const Action& action) const;
+  /// Why the cue ball may not be placed at p now, or nullopt.
+  std::optional<std::string> check_placement(const GameState& state, Vec2 p) const;
+  /// Plays `action`. Throws std::invalid_argument with check()'s reason if
+  /// it is not allowed.
+  Outcome apply(const GameState& state, const Action& action) const;
+
+  /// The physics of a shot from `state` (balls on the table only, the cue
+  /// ball first), and each scenario ball's number.
+  Scenario shot_scenario(const GameState& state, const CueStrike& strike,
+                         std::vector<int>* numbers = nullptr) const;
+  /// The facts of a shot from its events (ball fields as ball numbers).
+  ShotFacts facts(const std::vector<Event>& events) const;
+
+  /// Lowest legal spot for `ball` on the long string, from the foot spot
+  /// toward the foot rail, then toward the head (WPA spotting).
+  Vec2 spot_position(const GameState& state, int ball) const;
+
+ private:
+  GameConfig config_;
+  Table table_;
+  Scenario base_;  // physics, table and ball specs of a full rack
+};
+
+}  // namespace breakshot

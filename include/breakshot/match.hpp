@@ -1,0 +1,102 @@
+// Games and matches between computer players, with shot noise, recorded
+// action by action (record.hpp) and summed up per player.
+//
+// Everything random comes from seeds derived from the match seed with
+// mix_seed, so a match is a pure function of its options: the same
+// options give the same records and the same summary, byte for byte.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "breakshot/game.hpp"
+#include "breakshot/noise.hpp"
+#include "breakshot/player.hpp"
+#include "breakshot/record.hpp"
+
+namespace breakshot {
+
+/// Plays one game to its end. `breaker` (0 or 1) breaks the first rack;
+/// the rack comes from a seed derived from `game_seed`. For action i the
+/// acting player decides with a seed derived from game_seed and i, and a
+/// shot is played as perturb(strike, noise, ball radius, noise_seed) with
+/// noise_seed = mix_seed(game_seed, i). Throws std::logic_error naming
+/// the player and the reason if a player chooses an action the rules
+/// refuse, or if the game runs far beyond the rules' max_shots (a guard:
+/// the stalemate clause should have ended it).
+GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
+                     std::uint64_t game_seed, const NoiseModel& noise);
+
+struct MatchOptions {
+  GameType game = GameType::eight_ball;
+  std::string table_size = "9ft";
+  std::array<std::string, 2> players;  ///< make_player names
+  int games = 1;
+  std::uint64_t seed = 0;
+  NoiseModel noise;
+  /// Where to write each game's record (game-0001.json, ...); created if
+  /// missing. Empty: no records.
+  std::string records_dir;
+};
+
+/// One player's figures over a match. Everything counts only the
+/// player's own actions.
+struct PlayerStats {
+  std::string name;
+  int games_won = 0;
+  /// Break shots taken (a break after a re-rack counts again).
+  int breaks = 0;
+  /// Racks won from the player's own break without the opponent taking a
+  /// single shot after it (a decision such as passing a push-out back is
+  /// not a shot).
+  int break_and_runs = 0;
+  /// Turns at the table begun, as GameState::innings counts them (the
+  /// break is the breaker's first inning; every time the turn passes, the
+  /// incoming player begins one).
+  int innings = 0;
+  int shots = 0;
+  /// Object balls pocketed on the player's shots, fouls and breaks
+  /// included, and balls spotted again after falling (the 9 on a foul)
+  /// too. The cue ball never counts.
+  int balls_pocketed = 0;
+  /// Fouls by kind, by the names of to_string(Foul); every kind is
+  /// listed, 0 included. One shot may commit several.
+  std::map<std::string, int> fouls;
+
+  /// balls_pocketed / innings (0 without innings).
+  double balls_per_inning() const;
+};
+
+struct MatchSummary {
+  GameType game = GameType::eight_ball;
+  std::string table_size = "9ft";
+  std::uint64_t seed = 0;
+  NoiseModel noise;
+  int games_played = 0;
+  int draws = 0;  ///< games ended by the stalemate clause
+  std::array<PlayerStats, 2> players;
+};
+
+/// A summary with no games yet: the options' settings and player names,
+/// every foul kind at 0.
+MatchSummary empty_summary(const MatchOptions& options);
+
+/// Adds a finished game (phase game_over at the end) to the summary; the
+/// record's seat 0 is summary.players[0]. Throws std::invalid_argument for
+/// a game that is not over.
+void add_game(MatchSummary& summary, const GameRecord& record);
+
+/// Plays options.games games: game g (from 0) is broken by player g % 2,
+/// with the game seed mix_seed(options.seed, g). Throws
+/// std::invalid_argument for bad options (unknown player or table, fewer
+/// than one game), std::runtime_error naming the path when a record
+/// cannot be written, and whatever play_game throws.
+MatchSummary play_match(const MatchOptions& options);
+
+/// The summary as JSON text (indented, keys in a fixed order, a trailing
+/// newline): the same summary gives the same bytes.
+std::string match_summary_json(const MatchSummary& summary);
+
+}  // namespace breakshot

@@ -1,0 +1,272 @@
+// Games and matches between players (include/breakshot/match.hpp).
+//
+// Seeds: a game's seed gives three streams. The noise of action i uses
+// mix_seed(game_seed, i), as the record says, so that replay() can check
+// it; the player deciding action i gets mix_seed(mix_seed(game_seed,
+// kPlayerStream), i); the rack comes from mix_seed(game_seed ^
+// kRackStream, 0). The stream tags keep the three apart.
+//
+// The per-player figures are computed from the records alone (add_game),
+// so any set of saved records can be summed up the same way.
+
+#include "breakshot/match.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <variant>
+
+#include <nlohmann/json.hpp>
+
+namespace breakshot {
+
+namespace {
+
+// Stream tags ("player", "rack" in ASCII): arbitrary constants that keep
+// the players' and the rack's seeds apart from the noise seeds.
+constexpr std::uint64_t kPlayerStream = 0x706c61796572ULL;
+constexpr std::uint64_t kRackStream = 0x7261636bULL;
+
+/// Every foul kind, so that a summary lists them all, 0 included.
+constexpr Foul kFoulKinds[] = {Foul::scratch,          Foul::no_contact,
+                               Foul::wrong_ball_first, Foul::no_rail,
+                               Foul::illegal_break,    Foul::behind_head_string};
+
+std::string player_label(int seat, const Player& p) {
+  return "player " + std::to_string(seat) + " (" + p.name() + ")";
+}
+
+/// Actions a game may take before the guard calls it a runaway: a shot
+/// is preceded by at most a placement and a decision or two, so four per
+/// shot of the stalemate limit is far more than a game that obeys the
+/// limit can reach.
+std::size_t action_limit(const GameConfig& config) {
+  if (config.max_shots <= 0) return 0;  // no limit asked for
+  return 4 * static_cast<std::size_t>(config.max_shots) + 16;
+}
+
+const GameState& state_before(const GameRecord& record, std::size_t i) {
+  return i == 0 ? record.start : record.actions[i - 1].after;
+}
+
+/// Object balls the shot from `before` pocketed: those on the table
+/// before and off after, and those the ruling spotted (they were on the
+/// table before the shot, so they fell during it).
+int pocketed_by_shot(const GameState& before, const RecordedAction& ra) {
+  int n = 0;
+  for (std::size_t b = 1; b < before.on_table.size() && b < ra.after.on_table.size(); ++b) {
+    if (before.on_table[b] && !ra.after.on_table[b]) ++n;
+  }
+  for (const int b : ra.ruling.spotted) {
+    const auto ub = static_cast<std::size_t>(b);
+    if (b > 0 && ub < before.on_table.size() && before.on_table[ub] && ub < ra.after.on_table.size() &&
+        ra.after.on_table[ub]) {
+      ++n;
+    }
+  }
+  return n;
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string() + ": write error");
+}
+
+}  // namespace
+
+GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
+                     std::uint64_t game_seed, const NoiseModel& noise) {
+  if (breaker != 0 && breaker != 1) {
+    throw std::invalid_argument("play_game: the breaker must be 0 or 1, not " +
+                                std::to_string(breaker));
+  }
+  GameRecord record;
+  record.config = rules.config();
+  record.players = {p0.name(), p1.name()};
+  record.seed = game_seed;
+  record.noise = noise;
+  record.start = rules.start(mix_seed(game_seed ^ kRackStream, 0), breaker);
+
+  Player* const seats[2] = {&p0, &p1};
+  const std::uint64_t player_stream = mix_seed(game_seed, kPlayerStream);
+  const std::size_t limit = action_limit(rules.config());
+  const double radius = rules.config().ball_radius;
+  GameState state = record.start;
+  while (state.phase != Phase::game_over) {
+    const std::size_t i = record.actions.size();
+    if (limit != 0 && i >= limit) {
+      throw std::logic_error("the game did not end after " + std::to_string(i) +
+                             " actions (max_shots is " +
+                             std::to_string(rules.config().max_shots) + ")");
+    }
+    const int seat = state.player;
+    Player& player = *seats[seat];
+    RecordedAction ra;
+    ra.player = seat;
+    ra.noise_seed = mix_seed(game_seed, i);
+    ra.action = player.decide(rules, state, mix_seed(player_stream, i));
+    if (auto why = rules.check(state, ra.action)) {
+      throw std::logic_error(player_label(seat, player) + " chose an action the rules refuse (" +
+                             std::string(to_string(state.phase)) + ", action " +
+                             std::to_string(i) + "): " + *why);
+    }
+    if (auto* shoot = std::get_if<Shoot>(&ra.action)) {
+      ra.intended = shoot->strike;
+      shoot->strike = perturb(shoot->strike, noise, radius, ra.noise_seed);
+    }
+    Outcome out;
+    try {
+      out = rules.apply(state, ra.action);
+    } catch (const std::invalid_argument& e) {
+      // The intended action passed check(), so the noise made it illegal:
+      // perturb() promises strikes the rules accept, so this is a bug.
+      throw std::logic_error(player_label(seat, player) + ": the shot as executed (after noise) " +
+                             "is refused at action " + std::to_string(i) + ": " + e.what());
+    }
+    ra.ruling = std::move(out.ruling);
+    ra.after = out.state;
+    state = std::move(out.state);
+    record.actions.push_back(std::move(ra));
+  }
+  return record;
+}
+
+double PlayerStats::balls_per_inning() const {
+  return innings > 0 ? static_cast<double>(balls_pocketed) / static_cast<double>(innings) : 0.0;
+}
+
+MatchSummary empty_summary(const MatchOptions& options) {
+  MatchSummary s;
+  s.game = options.game;
+  s.table_size = options.table_size;
+  s.seed = options.seed;
+  s.noise = options.noise;
+  for (std::size_t p = 0; p < 2; ++p) {
+    s.players[p].name = options.players[p];
+    for (const Foul f : kFoulKinds) s.players[p].fouls[std::string(to_string(f))] = 0;
+  }
+  return s;
+}
+
+void add_game(MatchSummary& summary, const GameRecord& record) {
+  const GameState& end = record.actions.empty() ? record.start : record.actions.back().after;
+  if (end.phase != Phase::game_over) {
+    throw std::invalid_argument("add_game: the game is not over (phase " +
+                                std::string(to_string(end.phase)) + ")");
+  }
+  summary.games_played += 1;
+  if (end.winner < 0) {
+    summary.draws += 1;
+  } else {
+    summary.players[static_cast<std::size_t>(end.winner)].games_won += 1;
+  }
+
+  // The breaker's first inning is the break; then the incoming player
+  // begins one whenever the count moves (GameState::innings).
+  summary.players[static_cast<std::size_t>(record.start.player)].innings += record.start.innings;
+  std::size_t last_break = 0;  // index of the last break shot
+  bool any_break = false;
+  for (std::size_t i = 0; i < record.actions.size(); ++i) {
+    const RecordedAction& ra = record.actions[i];
+    const GameState& before = state_before(record, i);
+    PlayerStats& me = summary.players[static_cast<std::size_t>(ra.player)];
+    if (ra.after.innings > before.innings) {
+      summary.players[static_cast<std::size_t>(ra.after.player)].innings +=
+          ra.after.innings - before.innings;
+    }
+    if (!std::holds_alternative<Shoot>(ra.action)) continue;
+    me.shots += 1;
+    if (before.phase == Phase::break_shot) {
+      me.breaks += 1;
+      last_break = i;
+      any_break = true;
+    }
+    me.balls_pocketed += pocketed_by_shot(before, ra);
+    for (const Foul f : ra.ruling.fouls) me.fouls[std::string(to_string(f))] += 1;
+  }
+
+  if (end.winner >= 0 && any_break && record.actions[last_break].player == end.winner) {
+    bool opponent_shot = false;
+    for (std::size_t i = last_break; i < record.actions.size(); ++i) {
+      const RecordedAction& ra = record.actions[i];
+      opponent_shot = opponent_shot ||
+                      (ra.player != end.winner && std::holds_alternative<Shoot>(ra.action));
+    }
+    if (!opponent_shot) summary.players[static_cast<std::size_t>(end.winner)].break_and_runs += 1;
+  }
+}
+
+MatchSummary play_match(const MatchOptions& options) {
+  if (options.games < 1) {
+    throw std::invalid_argument("the number of games must be at least 1, not " +
+                                std::to_string(options.games));
+  }
+  GameConfig config;
+  config.game = options.game;
+  config.table_size = options.table_size;
+  const Rules rules(config);
+  const std::unique_ptr<Player> p0 = make_player(options.players[0]);
+  const std::unique_ptr<Player> p1 = make_player(options.players[1]);
+
+  const std::filesystem::path dir(options.records_dir);
+  if (!options.records_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
+  }
+
+  MatchSummary summary = empty_summary(options);
+  for (int g = 0; g < options.games; ++g) {
+    const GameRecord record = play_game(rules, *p0, *p1, g % 2,
+                                        mix_seed(options.seed, static_cast<std::uint64_t>(g)),
+                                        options.noise);
+    add_game(summary, record);
+    if (!options.records_dir.empty()) {
+      char name[32];
+      std::snprintf(name, sizeof name, "game-%04d.json", g + 1);
+      write_file(dir / name, write_record(record));
+    }
+  }
+  return summary;
+}
+
+std::string match_summary_json(const MatchSummary& s) {
+  using ojson = nlohmann::ordered_json;
+  ojson j = ojson::object();
+  j["game"] = to_string(s.game);
+  j["table_size"] = s.table_size;
+  j["seed"] = std::to_string(s.seed);  // a string, as in records: 64 bits survive any reader
+  j["noise"] = to_string(s.noise);
+  j["games_played"] = s.games_played;
+  j["draws"] = s.draws;
+  ojson players = ojson::array();
+  for (const PlayerStats& p : s.players) {
+    ojson o = ojson::object();
+    o["name"] = p.name;
+    o["games_won"] = p.games_won;
+    o["breaks"] = p.breaks;
+    o["break_and_runs"] = p.break_and_runs;
+    o["innings"] = p.innings;
+    o["shots"] = p.shots;
+    o["balls_pocketed"] = p.balls_pocketed;
+    o["balls_per_inning"] = p.balls_per_inning();
+    ojson fouls = ojson::object();
+    for (const auto& [kind, count] : p.fouls) fouls[kind] = count;
+    o["fouls"] = std::move(fouls);
+    players.push_back(std::move(o));
+  }
+  j["players"] = std::move(players);
+  return j.dump(2) + "\n";
+}
+
+}  // namespace breakshot

@@ -1,0 +1,51 @@
+// Names of the game enums, as used in records and rulings.
+#include <array>
+#include <string_view>
+
+#include "breakshot/game.hpp"
+
+namespace breakshot {
+
+namespace {
+
+template <class E, std::size_t N>
+std::optional<E> parse(std::string_view s, const std::array<std::string_view, N>& names) {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (names[i] == s) return static_cast<E>(i);
+  }
+  return std::nullopt;
+}
+
+constexpr std::array<std::string_view, 2> kGameNames{"eight_ball", "nine_ball"};
+constexpr std::array<std::string_view, 3> kGroupNames{"none", "solids", "stripes"};
+constexpr std::array<std::string_view, 6> kPhaseNames{
+    "break_shot", "shot", "push_out_choice", "illegal_break_choice", "eight_on_break_choice",
+    "game_over"};
+constexpr std::array<std::string_view, 3> kBallInHandNames{"none", "kitchen", "anywhere"};
+constexpr std::array<std::string_view, 6> kChoiceNames{
+    "shoot", "pass_back", "accept_table", "rerack_and_break", "rerack_opponent_breaks",
+    "respot_eight"};
+constexpr std::array<std::string_view, 6> kFoulNames{
+    "scratch", "no_contact", "wrong_ball_first", "no_rail", "illegal_break",
+    "behind_head_string"};
+
+}  // namespace
+
+std::string_view to_string(GameType g) { return kGameNames[static_cast<std::size_t>(g)]; }
+std::optional<GameType> parse_game_type(std::string_view s) {
+  return parse<GameType>(s, kGameNames);
+}
+std::string_view to_string(Group g) { return kGroupNames[static_cast<std::size_t>(g)]; }
+std::optional<Group> parse_group(std::string_view s) { return parse<Group>(s, kGroupNames); }
+std::string_view to_string(Phase p) { return kPhaseNames[static_cast<std::size_t>(p)]; }
+std::optional<Phase> parse_phase(std::string_view s) { return parse<Phase>(s, kPhaseNames); }
+std::string_view to_string(BallInHand b) { return kBallInHandNames[static_cast<std::size_t>(b)]; }
+std::optional<BallInHand> parse_ball_in_hand(std::string_view s) {
+  return parse<BallInHand>(s, kBallInHandNames);
+}
+std::string_view to_string(Choice c) { return kChoiceNames[static_cast<std::size_t>(c)]; }
+std::optional<Choice> parse_choice(std::string_view s) { return parse<Choice>(s, kChoiceNames); }
+std::string_view to_string(Foul f) { return kFoulNames[static_cast<std::size_t>(f)]; }
+std::optional<Foul> parse_foul(std::string_view s) { return parse<Foul>(s, kFoulNames); }
+
+}  // namespace breakshot

@@ -1,0 +1,467 @@
+// Matches: games played to the end, recorded, replayable and summed up
+// (include/breakshot/match.hpp), and the `match` and `replay` commands.
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "breakshot/game.hpp"
+#include "breakshot/match.hpp"
+#include "breakshot/noise.hpp"
+#include "breakshot/player.hpp"
+#include "breakshot/record.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace breakshot;
+using nlohmann::json;
+using ojson = nlohmann::ordered_json;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// A fresh directory per test, removed afterwards.
+fs::path fresh_dir(const std::string& tag) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::temp_directory_path() /
+                       ("breakshot-" + tag + "-" + std::to_string(::getpid()) + "-" +
+                        info->test_suite_name() + "-" + info->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+GameRecord read_file(const fs::path& p) {
+  auto parsed = read_record(slurp(p));
+  if (const auto* err = std::get_if<RecordError>(&parsed)) {
+    ADD_FAILURE() << p << ": " << err->path << ": " << err->reason;
+    return {};
+  }
+  return std::get<GameRecord>(parsed);
+}
+
+MatchOptions options(GameType game, int games, std::uint64_t seed) {
+  MatchOptions o;
+  o.game = game;
+  o.players = {"baseline", "baseline"};
+  o.games = games;
+  o.seed = seed;
+  o.noise = parse_noise("tournament");
+  return o;
+}
+
+/// Plays a short match writing the records, and checks everything that
+/// must hold whatever the players do.
+void check_short_match(GameType game) {
+  const fs::path dir = fresh_dir("match");
+  MatchOptions o = options(game, 4, 11);
+  o.records_dir = (dir / "records").string();  // created by play_match
+  const MatchSummary summary = play_match(o);
+
+  EXPECT_EQ(summary.games_played, 4);
+  EXPECT_EQ(summary.players[0].games_won + summary.players[1].games_won + summary.draws, 4);
+  MatchSummary again = empty_summary(o);
+  int shots = 0;
+  int innings = 0;
+  int fouls = 0;
+  for (int g = 0; g < 4; ++g) {
+    const fs::path file = fs::path(o.records_dir) / ("game-000" + std::to_string(g + 1) + ".json");
+    ASSERT_TRUE(fs::exists(file)) << file;
+    const GameRecord r = read_file(file);
+    EXPECT_EQ(r.config.game, game);
+    EXPECT_EQ(r.start.breaker, g % 2) << "breaks alternate";
+    EXPECT_EQ(r.seed, mix_seed(o.seed, static_cast<std::uint64_t>(g)));
+    ASSERT_FALSE(r.actions.empty());
+    const GameState& end = r.actions.back().after;
+    EXPECT_EQ(end.phase, Phase::game_over);
+    for (std::size_t i = 0; i < r.actions.size(); ++i) {
+      EXPECT_EQ(r.actions[i].noise_seed, mix_seed(r.seed, i));
+      EXPECT_EQ(r.actions[i].intended.has_value(),
+                std::holds_alternative<Shoot>(r.actions[i].action));
+      fouls += static_cast<int>(r.actions[i].ruling.fouls.size());
+    }
+    const ReplayReport rep = replay(r);
+    EXPECT_TRUE(rep.identical) << file << ": " << rep.message;
+    shots += end.shots;
+    innings += end.innings;
+    add_game(again, r);
+  }
+  // The summary is a function of the records.
+  EXPECT_EQ(match_summary_json(again), match_summary_json(summary));
+  // Totals agree with the game states.
+  const PlayerStats& a = summary.players[0];
+  const PlayerStats& b = summary.players[1];
+  EXPECT_EQ(a.shots + b.shots, shots);
+  EXPECT_EQ(a.innings + b.innings, innings);
+  EXPECT_GE(a.breaks, 2);  // each breaks twice, more after re-racks
+  EXPECT_GE(b.breaks, 2);
+  int counted = 0;
+  for (const auto& [kind, n] : a.fouls) counted += n;
+  for (const auto& [kind, n] : b.fouls) counted += n;
+  EXPECT_EQ(counted, fouls);
+  EXPECT_LE(a.break_and_runs, a.games_won);
+  EXPECT_LE(b.break_and_runs, b.games_won);
+  EXPECT_GT(a.balls_pocketed + b.balls_pocketed, 0);
+  fs::remove_all(dir);
+}
+
+TEST(Match, ShortEightBallMatchRunsAndReplays) { check_short_match(GameType::eight_ball); }
+
+TEST(Match, ShortNineBallMatchRunsAndReplays) { check_short_match(GameType::nine_ball); }
+
+TEST(Match, ManyGamesRoundTripAndReplay) {
+  // More games, in memory, for the rarer rulings (re-racks, the 8 on the
+  // break, three fouls): every record reads back to the same bytes and
+  // replays identical.
+  for (const GameType game : {GameType::eight_ball, GameType::nine_ball}) {
+    GameConfig config;
+    config.game = game;
+    const Rules rules(config);
+    auto p0 = make_player("baseline");
+    auto p1 = make_player("baseline");
+    for (std::uint64_t g = 0; g < 24; ++g) {
+      const GameRecord r = play_game(rules, *p0, *p1, static_cast<int>(g % 2), 1000 + g,
+                                     parse_noise("tournament"));
+      const std::string text = write_record(r);
+      auto parsed = read_record(text);
+      ASSERT_TRUE(std::holds_alternative<GameRecord>(parsed))
+          << std::get<RecordError>(parsed).path << ": " << std::get<RecordError>(parsed).reason;
+      const GameRecord& back = std::get<GameRecord>(parsed);
+      EXPECT_TRUE(back == r) << g;
+      EXPECT_EQ(write_record(back), text) << g;
+      const ReplayReport rep = replay(back);
+      EXPECT_TRUE(rep.identical) << to_string(game) << " game " << g << ": " << rep.message;
+    }
+  }
+}
+
+TEST(Match, SameSeedSameSummaryAndRecords) {
+  const fs::path dir = fresh_dir("match");
+  MatchOptions o = options(GameType::nine_ball, 2, 99);
+  o.records_dir = (dir / "a").string();
+  const std::string a = match_summary_json(play_match(o));
+  o.records_dir = (dir / "b").string();
+  const std::string b = match_summary_json(play_match(o));
+  EXPECT_EQ(a, b);
+  for (const char* name : {"game-0001.json", "game-0002.json"}) {
+    EXPECT_EQ(slurp(dir / "a" / name), slurp(dir / "b" / name)) << name;
+  }
+  o.seed = 100;
+  o.records_dir = (dir / "c").string();
+  (void)play_match(o);
+  EXPECT_NE(slurp(dir / "a" / "game-0001.json"), slurp(dir / "c" / "game-0001.json"));
+  fs::remove_all(dir);
+}
+
+TEST(Match, SummaryJsonHasEveryField) {
+  MatchOptions o = options(GameType::eight_ball, 1, 5);
+  const json j = json::parse(match_summary_json(play_match(o)));
+  for (const char* key : {"game", "table_size", "seed", "noise", "games_played", "draws",
+                          "players"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["game"], "eight_ball");
+  EXPECT_EQ(j["seed"], "5");
+  EXPECT_EQ(j["noise"], "tournament");
+  ASSERT_EQ(j["players"].size(), 2u);
+  for (const json& p : j["players"]) {
+    for (const char* key : {"name", "games_won", "breaks", "break_and_runs", "innings", "shots",
+                            "balls_pocketed", "balls_per_inning", "fouls"}) {
+      EXPECT_TRUE(p.contains(key)) << key;
+    }
+    EXPECT_EQ(p["name"], "baseline");
+    for (const char* foul : {"scratch", "no_contact", "wrong_ball_first", "no_rail",
+                             "illegal_break", "behind_head_string"}) {
+      EXPECT_TRUE(p["fouls"].contains(foul)) << foul;
+    }
+  }
+}
+
+TEST(Match, StalemateLimitEndsInADraw) {
+  GameConfig config;
+  config.game = GameType::eight_ball;
+  config.max_shots = 2;  // nobody wins 8-ball in two shots
+  const Rules rules(config);
+  auto p0 = make_player("baseline");
+  auto p1 = make_player("baseline");
+  const GameRecord r = play_game(rules, *p0, *p1, 1, 3, NoiseModel{});
+  const GameState& end = r.actions.back().after;
+  EXPECT_EQ(end.phase, Phase::game_over);
+  EXPECT_EQ(end.winner, -1);
+  EXPECT_EQ(end.shots, 2);
+  EXPECT_EQ(r.start.breaker, 1);
+  EXPECT_TRUE(replay(r).identical);
+  MatchOptions o = options(GameType::eight_ball, 1, 0);
+  MatchSummary s = empty_summary(o);
+  add_game(s, r);
+  EXPECT_EQ(s.draws, 1);
+  EXPECT_EQ(s.players[0].games_won + s.players[1].games_won, 0);
+  EXPECT_EQ(s.players[1].breaks, 1);
+  EXPECT_EQ(s.players[0].break_and_runs + s.players[1].break_and_runs, 0);
+}
+
+TEST(Match, NoNoiseMeansExecutedIsIntended) {
+  GameConfig config;
+  config.game = GameType::nine_ball;
+  config.max_shots = 6;
+  const Rules rules(config);
+  auto p0 = make_player("baseline");
+  auto p1 = make_player("baseline");
+  const GameRecord r = play_game(rules, *p0, *p1, 0, 8, NoiseModel{});
+  for (const RecordedAction& ra : r.actions) {
+    if (const auto* shot = std::get_if<Shoot>(&ra.action)) {
+      ASSERT_TRUE(ra.intended.has_value());
+      EXPECT_TRUE(identical(shot->strike, *ra.intended));
+    }
+  }
+}
+
+/// Always wants to decide, which the rules never allow on a break.
+class Stubborn : public Player {
+ public:
+  std::string name() const override { return "stubborn"; }
+  Action decide(const Rules&, const GameState&, std::uint64_t) override {
+    return Decide{Choice::respot_eight};
+  }
+};
+
+TEST(Match, RefusedActionStopsTheGameNamingThePlayer) {
+  const Rules rules(GameConfig{});
+  Stubborn stubborn;
+  auto other = make_player("baseline");
+  try {
+    (void)play_game(rules, *other, stubborn, 1, 1, NoiseModel{});
+    FAIL() << "no exception";
+  } catch (const std::logic_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("player 1 (stubborn)"), std::string::npos) << what;
+    EXPECT_NE(what.find("refuse"), std::string::npos) << what;
+  }
+}
+
+TEST(Match, AddGameRefusesAnUnfinishedGame) {
+  const Rules rules(GameConfig{});
+  GameRecord r;
+  r.start = rules.start(1, 0);
+  MatchSummary s = empty_summary(options(GameType::eight_ball, 1, 0));
+  EXPECT_THROW(add_game(s, r), std::invalid_argument);
+}
+
+TEST(Match, BadOptionsAndUnwritableRecords) {
+  MatchOptions o = options(GameType::eight_ball, 0, 1);
+  EXPECT_THROW((void)play_match(o), std::invalid_argument);
+  o.games = 1;
+  o.players[1] = "nobody";
+  EXPECT_THROW((void)play_match(o), std::invalid_argument);
+  o.players[1] = "baseline";
+  o.table_size = "10ft";
+  EXPECT_THROW((void)play_match(o), std::invalid_argument);
+
+  const fs::path dir = fresh_dir("match");
+  std::ofstream(dir / "file") << "in the way";
+  o.table_size = "9ft";
+  o.records_dir = (dir / "file" / "records").string();
+  try {
+    (void)play_match(o);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(o.records_dir), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// The command line
+
+#ifdef BREAKSHOT_CLI
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+
+namespace {
+
+class MatchCli : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = fresh_dir("cli"); }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+  struct Run {
+    int status = -1;
+    std::string out;
+    std::string err;
+  };
+
+  static std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) {
+      if (c == '\'') {
+        q += "'\\''";
+      } else {
+        q += c;
+      }
+    }
+    return q + "'";
+  }
+
+  Run run(const std::string& args) const {
+    const fs::path out = dir_ / "stdout.txt";
+    const fs::path err = dir_ / "stderr.txt";
+    const std::string cmd = quote(BREAKSHOT_CLI) + " " + args + " >" + quote(out.string()) +
+                            " 2>" + quote(err.string());
+    const int raw = std::system(cmd.c_str());
+    Run r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  /// One short 9-ball game with its record in dir_/records.
+  Run play_one() const {
+    return run("match --game nine_ball --players baseline,baseline --games 1 --seed 3 "
+               "--noise tournament --records " + quote((dir_ / "records").string()));
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(MatchCli, MatchPrintsTheSummary) {
+  const Run r = run("match --game nine_ball --players baseline,baseline --games 2 --seed 12 "
+                    "--noise 2x --table 7ft --records " + quote((dir_ / "records").string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["game"], "nine_ball");
+  EXPECT_EQ(j["table_size"], "7ft");
+  EXPECT_EQ(j["seed"], "12");
+  EXPECT_EQ(j["games_played"], 2);
+  ASSERT_EQ(j["players"].size(), 2u);
+  EXPECT_EQ(j["players"][0]["games_won"].get<int>() + j["players"][1]["games_won"].get<int>() +
+                j["draws"].get<int>(),
+            2);
+  EXPECT_TRUE(fs::exists(dir_ / "records" / "game-0001.json"));
+  EXPECT_TRUE(fs::exists(dir_ / "records" / "game-0002.json"));
+  EXPECT_FALSE(fs::exists(dir_ / "records" / "game-0003.json"));
+  EXPECT_EQ(read_file(dir_ / "records" / "game-0001.json").config.table_size, "7ft");
+}
+
+TEST_F(MatchCli, ReplayOfAWrittenRecordIsIdentical) {
+  ASSERT_EQ(play_one().status, 0);
+  const Run r = run("replay " + quote((dir_ / "records" / "game-0001.json").string()));
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("actions: identical"), std::string::npos) << r.out;
+  EXPECT_TRUE(r.out.find("winner: Player ") != std::string::npos ||
+              r.out.find("draw: ") != std::string::npos)
+      << r.out;
+}
+
+TEST_F(MatchCli, ReplayOfATamperedRecordExitsFour) {
+  ASSERT_EQ(play_one().status, 0);
+  const fs::path file = dir_ / "records" / "game-0001.json";
+  ojson doc = ojson::parse(slurp(file));
+  doc["actions"][0]["ruling"]["text"] = "a different story";
+  std::ofstream(dir_ / "tampered.json", std::ios::binary) << doc.dump();
+  const Run r = run("replay " + quote((dir_ / "tampered.json").string()));
+  EXPECT_EQ(r.status, 4) << r.out << r.err;
+  EXPECT_NE(r.out.find("actions[0].ruling.text"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("a different story"), std::string::npos) << r.out;
+}
+
+TEST_F(MatchCli, InvalidRecordExitsTwoNamingThePath) {
+  ASSERT_EQ(play_one().status, 0);
+  ojson doc = ojson::parse(slurp(dir_ / "records" / "game-0001.json"));
+  doc["actions"][0].erase("player");
+  std::ofstream(dir_ / "broken.json", std::ios::binary) << doc.dump();
+  Run r = run("replay " + quote((dir_ / "broken.json").string()));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("invalid record: actions[0].player: missing required field"),
+            std::string::npos)
+      << r.err;
+
+  std::ofstream(dir_ / "cut.json", std::ios::binary) << doc.dump().substr(0, 100);
+  r = run("replay " + quote((dir_ / "cut.json").string()));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("invalid record: (document): "), std::string::npos) << r.err;
+
+  r = run("replay " + quote((dir_ / "no-such-record.json").string()));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("no-such-record.json"), std::string::npos) << r.err;
+}
+
+TEST_F(MatchCli, BadArgumentsExitTwoNamingTheProblem) {
+  struct Case {
+    const char* args;
+    const char* message;
+  };
+  const std::string base = "--noise tournament --seed 1 ";
+  const Case cases[] = {
+      {"--game snooker --players baseline,baseline --games 1", "--game: unknown game 'snooker'"},
+      {"--game eight_ball --players baseline --games 1", "--players: "},
+      {"--game eight_ball --players baseline,baseline,baseline --games 1", "--players: "},
+      {"--game eight_ball --players baseline,nobody --games 1", "nobody"},
+      {"--game eight_ball --players baseline,baseline --games 0", "--games: "},
+      {"--game eight_ball --players baseline,baseline --games many", "--games: "},
+      {"--game eight_ball --players baseline,baseline --games 1 --table 10ft", "--table: "},
+  };
+  for (const Case& c : cases) {
+    const Run r = run("match " + base + c.args);
+    EXPECT_EQ(r.status, 2) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.args;
+  }
+  Run r = run("match --game nine_ball --players baseline,baseline --games 1 --seed 1 --noise loud");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--noise: "), std::string::npos) << r.err;
+  r = run("match --game nine_ball --players baseline,baseline --games 1 --seed -4 --noise none");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--seed: "), std::string::npos) << r.err;
+}
+
+TEST_F(MatchCli, OtherFailuresExitOne) {
+  std::ofstream(dir_ / "file") << "in the way";
+  Run r = run("match --game nine_ball --players baseline,baseline --games 1 --seed 1 "
+              "--noise none --records " + quote((dir_ / "file" / "records").string()));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find((dir_ / "file" / "records").string()), std::string::npos) << r.err;
+  r = run("match --game nine_ball --players baseline,baseline --seed 1 --noise none");  // no --games
+  EXPECT_EQ(r.status, 1) << r.err;
+  r = run("replay");
+  EXPECT_EQ(r.status, 1) << r.err;
+}
+
+TEST_F(MatchCli, HelpNamesTheSubcommands) {
+  Run r = run("--help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("match"), std::string::npos);
+  EXPECT_NE(r.out.find("replay"), std::string::npos);
+  r = run("match --help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("Exit status"), std::string::npos);
+  r = run("replay --help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("Exit status"), std::string::npos);
+}
+
+}  // namespace
+
+#endif  // BREAKSHOT_CLI
