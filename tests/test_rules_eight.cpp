@@ -725,12 +725,10 @@ TEST(RulesEightKitchen, FirstHittingABallBeyondTheHeadStringIsNoFoul) {
   EXPECT_TRUE(o.ruling.fouls.empty());
 }
 
-TEST(RulesEightKitchen, ABallBehindTheHeadStringIsAFoulEvenAfterTheCueBallCrossedIt) {
-  // docs/rules.md: the first ball hit must lie outside the head string at
-  // the start of the shot. WPA would allow this shot (the cue ball goes up
-  // to the foot cushion and comes back to the 3); breakshot rules it a
-  // foul, a documented simplification. Flip the expectation if the rule
-  // is ever made exact.
+TEST(RulesEightKitchen, ABallBehindTheHeadStringIsFairOnceTheCueBallCrossedIt) {
+  // WPA: from the kitchen, a ball behind the head string may be hit first
+  // once the cue ball has crossed the head string. Here the cue ball goes
+  // up to the foot cushion and comes back to the 3: no foul.
   const Rules rules = eight_ball_rules();
   GameState s = bare_table(rules, {0.5, 0.3}, 1);
   s.on_table[0] = 0;
@@ -759,7 +757,7 @@ TEST(RulesEightKitchen, ABallBehindTheHeadStringIsAFoulEvenAfterTheCueBallCrosse
     }
   }
   ASSERT_TRUE(crossed);
-  EXPECT_EQ(o.ruling.fouls, std::vector<Foul>{Foul::behind_head_string});
-  EXPECT_EQ(o.state.player, 0);
-  EXPECT_EQ(o.state.ball_in_hand, BallInHand::anywhere);
+  EXPECT_TRUE(o.ruling.fouls.empty()) << describe(o);
+  EXPECT_EQ(o.state.player, 0);  // nothing pocketed: the turn passes
+  EXPECT_EQ(o.state.ball_in_hand, BallInHand::none);
 }

@@ -327,6 +327,43 @@ Vec2 Rules::spot_position(const GameState& s, int ball) const {
 
 namespace {
 
+// From the kitchen, a ball behind the head string may be hit first only
+// after the cue ball has crossed the head string (WPA): did the cue ball's
+// centre pass x > head string before its first contact? The shot is run
+// again event by event up to that contact, and each piece of the cue
+// ball's path (a parabola between events) is checked at its ends and at
+// its turning point.
+bool crossed_head_string(const Scenario& scenario, const std::vector<Event>& events) {
+  double contact = -1.0;
+  for (const Event& e : events) {
+    if (e.type == EventType::ball_ball && (e.ball == 0 || e.other == 0)) {
+      contact = e.time;
+      break;
+    }
+  }
+  if (contact < 0.0) return false;
+  const double line = scenario.table.head_spot.x;
+  Simulation sim(scenario);
+  for (std::size_t guard = 0; guard <= events.size() + 1; ++guard) {
+    const Simulation::Trajectory& tr = sim.trajectory(0);
+    const double from = sim.time();
+    const double to = std::min({sim.next_event_time(), contact, tr.t_end});
+    const auto x_at = [&](double t) {
+      const double dt = t - tr.t0;
+      return tr.p0.x + tr.v0.x * dt + 0.5 * tr.acc.x * dt * dt;
+    };
+    double most = std::max(x_at(from), x_at(to));
+    if (tr.acc.x != 0.0) {
+      const double turn = tr.t0 - tr.v0.x / tr.acc.x;
+      if (turn > from && turn < to) most = std::max(most, x_at(turn));
+    }
+    if (most > line) return true;
+    if (to >= contact) return false;
+    sim.advance_to(to);
+  }
+  return false;
+}
+
 // Turn bookkeeping shared by the rulings.
 void pass_turn(GameState& s) {
   s.player = 1 - s.player;
@@ -531,8 +568,9 @@ Outcome Rules::apply(const GameState& state, const Action& action) const {
         foul(Foul::no_contact);
       } else if (!has(targets, f.first_hit)) {
         foul(Foul::wrong_ball_first);
-      } else if (state.kitchen_shot && state.position[static_cast<std::size_t>(f.first_hit)].x <=
-                                           head_string()) {
+      } else if (state.kitchen_shot &&
+                 state.position[static_cast<std::size_t>(f.first_hit)].x <= head_string() &&
+                 !crossed_head_string(shot_scenario(state, shot.strike), out.events)) {
         foul(Foul::behind_head_string);
       }
       if (f.first_hit >= 0 && objects.empty() && !f.cushion_after_contact) foul(Foul::no_rail);
