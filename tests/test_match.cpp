@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -86,6 +87,10 @@ void check_short_match(GameType game) {
     EXPECT_EQ(r.config.game, game);
     EXPECT_EQ(r.start.breaker, g % 2) << "breaks alternate";
     EXPECT_EQ(r.seed, mix_seed(o.seed, static_cast<std::uint64_t>(g)));
+    // Baseline players have no noise of their own: both seats shoot with
+    // the match's.
+    EXPECT_EQ(r.noise[0], o.noise);
+    EXPECT_EQ(r.noise[1], o.noise);
     ASSERT_FALSE(r.actions.empty());
     const GameState& end = r.actions.back().after;
     EXPECT_EQ(end.phase, Phase::game_over);
@@ -180,16 +185,35 @@ TEST(Match, SummaryJsonHasEveryField) {
   EXPECT_EQ(j["noise"], "tournament");
   ASSERT_EQ(j["players"].size(), 2u);
   for (const json& p : j["players"]) {
-    for (const char* key : {"name", "games_won", "breaks", "break_and_runs", "innings", "shots",
-                            "balls_pocketed", "balls_per_inning", "fouls"}) {
+    for (const char* key : {"name", "noise", "games_won", "breaks", "break_and_runs", "innings",
+                            "shots", "balls_pocketed", "balls_per_inning", "fouls"}) {
       EXPECT_TRUE(p.contains(key)) << key;
     }
     EXPECT_EQ(p["name"], "baseline");
+    EXPECT_EQ(p["noise"], "tournament");  // the baseline has none of its own: the match's
     for (const char* foul : {"scratch", "no_contact", "wrong_ball_first", "no_rail",
                              "illegal_break", "behind_head_string"}) {
       EXPECT_TRUE(p["fouls"].contains(foul)) << foul;
     }
   }
+}
+
+TEST(Match, SummaryPlayerNoiseIsTheEffectiveNoise) {
+  MatchOptions o = options(GameType::nine_ball, 1, 5);
+  o.noise = parse_noise("2x");
+  const MatchSummary s = empty_summary(o);
+  EXPECT_EQ(s.noise, o.noise);
+  EXPECT_EQ(s.players[0].noise, "2x");
+  EXPECT_EQ(s.players[1].noise, "2x");
+  // The key order of a player: its name, then its noise.
+  const ojson j = ojson::parse(match_summary_json(s));
+  EXPECT_EQ(j["noise"], "2x");
+  auto key = j["players"][0].begin();
+  EXPECT_EQ(key.key(), "name");
+  ++key;
+  EXPECT_EQ(key.key(), "noise");
+  o.players[1] = "nobody";
+  EXPECT_THROW((void)empty_summary(o), std::invalid_argument);
 }
 
 TEST(Match, StalemateLimitEndsInADraw) {
@@ -239,6 +263,77 @@ class Stubborn : public Player {
     return Decide{Choice::respot_eight};
   }
 };
+
+/// The baseline player's choices with a noise of its own.
+class OwnNoise : public Player {
+ public:
+  explicit OwnNoise(NoiseModel noise) : noise_(noise) {}
+  std::string name() const override { return "own-noise"; }
+  Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) override {
+    return inner_->decide(rules, state, seed);
+  }
+  std::optional<NoiseModel> noise() const override { return noise_; }
+
+ private:
+  std::unique_ptr<Player> inner_ = make_player("baseline");
+  NoiseModel noise_;
+};
+
+TEST(Match, PlayerWithItsOwnNoiseShootsWithIt) {
+  GameConfig config;
+  config.game = GameType::nine_ball;
+  const Rules rules(config);
+  OwnNoise steady{NoiseModel{}};  // no noise at all, in a tournament-noise match
+  auto baseline = make_player("baseline");
+  const NoiseModel match_noise = parse_noise("tournament");
+  for (const int seat : {0, 1}) {
+    Player& p0 = seat == 0 ? static_cast<Player&>(steady) : *baseline;
+    Player& p1 = seat == 0 ? *baseline : static_cast<Player&>(steady);
+    const GameRecord r = play_game(rules, p0, p1, 0, 77, match_noise);
+    const auto own = static_cast<std::size_t>(seat);
+    EXPECT_EQ(r.noise[own], NoiseModel{}) << seat;
+    EXPECT_EQ(r.noise[1 - own], match_noise) << seat;
+
+    int own_shots = 0;
+    int other_shots = 0;
+    for (const RecordedAction& ra : r.actions) {
+      const auto* shot = std::get_if<Shoot>(&ra.action);
+      if (shot == nullptr) continue;
+      ASSERT_TRUE(ra.intended.has_value());
+      if (ra.player == seat) {
+        ++own_shots;
+        EXPECT_TRUE(identical(shot->strike, *ra.intended)) << "seat " << seat;
+      } else {
+        ++other_shots;
+        EXPECT_FALSE(identical(shot->strike, *ra.intended)) << "seat " << seat;
+      }
+    }
+    EXPECT_GT(own_shots, 0) << seat;
+    EXPECT_GT(other_shots, 0) << seat;
+
+    // The record replays identical, in memory and through the file.
+    ReplayReport rep = replay(r);
+    EXPECT_TRUE(rep.identical) << seat << ": " << rep.message;
+    const std::string text = write_record(r);
+    auto parsed = read_record(text);
+    ASSERT_TRUE(std::holds_alternative<GameRecord>(parsed));
+    EXPECT_TRUE(std::get<GameRecord>(parsed) == r);
+    EXPECT_EQ(write_record(std::get<GameRecord>(parsed)), text);
+    rep = replay(std::get<GameRecord>(parsed));
+    EXPECT_TRUE(rep.identical) << seat << ": " << rep.message;
+
+    // A record claiming the match's noise for that seat too does not.
+    GameRecord tampered = r;
+    tampered.noise[own] = match_noise;
+    rep = replay(tampered);
+    EXPECT_FALSE(rep.identical) << seat;
+    ASSERT_TRUE(rep.action.has_value());
+    EXPECT_EQ(r.actions[*rep.action].player, seat);
+    EXPECT_TRUE(std::holds_alternative<Shoot>(r.actions[*rep.action].action));
+    const std::string strike_path = "actions[" + std::to_string(*rep.action) + "].action.strike";
+    EXPECT_EQ(rep.where.substr(0, strike_path.size()), strike_path) << rep.where;
+  }
+}
 
 TEST(Match, RefusedActionStopsTheGameNamingThePlayer) {
   const Rules rules(GameConfig{});

@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include <nlohmann/json.hpp>
@@ -35,7 +36,7 @@ GameRecord sample_record() {
   r.config.max_shots = 123;
   r.players = {"baseline", "a \"quoted\" name \xc3\xa9\\"};
   r.seed = std::numeric_limits<std::uint64_t>::max();
-  r.noise = {0.125, 0.1, 0.075, 0.0005, 0.0005};
+  r.noise = {NoiseModel{0.125, 0.1, 0.075, 0.0005, 0.0005}, NoiseModel{0.25, 0.0, 1e-300, 0.0, 0.001}};
 
   GameState s;
   s.game = GameType::nine_ball;
@@ -130,6 +131,8 @@ TEST(RecordIo, RoundTripGivesAnEqualRecord) {
   EXPECT_EQ(back.start.rack_seed, (std::uint64_t{1} << 63) + 5);
   EXPECT_EQ(back.actions[1].noise_seed, (std::uint64_t{1} << 53) + 1);
   EXPECT_EQ(back.players, r.players);
+  EXPECT_EQ(back.noise[0], r.noise[0]);  // per seat, in seat order
+  EXPECT_EQ(back.noise[1], r.noise[1]);
   EXPECT_TRUE(back.start == r.start);
   EXPECT_TRUE(std::signbit(back.start.position[1].x));
   EXPECT_EQ(back.start.position[1].y, 1e-300);
@@ -159,6 +162,9 @@ TEST(RecordIo, OneActionPerLine) {
   // "{", 7 header lines, "actions": [, 3 actions, "]", "}".
   EXPECT_EQ(lines, 1u + 7u + 1u + 3u + 1u + 1u) << text;
   EXPECT_NE(text.find("\n  \"seed\": \"18446744073709551615\",\n"), std::string::npos);
+  // The noise per seat, on one line.
+  EXPECT_NE(text.find("\n  \"noise\": [{\"phi\":0.125,"), std::string::npos) << text;
+  EXPECT_NE(text.find("},{\"phi\":0.25,"), std::string::npos) << text;
 }
 
 TEST(RecordIo, RecordWithoutActions) {
@@ -181,6 +187,12 @@ TEST(RecordIo, EqualityIsBitwise) {
   EXPECT_FALSE(other == r);
   other = r;
   other.config.max_shots += 1;
+  EXPECT_FALSE(other == r);
+  other = r;
+  other.noise[1].theta = -0.0;  // -0 is not +0 here either
+  EXPECT_FALSE(other == r);
+  other = r;
+  std::swap(other.noise[0], other.noise[1]);
   EXPECT_FALSE(other == r);
 }
 
@@ -249,7 +261,14 @@ TEST(RecordIo, MalformedRecordsNameThePath) {
       {"intended on a decision",
        [](ojson& j) { j["actions"][2]["intended"] = j["actions"][1]["intended"]; },
        "actions[2].intended", "only a shot"},
-      {"negative noise", [](ojson& j) { j["noise"]["speed"] = -0.1; }, "noise.speed", ">= 0"},
+      {"negative noise", [](ojson& j) { j["noise"][1]["speed"] = -0.1; }, "noise[1].speed",
+       ">= 0"},
+      {"one noise for both seats", [](ojson& j) { j["noise"] = j["noise"][0]; }, "noise",
+       "expected an array, not an object"},
+      {"noise of one seat", [](ojson& j) { j["noise"].erase(1); }, "noise",
+       "expected an array of 2"},
+      {"noise field missing", [](ojson& j) { j["noise"][0].erase("b"); }, "noise[0].b",
+       "missing required field"},
       {"format", [](ojson& j) { j["format"] = "breakshot-scenario"; }, "format",
        "breakshot-game-record"},
       {"version", [](ojson& j) { j["version"] = 2; }, "version", "not version 2"},
@@ -394,12 +413,47 @@ TEST(RecordReplay, TamperedStrikeIsNamed) {
   EXPECT_EQ(rep.where.substr(0, (action_path(k) + ".action.strike").size()),
             action_path(k) + ".action.strike");
 
-  // So does a different noise model (at the first shot).
+  // So does a different noise model of the acting seat (at the first shot).
   r = played_game();
-  r.noise.phi *= 2.0;
+  const std::size_t b = first_shot(r);
+  r.noise[static_cast<std::size_t>(r.actions[b].player)].phi *= 2.0;
   rep = replay(r);
   EXPECT_FALSE(rep.identical);
-  EXPECT_EQ(rep.where, action_path(first_shot(r)) + ".action.strike.phi");
+  EXPECT_EQ(rep.where, action_path(b) + ".action.strike.phi");
+  EXPECT_NE(rep.message.find("noise[" + std::to_string(r.actions[b].player) + "]"),
+            std::string::npos)
+      << rep.message;
+}
+
+TEST(RecordReplay, TamperedNoiseOfTheOtherSeatIsNamedAtItsFirstShot) {
+  GameRecord r = played_game();
+  const int breaker = r.actions[first_shot(r)].player;
+  const int other = 1 - breaker;
+  std::size_t k = r.actions.size();
+  for (std::size_t i = 0; i < r.actions.size(); ++i) {
+    if (r.actions[i].player == other && std::holds_alternative<Shoot>(r.actions[i].action)) {
+      k = i;
+      break;
+    }
+  }
+  ASSERT_LT(k, r.actions.size()) << "the other seat never shot";
+  r.noise[static_cast<std::size_t>(other)].speed *= 2.0;
+  const ReplayReport rep = replay(r);
+  EXPECT_FALSE(rep.identical);
+  EXPECT_EQ(rep.action, k);  // the breaker's shots before it still replay
+  EXPECT_EQ(rep.actions_identical, k);
+  EXPECT_EQ(rep.where, action_path(k) + ".action.strike.speed");
+
+  // The two seats' models swapped: both tournament here, so nothing changes...
+  r = played_game();
+  ASSERT_EQ(r.noise[0], r.noise[1]);
+  std::swap(r.noise[0], r.noise[1]);
+  EXPECT_TRUE(replay(r).identical);
+  // ...but a seat without noise is caught at its first shot.
+  r.noise[static_cast<std::size_t>(breaker)] = NoiseModel{};
+  const ReplayReport none = replay(r);
+  EXPECT_FALSE(none.identical);
+  EXPECT_EQ(none.action, first_shot(r));
 }
 
 TEST(RecordReplay, TamperedStartIsNamed) {

@@ -4,6 +4,8 @@
 //   breakshot simulate FILE|- [-o PATH] [--plot PREFIX]
 //   breakshot match --game eight_ball|nine_ball --players A,B --games N
 //                   --seed S --noise LEVEL [--table 7ft|8ft|9ft] [--records DIR]
+//     (--noise is the noise of players without one of their own; AI levels
+//     shoot with their level's noise)
 //   breakshot replay RECORD|-
 //
 // Exit status of simulate (shared/contract/scenario-format.md): 0 the run
@@ -324,7 +326,8 @@ int main(int argc, char** argv) {
       ->type_name("S")
       ->required();
   match->add_option("--noise", match_args.noise,
-                    "Shot noise: none, tournament, <k>x (k times tournament) or "
+                    "Shot noise of players without a noise of their own (the baseline): "
+                    "none, tournament, <k>x (k times tournament) or "
                     "custom:phi=..,theta=..,speed=..,a=..,b=..")
       ->type_name("LEVEL")
       ->required();
@@ -334,6 +337,9 @@ int main(int argc, char** argv) {
                     "Write each game's record to DIR/game-0001.json, ... (DIR is created)")
       ->type_name("DIR");
   match->footer(
+      "--noise is the baseline noise: AI levels shoot with their level's own noise\n"
+      "(docs/ai.md), whatever --noise says. The summary gives each player's noise.\n"
+      "\n"
       "Exit status:\n"
       "  0  played; the summary JSON is on standard output\n"
       "  2  a bad argument (unknown game, player or table, games < 1, bad seed\n"

@@ -19,13 +19,15 @@
 namespace breakshot {
 
 /// Plays one game to its end. `breaker` (0 or 1) breaks the first rack;
-/// the rack comes from a seed derived from `game_seed`. For action i the
+/// the rack comes from a seed derived from `game_seed`. Each seat shoots
+/// with its player's own noise (Player::noise()) or, for a player without
+/// one, with `noise`; the record keeps both seats' noise. For action i the
 /// acting player decides with a seed derived from game_seed and i, and a
-/// shot is played as perturb(strike, noise, ball radius, noise_seed) with
-/// noise_seed = mix_seed(game_seed, i). Throws std::logic_error naming
-/// the player and the reason if a player chooses an action the rules
-/// refuse, or if the game runs far beyond the rules' max_shots (a guard:
-/// the stalemate clause should have ended it).
+/// shot is played as perturb(strike, the seat's noise, ball radius,
+/// noise_seed) with noise_seed = mix_seed(game_seed, i). Throws
+/// std::logic_error naming the player and the reason if a player chooses
+/// an action the rules refuse, or if the game runs far beyond the rules'
+/// max_shots (a guard: the stalemate clause should have ended it).
 GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
                      std::uint64_t game_seed, const NoiseModel& noise);
 
@@ -35,6 +37,7 @@ struct MatchOptions {
   std::array<std::string, 2> players;  ///< make_player names
   int games = 1;
   std::uint64_t seed = 0;
+  /// The noise of players without a noise of their own (Player::noise()).
   NoiseModel noise;
   /// Where to write each game's record (game-0001.json, ...); created if
   /// missing. Empty: no records.
@@ -45,6 +48,9 @@ struct MatchOptions {
 /// player's own actions.
 struct PlayerStats {
   std::string name;
+  /// The noise the player's shots are played with, as a to_string(NoiseModel)
+  /// spec: its own (Player::noise()), else the match's.
+  std::string noise;
   int games_won = 0;
   /// Break shots taken (a break after a re-rack counts again).
   int breaks = 0;
@@ -73,14 +79,16 @@ struct MatchSummary {
   GameType game = GameType::eight_ball;
   std::string table_size = "9ft";
   std::uint64_t seed = 0;
-  NoiseModel noise;
+  NoiseModel noise;  ///< the match's noise (MatchOptions::noise)
   int games_played = 0;
   int draws = 0;  ///< games ended by the stalemate clause
   std::array<PlayerStats, 2> players;
 };
 
-/// A summary with no games yet: the options' settings and player names,
-/// every foul kind at 0.
+/// A summary with no games yet: the options' settings, the player names
+/// and each player's effective noise (make_player(name)->noise(), else
+/// options.noise), every foul kind at 0. Throws std::invalid_argument for
+/// an unknown player name.
 MatchSummary empty_summary(const MatchOptions& options);
 
 /// Adds a finished game (phase game_over at the end) to the summary; the

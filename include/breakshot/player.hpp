@@ -3,10 +3,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "breakshot/game.hpp"
+#include "breakshot/noise.hpp"
 
 namespace breakshot {
 
@@ -17,6 +19,9 @@ class Player {
   /// A legal action for the player to act in `state` (never a game over
   /// state). `seed` is for any randomness the player uses.
   virtual Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) = 0;
+  /// The noise this player's shots are played with when it has its own
+  /// (the AI levels, docs/ai.md); nullopt: the match's noise.
+  virtual std::optional<NoiseModel> noise() const { return std::nullopt; }
 };
 
 /// The baseline player: ghost-ball aim at every legal ball and pocket,

@@ -1,11 +1,11 @@
 // Game records: every action of one game with its ruling and the state
 // after it, enough to replay the game and check it bit for bit.
 //
-// A record holds the seeds and the noise model as well as the strikes:
-// the executed strike of a shot is perturb(intended, noise, radius,
-// noise_seed), so replay() can check that the noise was applied as
-// claimed, and then that the rules, given the same actions, rule the same
-// and leave the same balls in the same places. The file format is
+// A record holds the seeds and each seat's noise model as well as the
+// strikes: the executed strike of a shot is perturb(intended, noise of the
+// acting seat, radius, noise_seed), so replay() can check that the noise
+// was applied as claimed, and then that the rules, given the same
+// actions, rule the same and leave the same balls in the same places. The file format is
 // described at the top of src/io/record_json.cpp.
 #pragma once
 
@@ -48,7 +48,9 @@ struct GameRecord {
   GameConfig config;
   std::array<std::string, 2> players;  ///< names, by seat
   std::uint64_t seed = 0;              ///< the game's seed (match.hpp derives the rest from it)
-  NoiseModel noise;
+  /// The noise each seat's shots were played with, by seat (a player's
+  /// own, or the match's for a player without one).
+  std::array<NoiseModel, 2> noise;
   GameState start;  ///< the initial rack and whose break: Rules::start(start.rack_seed, start.breaker)
   std::vector<RecordedAction> actions;
 
@@ -106,10 +108,10 @@ struct ReplayReport {
 
 /// Plays the record again: rebuilds the rules from the config, checks the
 /// start against Rules::start, re-derives every executed strike from the
-/// intended one and the noise (shots recorded without an intended strike
-/// are taken as they are), checks who acts, applies every action and
-/// compares each ruling and state with the recorded ones. Stops at the first
-/// difference. Never throws for a bad record: an action the rules refuse
+/// intended one and the acting seat's noise (shots recorded without an
+/// intended strike are taken as they are), checks who acts, applies every
+/// action and compares each ruling and state with the recorded ones. Stops
+/// at the first difference. Never throws for a bad record: an action the rules refuse
 /// or a config they cannot build is reported as a difference.
 ReplayReport replay(const GameRecord& record);
 

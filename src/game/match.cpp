@@ -6,11 +6,16 @@
 // kPlayerStream), i); the rack comes from mix_seed(game_seed ^
 // kRackStream, 0). The stream tags keep the three apart.
 //
+// Noise: each seat shoots with its player's own noise (Player::noise(),
+// the AI levels) or, for a player without one, with the match's; the
+// record keeps both seats' noise, so replay() needs no player.
+//
 // The per-player figures are computed from the records alone (add_game),
 // so any set of saved records can be summed up the same way.
 
 #include "breakshot/match.hpp"
 
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -74,6 +79,27 @@ int pocketed_by_shot(const GameState& before, const RecordedAction& ra) {
   return n;
 }
 
+/// The noise `p`'s shots are played with: its own, else the match's.
+NoiseModel effective_noise(const Player& p, const NoiseModel& match_noise) {
+  return p.noise().value_or(match_noise);
+}
+
+/// empty_summary with the players' effective noise already known.
+MatchSummary empty_summary_with(const MatchOptions& options,
+                                const std::array<NoiseModel, 2>& noise) {
+  MatchSummary s;
+  s.game = options.game;
+  s.table_size = options.table_size;
+  s.seed = options.seed;
+  s.noise = options.noise;
+  for (std::size_t p = 0; p < 2; ++p) {
+    s.players[p].name = options.players[p];
+    s.players[p].noise = to_string(noise[p]);
+    for (const Foul f : kFoulKinds) s.players[p].fouls[std::string(to_string(f))] = 0;
+  }
+  return s;
+}
+
 void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out) throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
@@ -94,7 +120,7 @@ GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
   record.config = rules.config();
   record.players = {p0.name(), p1.name()};
   record.seed = game_seed;
-  record.noise = noise;
+  record.noise = {effective_noise(p0, noise), effective_noise(p1, noise)};
   record.start = rules.start(mix_seed(game_seed ^ kRackStream, 0), breaker);
 
   Player* const seats[2] = {&p0, &p1};
@@ -122,7 +148,8 @@ GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
     }
     if (auto* shoot = std::get_if<Shoot>(&ra.action)) {
       ra.intended = shoot->strike;
-      shoot->strike = perturb(shoot->strike, noise, radius, ra.noise_seed);
+      shoot->strike = perturb(shoot->strike, record.noise[static_cast<std::size_t>(seat)], radius,
+                              ra.noise_seed);
     }
     Outcome out;
     try {
@@ -146,16 +173,11 @@ double PlayerStats::balls_per_inning() const {
 }
 
 MatchSummary empty_summary(const MatchOptions& options) {
-  MatchSummary s;
-  s.game = options.game;
-  s.table_size = options.table_size;
-  s.seed = options.seed;
-  s.noise = options.noise;
+  std::array<NoiseModel, 2> noise;
   for (std::size_t p = 0; p < 2; ++p) {
-    s.players[p].name = options.players[p];
-    for (const Foul f : kFoulKinds) s.players[p].fouls[std::string(to_string(f))] = 0;
+    noise[p] = effective_noise(*make_player(options.players[p]), options.noise);
   }
-  return s;
+  return empty_summary_with(options, noise);
 }
 
 void add_game(MatchSummary& summary, const GameRecord& record) {
@@ -225,7 +247,8 @@ MatchSummary play_match(const MatchOptions& options) {
     if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
   }
 
-  MatchSummary summary = empty_summary(options);
+  MatchSummary summary = empty_summary_with(
+      options, {effective_noise(*p0, options.noise), effective_noise(*p1, options.noise)});
   for (int g = 0; g < options.games; ++g) {
     const GameRecord record = play_game(rules, *p0, *p1, g % 2,
                                         mix_seed(options.seed, static_cast<std::uint64_t>(g)),
@@ -253,6 +276,7 @@ std::string match_summary_json(const MatchSummary& s) {
   for (const PlayerStats& p : s.players) {
     ojson o = ojson::object();
     o["name"] = p.name;
+    o["noise"] = p.noise;
     o["games_won"] = p.games_won;
     o["breaks"] = p.breaks;
     o["break_and_runs"] = p.break_and_runs;

@@ -9,7 +9,7 @@
 //     "config": {"game", "table_size", "ball_radius", "ball_mass", "max_shots"},
 //     "players": [NAME, NAME],
 //     "seed": "DECIMAL",
-//     "noise": {"phi", "theta", "speed", "a", "b"},
+//     "noise": [NOISE, NOISE],
 //     "start": STATE,
 //     "actions": [
 //       {"player", "action", "intended", "noise_seed", "ruling", "after": STATE},
@@ -17,6 +17,8 @@
 //     ]
 //   }
 //
+//   NOISE   {"phi", "theta", "speed", "a", "b"}: the noise model of a seat's
+//           shots (seat order, as "players"), in noise.hpp's units
 //   STATE   {"game", "phase", "player", "breaker", "ball_in_hand", "kitchen_shot", "group": [2],
 //            "fouls_in_a_row": [2], "push_out_allowed", "after_push_out",
 //            "scratch_on_break", "winner", "result", "shots", "innings",
@@ -523,7 +525,11 @@ bool RecordReader::read(const json& doc, GameRecord& r) {
     if (!text(players[i], index_path("players", i), r.players[i])) return false;
   }
   if (!seed(doc["seed"], "seed", r.seed)) return false;
-  if (!noise(doc["noise"], "noise", r.noise)) return false;
+  const json& noise_models = doc["noise"];
+  if (!array(noise_models, "noise", 2)) return false;
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (!noise(noise_models[i], index_path("noise", i), r.noise[i])) return false;
+  }
   if (!state(doc["start"], "start", r.start)) return false;
   const json& actions = doc["actions"];
   if (!array(actions, "actions")) return false;
@@ -866,8 +872,8 @@ bool RecordedAction::operator==(const RecordedAction& o) const {
 
 bool GameRecord::operator==(const GameRecord& o) const {
   return identical_config(config, o.config) && players == o.players && seed == o.seed &&
-         identical_noise(noise, o.noise) && identical_state(start, o.start) &&
-         actions == o.actions;
+         identical_noise(noise[0], o.noise[0]) && identical_noise(noise[1], o.noise[1]) &&
+         identical_state(start, o.start) && actions == o.actions;
 }
 
 std::string write_record(const GameRecord& record) {
@@ -885,7 +891,7 @@ std::string write_record(const GameRecord& record) {
       {"config", config_json(record.config)},
       {"players", ojson::array({record.players[0], record.players[1]})},
       {"seed", seed_json(record.seed)},
-      {"noise", noise_json(record.noise)},
+      {"noise", ojson::array({noise_json(record.noise[0]), noise_json(record.noise[1])})},
       {"start", state_json(record.start)},
   };
   std::string out = "{\n";
@@ -982,7 +988,8 @@ ReplayReport replay(const GameRecord& record) {
     if (const auto* shoot = std::get_if<Shoot>(&ra.action); shoot != nullptr && ra.intended) {
       CueStrike executed;
       try {
-        executed = perturb(*ra.intended, record.noise, radius, ra.noise_seed);
+        executed = perturb(*ra.intended, record.noise[static_cast<std::size_t>(ra.player)], radius,
+                           ra.noise_seed);
       } catch (const std::exception& e) {
         report_difference(rep, {member_path(path, "intended"),
                                 shorten(strike_json(*ra.intended).dump()),
@@ -995,7 +1002,8 @@ ReplayReport replay(const GameRecord& record) {
                           difference(strike_json(shoot->strike), strike_json(executed),
                                      member_path(member_path(path, "action"), "strike")),
                           context + ": the executed strike is not the intended one with the "
-                                    "recorded noise");
+                                    "recorded noise of its seat (noise[" +
+                              std::to_string(ra.player) + "])");
         return rep;
       }
     } else if (shoot == nullptr && ra.intended) {
