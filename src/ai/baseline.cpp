@@ -53,6 +53,7 @@
 #include <string_view>
 #include <vector>
 
+#include "breakshot/ai.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/pool.hpp"
@@ -840,8 +841,15 @@ std::unique_ptr<Player> make_baseline_player() { return std::make_unique<Baselin
 
 std::unique_ptr<Player> make_player(std::string_view name) {
   if (name == "baseline") return make_baseline_player();
-  throw std::invalid_argument("unknown player \"" + std::string(name) +
-                              "\" (known players: baseline)");
+  // The AI levels (include/breakshot/ai.hpp) by their names.
+  const std::vector<std::string> levels = ai_level_names();
+  if (std::find(levels.begin(), levels.end(), name) != levels.end()) {
+    return make_ai_player(ai_level(name));
+  }
+  std::string known = "baseline";
+  for (const std::string& l : levels) known += ", " + l;
+  throw std::invalid_argument("unknown player \"" + std::string(name) + "\" (known players: " +
+                              known + ")");
 }
 
 }  // namespace breakshot

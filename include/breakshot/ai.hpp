@@ -1,0 +1,101 @@
+// The AI player (docs/ai.md): shot generation with aim refined on the
+// engine, Monte Carlo evaluation under the player's own execution noise,
+// the value of the table left, and lookahead, in the manner of the
+// computational pool tournament winners (PickPocket, CueCard).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "breakshot/game.hpp"
+#include "breakshot/noise.hpp"
+#include "breakshot/player.hpp"
+
+namespace breakshot {
+
+enum class ShotKind : std::uint8_t {
+  direct,       ///< the cue ball hits `target`, which goes into `pocket`
+  bank,         ///< `target` goes into `pocket` off one cushion
+  kick,         ///< the cue ball reaches `target` off one cushion first
+  combination,  ///< the cue ball hits `first`, which drives `target` into `pocket`
+  safety,       ///< no pot intended: a legal hit that leaves the opponent badly
+  break_shot,   ///< the opening break
+};
+std::string_view to_string(ShotKind k);
+
+/// One shot the player could play, as it would be played without noise.
+struct CandidateShot {
+  ShotKind kind = ShotKind::direct;
+  Shoot shot;       ///< strike, and the call (8-ball) or safety flag
+  int first = -1;   ///< the object ball the cue ball is aimed to hit first
+  int target = -1;  ///< the ball meant to be pocketed (-1 for a safety)
+  int pocket = -1;  ///< the pocket meant (-1 for a safety)
+  /// A cheap a-priori estimate in [0, 1] of how likely the shot succeeds
+  /// (from the geometry), used to rank candidates before any sampling.
+  double prior = 0.0;
+};
+
+struct ShotGenOptions {
+  bool banks = true;
+  bool kicks = true;
+  bool combinations = true;
+  bool safeties = true;
+  /// Cue speeds tried per aim line, as multiples of the least speed that
+  /// carries the target to the pocket (e.g. {1.0, 1.6, 2.4}).
+  std::vector<double> speed_factors{1.0, 1.6, 2.4};
+  /// Vertical tip offsets tried (fractions of R: negative draw, positive
+  /// follow).
+  std::vector<double> spins{-0.4, 0.0, 0.4};
+  /// Secant iterations that correct the aim on noiseless simulations.
+  int refine_iterations = 4;
+  /// At most this many candidates are returned, best priors first.
+  int max_candidates = 120;
+};
+
+/// Candidate shots for the player to act in `state` (phase shot, cue ball
+/// on the table). Pots (direct, bank, combination; kicks at a ball that
+/// can then be pocketed) have their aim refined on noiseless simulations
+/// of the engine, so throw, squirt and cushion physics are accounted for;
+/// a pot is kept only if its noiseless play pockets the target in the
+/// pocket with no foul. Blocked paths are rejected. Safeties and kicks
+/// that merely make a legal hit are added when `options.safeties`. Every
+/// candidate passes Rules::check. Deterministic.
+std::vector<CandidateShot> generate_shots(const Rules& rules, const GameState& state,
+                                          const ShotGenOptions& options);
+
+/// A level of play: the noise the player shoots with and the search it
+/// does.
+struct AiLevel {
+  std::string name;
+  NoiseModel noise;         ///< the noise this player's shots are played with
+  ShotGenOptions generation;
+  int candidates = 12;      ///< candidates evaluated by sampling (best priors first)
+  int samples = 16;         ///< noisy simulations per evaluated candidate
+  /// Value the table left by the opponent's or the player's next shot
+  /// (a second ply), for the best `lookahead_candidates` candidates.
+  bool lookahead = false;
+  int lookahead_candidates = 3;
+  /// Budget per decision in simulations (0: no limit but the above); the
+  /// decision is deterministic for a given seed and this budget.
+  std::int64_t simulation_budget = 0;
+  /// Budget per decision in seconds (0: none). A time budget makes the
+  /// decision depend on the machine's speed; matches for figures use
+  /// simulation budgets.
+  double time_budget = 0.0;
+  /// Worker threads (0: all cores).
+  int threads = 0;
+};
+
+/// `beginner`, `amateur`, `club`, `expert`, `champion` (docs/ai.md).
+/// Throws std::invalid_argument naming the known levels otherwise.
+AiLevel ai_level(std::string_view name);
+std::vector<std::string> ai_level_names();
+
+/// The AI player of `level`. Its noise() is level.noise.
+std::unique_ptr<Player> make_ai_player(const AiLevel& level);
+
+}  // namespace breakshot

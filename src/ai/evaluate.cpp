@@ -1,0 +1,200 @@
+// What a table is worth to the AI player (src/ai/evaluate.hpp).
+//
+// The geometric estimate of a pot follows the usual error propagation of
+// the ghost-ball aim: an aim error e of the cue ball over its run d1 moves
+// the contact sideways by d1 e, which turns the line of centres by
+// d1 e / (2R cos cut), and the object ball misses the pocket centre by d2
+// times that after its run d2. The shot goes in while the miss stays
+// within the pocket's tolerance, which shrinks as the ball comes at the
+// pocket from the side; with a Gaussian aim error the chance is
+// erf(tol / (sqrt 2 sigma_miss)). A mild penalty for the total distance
+// stands for speed and spin errors the formula leaves out. It is an
+// estimate to rank tables by, quick enough to run after every sampled
+// shot; how shots really go is left to the engine.
+#include "evaluate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+namespace breakshot::ai_detail {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+constexpr double kMinSigmaDeg = 0.04;  // the floor of estimate_sigma
+constexpr double kMaxCutCos = 0.17364817766693041;  // cos 80 degrees: thinner cuts are not counted
+// A corner pocket takes a ball whose centre comes within about 0.6 of the
+// capture radius of the centre line when it comes straight down the
+// pocket's bisector (the jaws take the rest); from the side less, and not
+// at all beyond about 60 degrees. A side pocket is wider but its facings
+// turn balls away faster as the angle grows.
+constexpr double kCornerTolerance = 0.6;
+constexpr double kSideTolerance = 0.55;
+constexpr double kCornerMinCos = 0.5;   // 60 degrees
+constexpr double kSideMinCos = 0.47;    // about 62 degrees
+constexpr double kDistancePenalty = 0.08;  // per metre of d1 + d2
+
+/// Distance from p to the segment a-b.
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = norm2(ab);
+  double t = len2 > 0.0 ? dot(p - a, ab) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return norm(p - (a + ab * t));
+}
+
+/// True if no object ball other than `skip` (the cue ball never counts:
+/// it is the ball moving, or gone from its place by then) lies within 2R
+/// of the path a-b of a ball centre.
+bool path_open(const GameState& s, Vec2 a, Vec2 b, int skip, double R) {
+  for (std::size_t n = 1; n < s.on_table.size(); ++n) {
+    if (!s.on_table[n] || static_cast<int>(n) == skip) continue;
+    if (point_segment_distance(s.position[n], a, b) < 2.0 * R) return false;
+  }
+  return true;
+}
+
+/// Unit direction from a pocket into the table: the bisector of a corner,
+/// straight across for a side pocket.
+Vec2 mouth_direction(const Table& t, Vec2 centre, bool* side) {
+  const double sx = centre.x < t.length / 3.0 ? 1.0 : (centre.x > 2.0 * t.length / 3.0 ? -1.0 : 0.0);
+  const double sy = centre.y < t.width / 2.0 ? 1.0 : -1.0;
+  *side = sx == 0.0;
+  const Vec2 d{sx, sy};
+  return d / norm(d);
+}
+
+/// 8-ball: balls of `g` still on the table.
+int group_left(const GameState& s, Group g) {
+  if (g == Group::none) return 0;
+  int n = 0;
+  const std::size_t lo = g == Group::solids ? 1 : 9;
+  for (std::size_t b = lo; b < lo + 7 && b < s.on_table.size(); ++b) n += s.on_table[b];
+  return n;
+}
+
+/// The value of a shot/break phase table to its shooter.
+double shooter_side_value(const Rules& rules, const GameState& s, double sigma) {
+  if (s.phase == Phase::break_shot) return 0.1;  // a fresh rack to break: a small edge
+  double p = 0.0;
+  if (!s.on_table[0] || s.ball_in_hand == BallInHand::anywhere) {
+    p = kBallInHandP;
+  } else if (s.ball_in_hand == BallInHand::kitchen) {
+    p = std::max(kKitchenP, best_pot_estimate(rules, s, sigma));
+  } else {
+    p = best_pot_estimate(rules, s, sigma);
+  }
+  double v = shooter_value(p);
+  if (s.game == GameType::eight_ball) {
+    const int me = s.player;
+    v += kBallProgress * (group_left(s, s.group[static_cast<std::size_t>(1 - me)]) -
+                          group_left(s, s.group[static_cast<std::size_t>(me)]));
+  }
+  return std::clamp(v, -kOpenBound, kOpenBound);
+}
+
+}  // namespace
+
+double estimate_sigma(const NoiseModel& noise) { return std::max(noise.phi, kMinSigmaDeg); }
+
+int worker_count(int requested, std::size_t units) {
+  int n = requested;
+  if (n <= 0) n = static_cast<int>(std::thread::hardware_concurrency());
+  n = std::max(n, 1);
+  if (units < static_cast<std::size_t>(n)) n = static_cast<int>(std::max<std::size_t>(units, 1));
+  return n;
+}
+
+double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
+                              bool kitchen_shot, double sigma_phi_deg) {
+  if (state.phase != Phase::shot) return 0.0;
+  const Table& table = rules.table();
+  const double R = rules.config().ball_radius;
+  const double e = sigma_phi_deg * kDeg;
+  const double head = rules.head_string();
+  const std::vector<int> targets = rules.legal_actions(state).targets;
+  double best = 0.0;
+  for (const int t : targets) {
+    const Vec2 b = state.position[static_cast<std::size_t>(t)];
+    if (kitchen_shot && b.x <= head) continue;  // must first hit a ball beyond the head string
+    for (const Pocket& pk : table.pockets) {
+      const Vec2 to = pk.centre - b;
+      const double dist = norm(to);
+      if (dist <= pk.radius) continue;
+      const Vec2 u = to / dist;
+      bool side = false;
+      const Vec2 mouth = mouth_direction(table, pk.centre, &side);
+      const double cos_alpha = -dot(u, mouth);
+      if (cos_alpha < (side ? kSideMinCos : kCornerMinCos)) continue;
+      const double tol = side ? kSideTolerance * pk.radius * std::pow(cos_alpha, 1.5)
+                              : kCornerTolerance * pk.radius * cos_alpha;
+      const double d2 = std::max(dist - pk.radius, 0.01);
+      if (!path_open(state, b, b + u * d2, t, R)) continue;
+      const Vec2 ghost = b - u * (2.0 * R);
+      if (wall_clearance(table, ghost, R) < 0.0) continue;
+      const Vec2 run = ghost - cue;
+      const double d1 = norm(run);
+      if (d1 < 1e-6) continue;
+      const double cos_cut = dot(run / d1, u);
+      if (cos_cut < kMaxCutCos) continue;
+      if (!path_open(state, cue, ghost, t, R)) continue;
+      const double miss = std::max(e * d1 * d2 / (2.0 * R * cos_cut), 1e-9);
+      double p = std::erf(tol / (std::sqrt(2.0) * miss));
+      p /= 1.0 + kDistancePenalty * (d1 + d2);
+      best = std::max(best, p);
+    }
+  }
+  return best;
+}
+
+double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg) {
+  if (!state.on_table[0]) return 0.0;
+  return best_pot_estimate_from(rules, state, state.position[0], state.kitchen_shot,
+                                sigma_phi_deg);
+}
+
+double position_value(const Rules& rules, const GameState& after, int me, double sigma) {
+  const auto mine = [&](int who, double v) { return who == me ? v : -v; };
+  switch (after.phase) {
+    case Phase::game_over:
+      if (after.winner < 0) return 0.0;
+      return after.winner == me ? 1.0 : -1.0;
+    case Phase::break_shot:
+    case Phase::shot:
+      return mine(after.player, shooter_side_value(rules, after, sigma));
+    case Phase::push_out_choice: {
+      // The chooser takes the better of shooting from here and making the
+      // pusher shoot from here.
+      GameState as_shot = after;
+      as_shot.phase = Phase::shot;
+      as_shot.ball_in_hand = BallInHand::none;
+      const int chooser = after.player;
+      as_shot.player = chooser;
+      const double take = shooter_side_value(rules, as_shot, sigma);
+      as_shot.player = 1 - chooser;
+      const double pass = -shooter_side_value(rules, as_shot, sigma);
+      return mine(chooser, std::max(take, pass));
+    }
+    case Phase::illegal_break_choice:
+      // The incoming player picks the best of three: an edge to him.
+      return mine(after.player, 0.2);
+    case Phase::eight_on_break_choice:
+      return mine(after.player, 0.3);
+  }
+  return 0.0;
+}
+
+double sample_shot(const Rules& rules, const GameState& state, const Shoot& shot,
+                   const NoiseModel& noise, std::uint64_t seed, double sigma,
+                   GameState* after) {
+  Shoot played = shot;
+  played.strike = perturb(shot.strike, noise, rules.config().ball_radius, seed);
+  Outcome out = rules.apply(state, played);
+  const double v = position_value(rules, out.state, state.player, sigma);
+  if (after) *after = std::move(out.state);
+  return v;
+}
+
+}  // namespace breakshot::ai_detail

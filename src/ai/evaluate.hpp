@@ -1,0 +1,114 @@
+// Internals of the AI player (src/ai/ai_player.cpp): what a table is
+// worth, shots played out under noise, and the deterministic parallel
+// map the sampling runs on. Not part of the public API.
+//
+// Values are from the deciding player's side, in [-1, 1]: 1 a won game,
+// -1 a lost one. Between shots a table is worth about what its shooter's
+// best pot promises (position_value), so a successful shot is worth the
+// next shot it leaves and a miss the negative of the opponent's.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <thread>
+#include <vector>
+
+#include "breakshot/game.hpp"
+#include "breakshot/noise.hpp"
+
+namespace breakshot::ai_detail {
+
+/// Value of being the shooter with a best pot of estimated success p in
+/// [0, 1]: kShooterBase + kShooterGain p. With nothing on (p = 0) the
+/// shooter still plays a safety and loses little, so the base is only a
+/// little below 0; a sure pot with a good table is worth most of a rack.
+inline constexpr double kShooterBase = -0.1;
+inline constexpr double kShooterGain = 0.85;
+/// What p a shooter with the cue ball in hand anywhere is given: nearly
+/// any table has an easy pot from some place. Behind the head string less.
+inline constexpr double kBallInHandP = 0.9;
+inline constexpr double kKitchenP = 0.55;
+/// 8-ball: each ball of the shooter's group still up, counted against
+/// the opponent's, moves the value by this much (progress toward the 8).
+inline constexpr double kBallProgress = 0.06;
+/// Values short of a decided game stay within this bound, so a win or a
+/// loss always dominates.
+inline constexpr double kOpenBound = 0.95;
+
+/// The shooter's value for a best pot p (above).
+inline double shooter_value(double p) { return kShooterBase + kShooterGain * p; }
+
+/// Geometric estimate in [0, 1] of the best pot the player to act in
+/// `state` (phase shot, cue ball on the table) has: ghost-ball aim at
+/// each legal ball and pocket with open paths, succeeding when the aim
+/// error (sigma `sigma_phi_deg`, carried through the cut to the object
+/// ball) keeps the object ball within the pocket's tolerance. A few
+/// microseconds; it sees no throw, kisses or speed, which is what the
+/// sampling is for.
+double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg);
+
+/// The same with the cue ball at `cue` instead (for choosing placements):
+/// `kitchen_shot` as the rules would set it after the placement.
+double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
+                              bool kitchen_shot, double sigma_phi_deg);
+
+/// What `after` (the table after an action, any phase) is worth to player
+/// `me`: 1 or -1 for a decided game (0 a draw), else the shooter's value
+/// (with the cue ball in hand valued by kBallInHandP or kKitchenP), its
+/// negative when the opponent shoots, and a pessimistic reading of the
+/// decisions the rules may hand the opponent.
+double position_value(const Rules& rules, const GameState& after, int me,
+                      double sigma_phi_deg);
+
+/// Plays `shot` from `state` with the strike perturbed by `noise` under
+/// `seed`, and returns position_value of the result for the shooter. The
+/// resulting state is stored in *after when given.
+double sample_shot(const Rules& rules, const GameState& state, const Shoot& shot,
+                   const NoiseModel& noise, std::uint64_t seed, double sigma_phi_deg,
+                   GameState* after = nullptr);
+
+/// The aim noise (degrees) used for geometric estimates: the model's phi
+/// noise, with a floor so that even a noiseless player ranks easy shots
+/// above hard ones.
+double estimate_sigma(const NoiseModel& noise);
+
+/// Threads to use: `requested`, or all cores for 0, never more than `units`.
+int worker_count(int requested, std::size_t units);
+
+/// Calls fn(i) for i in [0, n) on `threads` threads and returns the
+/// results in index order. Each unit must be a pure function of its index
+/// (its seed derived from the index, never from the thread that runs it),
+/// so the result is the same for any thread count. The first exception a
+/// unit throws is rethrown here.
+template <class T, class Fn>
+std::vector<T> parallel_map(std::size_t n, int threads, Fn&& fn) {
+  std::vector<T> out(n);
+  const int workers = worker_count(threads, n);
+  if (workers <= 1) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = fn(i);
+    return out;
+  }
+  std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
+  const auto work = [&](std::size_t w) {
+    try {
+      for (std::size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) out[i] = fn(i);
+    } catch (...) {
+      errors[w] = std::current_exception();
+      next.store(n);  // the others stop taking units
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(static_cast<std::size_t>(workers - 1));
+  for (int w = 1; w < workers; ++w) pool.emplace_back(work, static_cast<std::size_t>(w));
+  work(0);
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+  return out;
+}
+
+}  // namespace breakshot::ai_detail

@@ -1,0 +1,980 @@
+// Shot generation (include/breakshot/ai.hpp): the candidate shots the AI
+// player chooses from.
+//
+// Every pot is planned geometrically first and then played on the engine.
+// The geometry (ghost ball, cushion bounce points) only gives a
+// starting aim and rejects what cannot work (blocked paths, cuts thinner
+// than 80 degrees, bounces into a jaw). The aim is then corrected on
+// noiseless simulations of the real shot: the ball meant to drop is
+// followed from the contact that sets it moving until its run ends (a
+// pocket, a ball, a cushion beyond the one it is meant to bank off, or a
+// stop), and the signed distance by which the straight continuation of its
+// last motion passes the pocket's aim point is driven to zero by secant
+// steps on phi. Throw, spin-induced curve, squirt-free spin variants and
+// the cushion's real rebound are all inside that simulation, so nothing of
+// them is assumed away. The slope the secant measures (metres of miss per
+// degree of phi) is also the shot's sensitivity to aim error, which gives
+// the prior: the chance that the tournament noise leaves the miss within
+// the pocket's room.
+//
+// The aim is refined once per shot line (least speed, centre ball); each
+// speed and spin variant then starts from that aim and the line's slope
+// and needs a Newton step or two, because throw depends on speed and spin.
+// A candidate is kept only if the noiseless play, run to rest, pockets the
+// target in the intended pocket with the intended first contact and no
+// foul (and, in 8-ball, without the 8 unless it is the target). The run
+// used for the last aim correction is simply continued to rest, so
+// verification costs no extra simulation.
+//
+// Safeties are strikes at legal balls (full to thin, soft to medium) and,
+// when needed, one-rail kicks, all played out; a legal hit with no foul
+// and no scratch is kept and ranked by how little the opponent is left.
+//
+// Nothing here is random and every loop runs in a fixed order, so the
+// same state always gives the same candidates in the same order.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "breakshot/ai.hpp"
+#include "breakshot/game.hpp"
+#include "breakshot/pool.hpp"
+#include "breakshot/simulation.hpp"
+#include "breakshot/table.hpp"
+
+namespace breakshot {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The pool model's defaults (docs/physics.md), for speed estimates only:
+// the simulations use the scenario's own values.
+constexpr double kGravity = 9.81;
+constexpr double kSlidingFriction = 0.2;
+constexpr double kRollingFriction = 0.01;
+constexpr double kBallBallRestitution = 0.95;
+constexpr double kRailRetention = 0.7;  // speed kept through a cushion, roughly
+
+constexpr double kMaxCut = 80.0 * kDeg;       // thinner direct cuts are hopeless
+constexpr double kMaxBankCut = 70.0 * kDeg;   // banks, kicks and combinations
+constexpr double kMaxComboCut = 60.0 * kDeg;  // each contact of a combination
+constexpr double kBallMargin = 0.001;         // m beyond 2R between a path and a ball
+constexpr double kWallMargin = 0.001;         // m beyond R between a path and a cushion
+constexpr double kArrival = 0.5;              // m/s the target keeps at the pocket
+constexpr double kMinCueSpeed = 0.8;          // m/s
+constexpr double kMaxPotSpeed = 9.0;          // m/s: faster least speeds are not tried
+constexpr double kAcceptMiss = 0.0008;        // m: aim good enough, stop refining
+constexpr double kMaxStep = 2.0;              // degrees a secant step may turn the aim
+// Effective phi noise (degrees) for priors: tournament phi noise 0.125
+// plus about as much again from tip-offset squirt and speed-dependent throw.
+constexpr double kSigmaAim = 0.17;
+
+Vec2 unit(Vec2 v) { return v / norm(v); }
+
+Vec2 rotate(Vec2 v, double angle) {
+  const double c = std::cos(angle);
+  const double s = std::sin(angle);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+double phi_of(Vec2 v) { return std::atan2(v.y, v.x) / kDeg; }
+
+bool segments_cross(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
+  const double d1 = cross(q1 - q0, p0 - q0);
+  const double d2 = cross(q1 - q0, p1 - q0);
+  const double d3 = cross(p1 - p0, q0 - p0);
+  const double d4 = cross(p1 - p0, q1 - p0);
+  return ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) &&
+         ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0));
+}
+
+/// Distance between the segments p0-p1 and q0-q1.
+double segments_distance(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
+  if (segments_cross(p0, p1, q0, q1)) return 0.0;
+  return std::min({segment_distance(p0, q0, q1), segment_distance(p1, q0, q1),
+                   segment_distance(q0, p0, p1), segment_distance(q1, p0, p1)});
+}
+
+/// Distance from the segment a-b to a wall piece; an arc counts as its
+/// whole circle, which errs on the side of caution.
+double wall_distance(const Wall& w, Vec2 a, Vec2 b) {
+  switch (w.kind) {
+    case WallKind::segment:
+      return segments_distance(a, b, w.a, w.b);
+    case WallKind::corner:
+      return segment_distance(w.a, a, b);
+    case WallKind::arc:
+      return std::max(segment_distance(w.a, a, b) - w.radius, 0.0);
+  }
+  return 0.0;
+}
+
+double standard_normal_within(double x) { return std::erf(x / std::sqrt(2.0)); }
+
+/// Where the balls are: the state's, or a layout left by a simulated shot.
+struct Layout {
+  std::vector<Vec2> pos;
+  std::vector<std::uint8_t> on;
+};
+
+/// A ball's path into a pocket: the point aimed at and its room.
+struct Approach {
+  Vec2 aim;             ///< aim point near the pocket centre
+  Vec2 dir;             ///< unit direction of the final leg
+  double length = 0.0;  ///< from the leg's start to the capture circle
+  double room = 0.0;    ///< m the leg may move sideways before a jaw
+};
+
+/// What a probe of a shot measured on the engine.
+struct Probe {
+  bool ok = false;       ///< the watched run happened and gives a measure
+  double miss = 0.0;     ///< signed lateral miss at the aim point (m)
+  bool reached = false;  ///< the watched ball got as far as the aim line
+};
+
+/// Which run of which ball a probe follows, and against what line.
+struct Watch {
+  int ball = -1;          ///< scenario index of the watched ball
+  bool from_start = false;  ///< run starts at the strike (the cue ball)
+  int pass_cushions = 0;  ///< cushion contacts the run goes through
+  Vec2 aim;               ///< the run should pass through here...
+  Vec2 dir;               ///< ...moving this way
+};
+
+/// One shot line before its speed and spin variants.
+struct Line {
+  ShotKind kind = ShotKind::direct;
+  int first = -1;
+  int target = -1;
+  int pocket = -1;
+  double phi = 0.0;          ///< geometric aim, degrees
+  double speed = 0.0;        ///< least cue speed estimate, m/s
+  double room = 0.0;         ///< m of room at the pocket
+  double geo_prior = 0.0;    ///< prior from geometry alone, for ordering
+  double prior_scale = 1.0;  ///< what the slope cannot see (cushion, kicks)
+  Watch watch;               ///< the target's run into the pocket
+  std::optional<Watch> pre;  ///< kicks: the cue ball's run off the rail first
+};
+
+class Generator {
+ public:
+  Generator(const Rules& rules, const GameState& state, const ShotGenOptions& options)
+      : rules_(rules),
+        state_(state),
+        opt_(options),
+        table_(rules.table()),
+        R_(rules.config().ball_radius),
+        m_(rules.config().ball_mass),
+        eight_(state.game == GameType::eight_ball) {
+    layout_.pos = state.position;
+    layout_.on = state.on_table;
+    la_ = rules.legal_actions(state);
+    for (int t : la_.targets) {
+      if (t <= 0 || t >= static_cast<int>(state.on_table.size()) || !on(t)) continue;
+      // From the kitchen, a ball behind the head string is fair only once
+      // the cue ball has crossed it; such shots are not planned.
+      if (state.kitchen_shot && pos(t).x <= rules.head_string()) continue;
+      targets_.push_back(t);
+    }
+    CueStrike unit_strike;
+    unit_strike.speed = 1.0;
+    launch_ = strike(unit_strike, m_, R_, CueParams{}).velocity.x;
+    base_ = rules.shot_scenario(state, CueStrike{}, &numbers_);
+    index_.assign(state.on_table.size(), -1);
+    for (std::size_t k = 0; k < numbers_.size(); ++k) {
+      index_[static_cast<std::size_t>(numbers_[k])] = static_cast<int>(k);
+    }
+  }
+
+  std::vector<CandidateShot> run() {
+    std::vector<CandidateShot> out;
+    if (state_.phase != Phase::shot || !la_.shoot || !on(0) || targets_.empty()) return out;
+    std::vector<Line> lines;
+    // Whether each target has a direct pot into each pocket: kicks are
+    // planned only where it has not.
+    std::vector<std::vector<bool>> direct_ok(state_.on_table.size(),
+                                             std::vector<bool>(table_.pockets.size(), false));
+    for (int t : targets_) {
+      for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
+        if (std::optional<Line> l = direct_line(t, static_cast<int>(k))) {
+          direct_ok[static_cast<std::size_t>(t)][k] = true;
+          lines.push_back(*l);
+        }
+      }
+    }
+    if (opt_.banks) {
+      for (int t : targets_) {
+        for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
+          for (int rail = 0; rail < 4; ++rail) {
+            if (std::optional<Line> l = bank_line(t, static_cast<int>(k), rail)) lines.push_back(*l);
+          }
+        }
+      }
+    }
+    if (opt_.kicks) {
+      for (int t : targets_) {
+        for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
+          if (direct_ok[static_cast<std::size_t>(t)][k]) continue;
+          for (int rail = 0; rail < 4; ++rail) {
+            if (std::optional<Line> l = kick_line(t, static_cast<int>(k), rail)) lines.push_back(*l);
+          }
+        }
+      }
+    }
+    if (opt_.combinations) {
+      for (int f : targets_) {
+        for (int t : combination_targets(f)) {
+          for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
+            if (std::optional<Line> l = combination_line(f, t, static_cast<int>(k))) {
+              lines.push_back(*l);
+            }
+          }
+        }
+      }
+    }
+    // Most promising lines first (stable: generation order breaks ties),
+    // so that a cap on simulated lines keeps the best.
+    std::stable_sort(lines.begin(), lines.end(),
+                     [](const Line& a, const Line& b) { return a.geo_prior > b.geo_prior; });
+    constexpr std::size_t kMaxLines = 48;
+    if (lines.size() > kMaxLines) lines.resize(kMaxLines);
+    for (const Line& l : lines) play_line(l, out);
+
+    if (opt_.safeties) add_safeties(out);
+
+    std::stable_sort(out.begin(), out.end(), [](const CandidateShot& a, const CandidateShot& b) {
+      return a.prior > b.prior;
+    });
+    const auto cap = static_cast<std::size_t>(std::max(opt_.max_candidates, 0));
+    if (out.size() > cap) out.resize(cap);
+    return out;
+  }
+
+ private:
+  // -------------------------------------------------------------------------
+  // Geometry
+
+  Vec2 pos(int b) const { return state_.position[static_cast<std::size_t>(b)]; }
+  bool on(int b) const { return state_.on_table[static_cast<std::size_t>(b)] != 0; }
+
+  /// True if a ball moving from a to b stays 2R (and a margin) clear of
+  /// every object ball on `lay` except skip1 and skip2 (the cue ball's
+  /// own position is never an obstacle; a ball behind a's start is none).
+  bool balls_clear(const Layout& lay, Vec2 a, Vec2 b, int skip1, int skip2 = -1) const {
+    for (std::size_t n = 1; n < lay.on.size(); ++n) {
+      const int num = static_cast<int>(n);
+      if (!lay.on[n] || num == skip1 || num == skip2) continue;
+      const Vec2 p = lay.pos[n];
+      if (dot(p - a, b - a) <= 0.0 && norm(p - a) >= 2.0 * R_) continue;
+      if (segment_distance(p, a, b) < 2.0 * R_ + kBallMargin) return false;
+    }
+    return true;
+  }
+
+  /// True if a ball centre moving from a to b stays R (and a margin) clear
+  /// of every cushion and jaw; an end already closer (a ball on a rail, a
+  /// bounce point) may keep its distance but not come closer.
+  bool walls_clear(Vec2 a, Vec2 b) const {
+    for (const Wall& w : table_.walls) {
+      const double need =
+          std::min({R_ + kWallMargin, wall_distance(w, a, a), wall_distance(w, b, b)});
+      if (wall_distance(w, a, b) < need - 1e-9) return false;
+    }
+    return true;
+  }
+
+  bool fits(Vec2 p) const { return wall_clearance(table_, p, R_) >= 0.0; }
+
+  /// The open path of a ball from `from` into pocket k with the most room
+  /// among the centre and a little to either side; `skip` are the balls
+  /// not in the way (the moving ball itself).
+  std::optional<Approach> approach(const Layout& lay, Vec2 from, int pocket, int skip1,
+                                   int skip2 = -1) const {
+    const Pocket& pk = table_.pockets[static_cast<std::size_t>(pocket)];
+    if (norm(pk.centre - from) <= pk.radius) return std::nullopt;
+    const Vec2 across = perp(unit(pk.centre - from));
+    std::optional<Approach> best;
+    for (double off : {0.0, 0.4, -0.4}) {
+      const Vec2 aim = pk.centre + across * (off * pk.radius);
+      const Vec2 d = unit(aim - from);
+      const Vec2 f = from - pk.centre;
+      const double half_b = dot(f, d);
+      const double disc = half_b * half_b - (norm2(f) - pk.radius * pk.radius);
+      if (disc <= 0.0) continue;
+      const double s = -half_b - std::sqrt(disc);
+      if (s <= 0.0) continue;
+      const Vec2 end = from + d * s;
+      if (!balls_clear(lay, from, end, skip1, skip2)) continue;
+      if (!walls_clear(from, end)) continue;
+      // Room: how far the path may shift sideways before it meets the
+      // jaws (walls near the pocket only; the rails along the way were
+      // checked above).
+      double room = kInf;
+      for (const Wall& w : table_.walls) {
+        if (wall_distance(w, pk.centre, pk.centre) > 0.2) continue;
+        room = std::min(room, wall_distance(w, from, end) - R_);
+      }
+      room = std::clamp(room, 0.002, 0.04);
+      if (!best || room > best->room) best = Approach{aim, d, s, room};
+    }
+    return best;
+  }
+
+  /// Lateral miss at the pocket per degree of cue aim (m/deg) of a cut
+  /// over cue leg d1 and object leg d2: the contact point moves d1 dphi
+  /// across, which turns the object ball by that over 2R cos(cut).
+  double slope_estimate(double d1, double d2, double cos_cut) const {
+    return (d1 + 2.0 * R_) * d2 / (2.0 * R_ * std::max(cos_cut, 0.1)) * kDeg;
+  }
+
+  static double prior_from(double room, double slope) {
+    if (!(std::abs(slope) > 0.0)) return 0.0;
+    const double tolerance = room / std::abs(slope);  // degrees of phi
+    return standard_normal_within(tolerance / kSigmaAim);
+  }
+
+  /// Ball centre lines of the four rails: x = R, x = L - R, y = R, y = W - R.
+  double rail_line(int rail) const {
+    switch (rail) {
+      case 0: return R_;
+      case 1: return table_.length - R_;
+      case 2: return R_;
+      default: return table_.width - R_;
+    }
+  }
+  Vec2 mirror(Vec2 p, int rail) const {
+    const double c = rail_line(rail);
+    return rail < 2 ? Vec2{2.0 * c - p.x, p.y} : Vec2{p.x, 2.0 * c - p.y};
+  }
+  /// Where a ball going from a to p off the rail should meet it, if on a
+  /// straight cushion away from the pockets. Not the mirror point: the
+  /// cushion keeps less of the normal speed than of the speed along it, so
+  /// the ball leaves flatter, tan(out) = tan(in) / kRebound (the engine's
+  /// cushion law gives 0.73-0.9 just after the impact, and the spin left
+  /// bends the path a little further); refinement does the rest.
+  std::optional<Vec2> bounce(Vec2 a, Vec2 p, int rail) const {
+    constexpr double kRebound = 0.8;
+    const double c = rail_line(rail);
+    const bool vertical = rail < 2;  // the rail line is x = c
+    const double inward = (rail == 0 || rail == 2) ? 1.0 : -1.0;
+    const double h1 = ((vertical ? a.x : a.y) - c) * inward;
+    const double h2 = ((vertical ? p.x : p.y) - c) * inward;
+    if (h1 <= 0.0 || h2 <= R_) return std::nullopt;
+    const double a_along = vertical ? a.y : a.x;
+    const double p_along = vertical ? p.y : p.x;
+    const double t = (p_along - a_along) / (h1 + h2 / kRebound);
+    const double along = a_along + h1 * t;
+    const Vec2 hit = vertical ? Vec2{c, along} : Vec2{along, c};
+    const double extent = vertical ? table_.width : table_.length;
+    if (along < 0.0 || along > extent) return std::nullopt;
+    for (const Pocket& pk : table_.pockets) {
+      if (norm(pk.centre - hit) < pk.radius + 2.5 * R_) return std::nullopt;
+    }
+    return hit;
+  }
+
+  // -------------------------------------------------------------------------
+  // Speed estimates
+
+  /// Speed a ball needs at the start of a straight leg of length d to have
+  /// `end` left: rolling resistance, plus the loss of a struck or hit ball
+  /// sliding into its roll (it keeps 5/7 of its speed once it rolls, and
+  /// gets there after 12 v^2 / (49 mu_s g)).
+  static double start_speed(double end, double d) {
+    const double rolled = std::sqrt(end * end + 2.0 * kRollingFriction * kGravity * d);
+    double v = rolled;
+    for (int i = 0; i < 3; ++i) {
+      const double slide = 12.0 * v * v / (49.0 * kSlidingFriction * kGravity);
+      const double lost = 2.0 / 7.0 * std::min(1.0, d / std::max(slide, 1e-9));
+      v = rolled / (1.0 - lost);
+    }
+    return v;
+  }
+
+  /// Speed a ball hit at cut angle `cos_cut` leaves with per unit speed of
+  /// the ball hitting it (equal masses).
+  static double transfer(double cos_cut) { return 0.5 * (1.0 + kBallBallRestitution) * cos_cut; }
+
+  double cue_speed_for(double ball_speed) const {
+    return std::max(kMinCueSpeed, ball_speed / launch_);
+  }
+
+  // -------------------------------------------------------------------------
+  // Shot lines
+
+  std::optional<Line> direct_line(int t, int pocket) const {
+    const std::optional<Approach> ap = approach(layout_, pos(t), pocket, t);
+    if (!ap) return std::nullopt;
+    const Vec2 b = pos(t);
+    const Vec2 ghost = b - ap->dir * (2.0 * R_);
+    const Vec2 cue = pos(0);
+    const double d1 = norm(ghost - cue);
+    if (d1 < 1e-6 || !fits(ghost)) return std::nullopt;
+    const Vec2 u = (ghost - cue) / d1;
+    const double cos_cut = dot(u, ap->dir);
+    if (cos_cut < std::cos(kMaxCut)) return std::nullopt;
+    if (!balls_clear(layout_, cue, ghost, t) || !walls_clear(cue, ghost)) return std::nullopt;
+    Line l;
+    l.kind = ShotKind::direct;
+    l.first = t;
+    l.target = t;
+    l.pocket = pocket;
+    l.phi = phi_of(u);
+    const double vo = start_speed(kArrival, ap->length);
+    l.speed = cue_speed_for(start_speed(vo / transfer(cos_cut), d1));
+    l.room = ap->room;
+    l.geo_prior = prior_from(ap->room, slope_estimate(d1, ap->length, cos_cut));
+    l.watch = Watch{index_of(t), false, 0, ap->aim, ap->dir};
+    if (l.speed > kMaxPotSpeed) return std::nullopt;
+    return l;
+  }
+
+  std::optional<Line> bank_line(int t, int pocket, int rail) const {
+    const Pocket& pk = table_.pockets[static_cast<std::size_t>(pocket)];
+    const Vec2 b = pos(t);
+    const std::optional<Vec2> hit = bounce(b, pk.centre, rail);
+    if (!hit) return std::nullopt;
+    // The second leg, from the cushion into the pocket.
+    const std::optional<Approach> ap = approach(layout_, *hit, pocket, t);
+    if (!ap) return std::nullopt;
+    const Vec2 d_first = unit(*hit - b);
+    const double leg1 = norm(*hit - b);
+    if (!balls_clear(layout_, b, *hit, t) || !walls_clear(b, *hit)) return std::nullopt;
+    const Vec2 ghost = b - d_first * (2.0 * R_);
+    const Vec2 cue = pos(0);
+    const double d1 = norm(ghost - cue);
+    if (d1 < 1e-6 || !fits(ghost)) return std::nullopt;
+    const Vec2 u = (ghost - cue) / d1;
+    const double cos_cut = dot(u, d_first);
+    if (cos_cut < std::cos(kMaxBankCut)) return std::nullopt;
+    if (!balls_clear(layout_, cue, ghost, t) || !walls_clear(cue, ghost)) return std::nullopt;
+    Line l;
+    l.kind = ShotKind::bank;
+    l.first = t;
+    l.target = t;
+    l.pocket = pocket;
+    l.phi = phi_of(u);
+    const double at_rail = start_speed(kArrival, ap->length) / kRailRetention;
+    const double vo = start_speed(at_rail, leg1);
+    l.speed = cue_speed_for(start_speed(vo / transfer(cos_cut), d1));
+    l.room = ap->room;
+    // A bank doubles the object ball's error at the pocket roughly by the
+    // mirror geometry: the unfolded leg is leg1 + leg2 long.
+    l.geo_prior = 0.7 * prior_from(ap->room, slope_estimate(d1, leg1 + ap->length, cos_cut));
+    l.prior_scale = 0.7;  // cushion rebound varies with speed and spin
+    l.watch = Watch{index_of(t), false, 1, ap->aim, ap->dir};
+    if (l.speed > kMaxPotSpeed) return std::nullopt;
+    return l;
+  }
+
+  std::optional<Line> kick_line(int t, int pocket, int rail) const {
+    const std::optional<Approach> ap = approach(layout_, pos(t), pocket, t);
+    if (!ap) return std::nullopt;
+    const Vec2 b = pos(t);
+    const Vec2 ghost = b - ap->dir * (2.0 * R_);
+    if (!fits(ghost)) return std::nullopt;
+    const Vec2 cue = pos(0);
+    const std::optional<Vec2> hit = bounce(cue, ghost, rail);
+    if (!hit) return std::nullopt;
+    const double leg1 = norm(*hit - cue);
+    const double leg2 = norm(ghost - *hit);
+    if (leg2 < 1e-6) return std::nullopt;
+    const Vec2 u2 = (ghost - *hit) / leg2;
+    const double cos_cut = dot(u2, ap->dir);
+    if (cos_cut < std::cos(kMaxBankCut)) return std::nullopt;
+    if (!balls_clear(layout_, cue, *hit, -1) || !walls_clear(cue, *hit)) return std::nullopt;
+    if (!balls_clear(layout_, *hit, ghost, t) || !walls_clear(*hit, ghost)) return std::nullopt;
+    Line l;
+    l.kind = ShotKind::kick;
+    l.first = t;
+    l.target = t;
+    l.pocket = pocket;
+    l.phi = phi_of(*hit - cue);
+    const double vo = start_speed(kArrival, ap->length);
+    const double at_rail = start_speed(vo / transfer(cos_cut), leg2) / kRailRetention;
+    l.speed = cue_speed_for(start_speed(at_rail, leg1));
+    l.room = ap->room;
+    l.geo_prior = 0.5 * prior_from(ap->room, slope_estimate(leg1 + leg2, ap->length, cos_cut));
+    l.prior_scale = 0.5;
+    l.watch = Watch{index_of(t), false, 0, ap->aim, ap->dir};
+    l.pre = Watch{index_of(0), true, 1, ghost, u2};
+    if (l.speed > kMaxPotSpeed) return std::nullopt;
+    return l;
+  }
+
+  /// Balls a combination off first ball f may pocket: 9-ball, any other
+  /// ball (a legal hit on the lowest makes any pot count); 8-ball, another
+  /// legal target (so the call is a ball of the shooter's group).
+  std::vector<int> combination_targets(int f) const {
+    std::vector<int> out;
+    if (eight_) {
+      for (int t : targets_) {
+        if (t != f && t != 8) out.push_back(t);
+      }
+      return out;
+    }
+    for (std::size_t n = 1; n < state_.on_table.size(); ++n) {
+      if (state_.on_table[n] && static_cast<int>(n) != f) out.push_back(static_cast<int>(n));
+    }
+    return out;
+  }
+
+  std::optional<Line> combination_line(int f, int t, int pocket) const {
+    const Vec2 bt = pos(t);
+    const Vec2 bf = pos(f);
+    // Cheap rejections first: the carrier must be close enough to be
+    // steered, and the target must lie roughly between it and the pocket.
+    const double ft = norm(bt - bf);
+    if (ft > 0.8) return std::nullopt;
+    const Vec2 pc = table_.pockets[static_cast<std::size_t>(pocket)].centre;
+    if (dot(pc - bt, bt - bf) <= 0.0) return std::nullopt;
+    const std::optional<Approach> ap = approach(layout_, bt, pocket, t);
+    if (!ap) return std::nullopt;
+    const Vec2 ghost_t = bt - ap->dir * (2.0 * R_);  // where f must touch t
+    if (!fits(ghost_t)) return std::nullopt;
+    const double d_f = norm(ghost_t - bf);
+    if (d_f < 1e-6) return std::nullopt;
+    const Vec2 uf = (ghost_t - bf) / d_f;
+    const double cos_cut2 = dot(uf, ap->dir);
+    if (cos_cut2 < std::cos(kMaxComboCut)) return std::nullopt;
+    if (!balls_clear(layout_, bf, ghost_t, f, t) || !walls_clear(bf, ghost_t)) return std::nullopt;
+    const Vec2 ghost_f = bf - uf * (2.0 * R_);
+    if (!fits(ghost_f)) return std::nullopt;
+    const Vec2 cue = pos(0);
+    const double d1 = norm(ghost_f - cue);
+    if (d1 < 1e-6) return std::nullopt;
+    const Vec2 u = (ghost_f - cue) / d1;
+    const double cos_cut1 = dot(u, uf);
+    if (cos_cut1 < std::cos(kMaxComboCut)) return std::nullopt;
+    if (!balls_clear(layout_, cue, ghost_f, f) || !walls_clear(cue, ghost_f)) return std::nullopt;
+    Line l;
+    l.kind = ShotKind::combination;
+    l.first = f;
+    l.target = t;
+    l.pocket = pocket;
+    l.phi = phi_of(u);
+    const double vt = start_speed(kArrival, ap->length);
+    const double vf = start_speed(vt / transfer(cos_cut2), d_f);
+    l.speed = cue_speed_for(start_speed(vf / transfer(cos_cut1), d1));
+    l.room = ap->room;
+    // Errors compound: the carrier's direction error is amplified again
+    // by the second contact.
+    const double s1 = slope_estimate(d1, d_f, cos_cut1);
+    const double amplify = (d_f + ap->length) / (2.0 * R_ * std::max(cos_cut2, 0.1));
+    l.geo_prior = 0.8 * prior_from(ap->room, s1 * std::max(amplify, 1.0) * 0.5);
+    l.prior_scale = 0.8;
+    l.watch = Watch{index_of(t), false, 0, ap->aim, ap->dir};
+    if (l.speed > kMaxPotSpeed) return std::nullopt;
+    return l;
+  }
+
+  int index_of(int number) const { return index_[static_cast<std::size_t>(number)]; }
+
+  // -------------------------------------------------------------------------
+  // Simulation
+
+  Simulation start(double phi, double speed, double b) const {
+    Scenario sc = base_;
+    sc.cue->strike.speed = speed;
+    sc.cue->strike.phi = phi;
+    sc.cue->strike.b = b;
+    ++simulations_;
+    return Simulation(sc);
+  }
+
+  /// Steps `sim` until the watched run ends and measures it. The
+  /// simulation is left where it stopped, to be continued.
+  static Probe follow(Simulation& sim, const Watch& w) {
+    Probe out;
+    bool started = w.from_start;
+    int cushions = 0;
+    std::size_t seen = sim.events().size();
+    while (true) {
+      const double t = sim.next_event_time();
+      if (!std::isfinite(t)) return out;  // at rest: the run never ended
+      const Simulation::Trajectory before = sim.trajectory(static_cast<std::size_t>(w.ball));
+      if (sim.advance_to(t) != StopReason::reached) return out;
+      const std::vector<Event>& ev = sim.events();
+      bool ended = false;
+      bool stopped = false;
+      for (; seen < ev.size(); ++seen) {
+        const Event& e = ev[seen];
+        const bool mine = e.ball == w.ball || (e.type == EventType::ball_ball && e.other == w.ball);
+        if (!mine || ended) continue;
+        if (e.type == EventType::state_change) {
+          if (started && e.to == MotionState::stationary) ended = stopped = true;
+          continue;
+        }
+        if (e.type == EventType::cue_strike) continue;
+        if (!started) {
+          if (e.type == EventType::ball_ball) started = true;
+          else return out;  // moved by something else first: not this shot
+          continue;
+        }
+        if (e.type == EventType::ball_cushion && cushions < w.pass_cushions) {
+          ++cushions;
+          continue;
+        }
+        if (cushions < w.pass_cushions) return out;  // ended before the bank
+        ended = true;
+      }
+      if (!ended) continue;
+      const double dt = t - before.t0;
+      const Vec2 p = before.p0 + before.v0 * dt + before.acc * (0.5 * dt * dt);
+      Vec2 v = before.v0 + before.acc * dt;
+      if (norm(v) < 1e-6) v = before.v0;
+      if (norm(v) < 1e-9) return out;
+      const Vec2 vu = unit(v);
+      const double along = dot(vu, w.dir);
+      if (along < 0.05) return out;  // moving away from the aim line
+      const double s = dot(w.aim - p, w.dir) / along;
+      const Vec2 q = p + vu * s;
+      out.ok = true;
+      out.miss = cross(w.dir, q - w.aim);
+      out.reached = !stopped || dot(p - w.aim, w.dir) > -0.06;
+      return out;
+    }
+  }
+
+  /// The outcome of a shot judged as the rules would, from the events of
+  /// a simulation run to rest.
+  struct Judged {
+    bool legal = false;   ///< first hit legal, no foul, 8 safe
+    int first_hit = -1;
+    std::vector<int> pocketed;
+    std::vector<int> pocket_of;
+    Layout after;
+  };
+
+  Judged judge(Simulation& sim) const {
+    Judged j;
+    if (sim.advance_to_rest() != StopReason::reached || !sim.at_rest()) return j;
+    std::vector<Event> events = sim.events();
+    for (Event& e : events) {
+      if (e.ball >= 0) e.ball = numbers_[static_cast<std::size_t>(e.ball)];
+      if (e.other >= 0) e.other = numbers_[static_cast<std::size_t>(e.other)];
+    }
+    const ShotFacts f = rules_.facts(events);
+    j.first_hit = f.first_hit;
+    j.pocketed = f.pocketed;
+    j.pocket_of = f.pocket_of;
+    j.after = layout_;
+    for (std::size_t k = 0; k < numbers_.size(); ++k) {
+      const auto n = static_cast<std::size_t>(numbers_[k]);
+      const BallState st = sim.ball(k);
+      if (st.state == MotionState::pocketed) {
+        j.after.on[n] = 0;
+      } else {
+        j.after.pos[n] = st.position;
+      }
+    }
+    const bool miscue = sim.cue_result() && sim.cue_result()->miscue;
+    const bool legal_first =
+        std::find(targets_.begin(), targets_.end(), f.first_hit) != targets_.end();
+    const bool scratch = std::find(f.pocketed.begin(), f.pocketed.end(), 0) != f.pocketed.end();
+    const bool rail = f.cushion_after_contact || !f.pocketed.empty();
+    j.legal = !miscue && legal_first && !scratch && rail;
+    return j;
+  }
+
+  static int pocket_of(const Judged& j, int ball) {
+    for (std::size_t k = 0; k < j.pocketed.size(); ++k) {
+      if (j.pocketed[k] == ball) return j.pocket_of[k];
+    }
+    return -1;
+  }
+
+  bool pot_made(const Judged& j, const Line& l) const {
+    if (!j.legal || j.first_hit != l.first || pocket_of(j, l.target) != l.pocket) return false;
+    if (eight_ && l.target != 8 && pocket_of(j, 8) >= 0) return false;
+    return true;
+  }
+
+  /// The result of correcting an aim: the aim, the run at that aim
+  /// (stopped where its probe ended) and the slope found.
+  struct Refined {
+    double phi = 0.0;
+    double slope = 0.0;  ///< m of miss per degree
+    Probe probe;
+    std::optional<Simulation> sim;
+  };
+
+  /// Secant iterations on phi that drive watch's miss to zero, from phi0
+  /// with `slope` (0: measure it first). Once the miss has been seen on
+  /// both sides of zero, steps stay inside that bracket (bisecting when a
+  /// secant step would leave it), and an aim that gives no measure (the
+  /// run ends some other way) is backed off halfway toward the best aim.
+  /// At most `iterations` + 2 simulations.
+  std::optional<Refined> refine(double phi0, double speed, double b, const Watch& w,
+                                double slope, int iterations) const {
+    Refined best;
+    bool have = false;
+    double best_abs = kInf;
+    std::optional<std::pair<double, double>> prev;  // last measured (phi, miss)
+    std::optional<double> below, above;             // phi with miss < 0, > 0
+    double phi = phi0;
+    for (int it = 0; it < iterations + 2; ++it) {
+      Simulation sim = start(phi, speed, b);
+      const Probe p = follow(sim, w);
+      if (!p.ok) {
+        if (!have) return std::nullopt;
+        phi = 0.5 * (phi + best.phi);
+        continue;
+      }
+      if (std::abs(p.miss) < best_abs) {
+        best_abs = std::abs(p.miss);
+        best.phi = phi;
+        best.probe = p;
+        best.sim = std::move(sim);
+        have = true;
+      }
+      (p.miss < 0.0 ? below : above) = phi;
+      if (prev && std::abs(phi - prev->first) > 1e-12) {
+        const double s = (p.miss - prev->second) / (phi - prev->first);
+        // Keep the sign of a measured slope: a secant across a kink that
+        // flips it would send the aim the wrong way.
+        if (slope == 0.0 || s * slope > 0.0) slope = s;
+      }
+      prev = std::make_pair(phi, p.miss);
+      if (std::abs(p.miss) < kAcceptMiss) break;
+      if (slope == 0.0) {
+        phi += 0.05;  // a small step gives the first slope
+        continue;
+      }
+      double next = best.phi - std::clamp(best.probe.miss / slope, -kMaxStep, kMaxStep);
+      if (below && above) {
+        const double lo = std::min(*below, *above);
+        const double hi = std::max(*below, *above);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      }
+      phi = next;
+    }
+    if (!have) return std::nullopt;
+    if (slope == 0.0) {
+      // Right on the first try: one more run for the slope, which the
+      // variants and the prior need.
+      Simulation sim = start(best.phi + 0.05, speed, b);
+      const Probe p = follow(sim, w);
+      if (p.ok) slope = (p.miss - best.probe.miss) / 0.05;
+    }
+    best.slope = slope;
+    return best;
+  }
+
+  void play_line(const Line& l, std::vector<CandidateShot>& out) const {
+    double phi = l.phi;
+    double speed = l.speed;
+    // Kicks: first bring the cue ball off the rail onto the ghost ball.
+    if (l.pre) {
+      const std::optional<Refined> r =
+          refine(phi, speed, 0.0, *l.pre, 0.0, opt_.refine_iterations + 4);
+      if (!r) return;
+      phi = r->phi;
+    }
+    // The line at its least speed, centre ball; too slow to arrive, try
+    // faster (the estimate ignores the shape of the run).
+    std::optional<Refined> base;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      base = refine(phi, speed, 0.0, l.watch, 0.0,
+                    opt_.refine_iterations + (l.kind == ShotKind::direct ? 0 : 4));
+      if (!base) return;
+      if (base->probe.reached) break;
+      speed *= 1.35;
+      if (speed > kMaxPotSpeed) return;
+    }
+    if (!base || !base->probe.reached || std::abs(base->probe.miss) > 0.5 * l.room + 0.002) return;
+    const double slope = base->slope;
+    if (slope == 0.0) return;
+    const double prior = std::clamp(l.prior_scale * prior_from(l.room, slope), 0.0, 1.0);
+
+    for (double factor : opt_.speed_factors) {
+      for (double b : opt_.spins) {
+        // The same ball speed with follow or draw: the tip offset takes
+        // some of the cue's energy into spin.
+        const double spin_comp = (1.0 + m_ / CueParams{}.mass + 2.5 * b * b) /
+                                 (1.0 + m_ / CueParams{}.mass);
+        const double v = std::clamp(speed * factor * spin_comp, 0.1, kMaxCueSpeed);
+        std::optional<Refined> r;
+        if (factor == 1.0 && b == 0.0) {
+          r = base;
+        } else {
+          r = refine(base->phi, v, b, l.watch, slope, l.kind == ShotKind::direct ? 2 : 4);
+        }
+        if (!r || !r->sim) continue;
+        const Judged j = judge(*r->sim);
+        if (!pot_made(j, l)) continue;
+        CandidateShot c;
+        c.kind = l.kind;
+        c.first = l.first;
+        c.target = l.target;
+        c.pocket = l.pocket;
+        c.shot.strike.speed = factor == 1.0 && b == 0.0 ? speed : v;
+        c.shot.strike.phi = r->phi;
+        c.shot.strike.b = b;
+        if (la_.call) c.shot.call = Call{l.target, l.pocket};
+        // A little less for the harder strokes, so that ties go to the
+        // simpler one.
+        c.prior = prior * (1.0 - 0.03 * std::abs(b)) * (factor > 2.0 ? 0.97 : 1.0);
+        if (rules_.check(state_, Action{c.shot})) continue;
+        out.push_back(c);
+      }
+    }
+  }
+
+  // -------------------------------------------------------------------------
+  // Safeties
+
+  /// Balls the opponent may hit first on the layout a shot leaves.
+  std::vector<int> opponent_targets(const Layout& lay) const {
+    std::vector<int> out;
+    const auto n = static_cast<int>(lay.on.size());
+    if (!eight_) {
+      for (int b = 1; b < n; ++b) {
+        if (lay.on[static_cast<std::size_t>(b)]) return {b};
+      }
+      return out;
+    }
+    const Group g = state_.group[static_cast<std::size_t>(1 - state_.player)];
+    for (int b = 1; b < n; ++b) {
+      if (b == 8 || !lay.on[static_cast<std::size_t>(b)]) continue;
+      if (g == Group::none || (g == Group::solids) == (b < 8)) out.push_back(b);
+    }
+    if (out.empty() && lay.on[8]) out.push_back(8);
+    return out;
+  }
+
+  /// The opponent's easiest direct pot on `lay`, as a geometric prior in
+  /// [0, 1] (0: no pot, or no ball even visible; cheap: no simulation).
+  double opponent_chance(const Layout& lay) const {
+    if (!lay.on[0]) return 1.0;
+    const Vec2 cue = lay.pos[0];
+    double best = 0.0;
+    for (int t : opponent_targets(lay)) {
+      const Vec2 b = lay.pos[static_cast<std::size_t>(t)];
+      for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
+        const std::optional<Approach> ap = approach(lay, b, static_cast<int>(k), t);
+        if (!ap) continue;
+        const Vec2 ghost = b - ap->dir * (2.0 * R_);
+        const double d1 = norm(ghost - cue);
+        if (d1 < 1e-6) continue;
+        const double cos_cut = dot((ghost - cue) / d1, ap->dir);
+        if (cos_cut < std::cos(kMaxCut)) continue;
+        if (!balls_clear(lay, cue, ghost, t)) continue;
+        best = std::max(best, prior_from(ap->room, slope_estimate(d1, ap->length, cos_cut)));
+      }
+    }
+    return best;
+  }
+
+  void add_safety(const CueStrike& s, int first, bool kick,
+                  std::vector<CandidateShot>& found) const {
+    Simulation sim = start(s.phi, s.speed, s.b);
+    const Judged j = judge(sim);
+    if (!j.legal) return;
+    if (eight_ && pocket_of(j, 8) >= 0) return;
+    CandidateShot c;
+    c.kind = kick ? ShotKind::kick : ShotKind::safety;
+    c.first = first;
+    c.shot.strike = s;
+    c.shot.safety = la_.call;  // 8-ball: a declared safety, never called
+    // Worth to the shooter: how little the opponent is left. Scaled below
+    // real pots, which the evaluator prefers when they are on.
+    c.prior = 0.4 * (1.0 - opponent_chance(j.after));
+    if (rules_.check(state_, Action{c.shot})) return;
+    found.push_back(c);
+  }
+
+  void add_safeties(std::vector<CandidateShot>& out) const {
+    std::vector<CandidateShot> found;
+    const Vec2 cue = pos(0);
+    bool any_open = false;
+    for (int t : targets_) {
+      const Vec2 b = pos(t);
+      if (norm(b - cue) < 1e-9) continue;
+      const Vec2 straight = unit(b - cue);
+      for (double turn : {0.0, 25.0, -25.0, 50.0, -50.0}) {
+        const Vec2 n = rotate(straight, turn * kDeg);  // line of centres at contact
+        const Vec2 ghost = b - n * (2.0 * R_);
+        const double d1 = norm(ghost - cue);
+        if (d1 < 1e-9 || !fits(ghost)) continue;
+        const Vec2 u = (ghost - cue) / d1;
+        if (dot(u, n) < std::cos(kMaxCut)) continue;
+        if (!balls_clear(layout_, cue, ghost, t) || !walls_clear(cue, ghost)) continue;
+        any_open = true;
+        for (double speed : {1.2, 2.2, 3.4}) {
+          CueStrike s;
+          s.speed = speed;
+          s.phi = phi_of(u);
+          add_safety(s, t, false, found);
+        }
+      }
+    }
+    // One-rail kicks at a full hit on each legal ball, when no ball can be
+    // hit directly or nothing direct played legally: the mirror aim is
+    // corrected for the real rebound on the engine, like a kick pot.
+    if (opt_.kicks && (!any_open || found.empty())) {
+      for (int t : targets_) {
+        const Vec2 b = pos(t);
+        for (int rail = 0; rail < 4; ++rail) {
+          const Vec2 approx = b - unit(b - mirror(cue, rail)) * (2.0 * R_);
+          const std::optional<Vec2> hit = bounce(cue, approx, rail);
+          if (!hit) continue;
+          const Vec2 dir = unit(b - *hit);
+          const Vec2 ghost = b - dir * (2.0 * R_);
+          if (!fits(ghost)) continue;
+          if (!balls_clear(layout_, cue, *hit, -1) || !walls_clear(cue, *hit)) continue;
+          if (!balls_clear(layout_, *hit, ghost, t) || !walls_clear(*hit, ghost)) continue;
+          const double length = norm(*hit - cue) + norm(ghost - *hit);
+          const double speed = std::clamp(1.5 + 1.0 * length, 2.0, 6.0);
+          const Watch w{index_of(0), true, 1, ghost, dir};
+          const std::optional<Refined> r =
+              refine(phi_of(*hit - cue), speed, 0.0, w, 0.0, opt_.refine_iterations);
+          if (!r) continue;
+          CueStrike s;
+          s.speed = speed;
+          s.phi = r->phi;
+          add_safety(s, t, true, found);
+        }
+      }
+    }
+    std::stable_sort(found.begin(), found.end(), [](const CandidateShot& a, const CandidateShot& b) {
+      return a.prior > b.prior;
+    });
+    const std::size_t keep =
+        std::max<std::size_t>(8, static_cast<std::size_t>(std::max(opt_.max_candidates, 0)) / 4);
+    if (found.size() > keep) found.resize(keep);
+    out.insert(out.end(), found.begin(), found.end());
+  }
+
+  const Rules& rules_;
+  const GameState& state_;
+  const ShotGenOptions& opt_;
+  const Table& table_;
+  double R_;
+  double m_;
+  bool eight_;
+  LegalActions la_;
+  std::vector<int> targets_;  // legal first balls that may be aimed at
+  Layout layout_;
+  double launch_ = 1.0;       // cue ball speed per unit cue speed, centre hit
+  Scenario base_;             // the shot's scenario; the strike is set per run
+  std::vector<int> numbers_;  // scenario index -> ball number
+  std::vector<int> index_;    // ball number -> scenario index (-1: off the table)
+  mutable long simulations_ = 0;
+};
+
+}  // namespace
+
+std::vector<CandidateShot> generate_shots(const Rules& rules, const GameState& state,
+                                          const ShotGenOptions& options) {
+  return Generator(rules, state, options).run();
+}
+
+}  // namespace breakshot

@@ -1,0 +1,268 @@
+// The AI player (include/breakshot/ai.hpp) on hand-placed tables and in
+// whole games: its actions are always legal, it pots what is there, finds
+// a bank when every direct pot is blocked, plays safe when nothing is
+// makeable, places the cue ball legally, and decides the same for a seed
+// and a simulation budget whatever the number of threads. Small levels
+// and budgets keep each test to a few seconds even under the sanitizers.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "ai/evaluate.hpp"
+#include "breakshot/ai.hpp"
+#include "breakshot/game.hpp"
+#include "breakshot/match.hpp"
+#include "breakshot/noise.hpp"
+#include "breakshot/player.hpp"
+#include "rules_fixtures.hpp"
+
+namespace {
+
+using namespace rules_fixtures;
+
+/// A small searching level: few candidates and samples, one thread.
+AiLevel small_level(const std::string& base = "expert") {
+  AiLevel l = ai_level(base);
+  l.candidates = 4;
+  l.samples = 4;
+  l.threads = 1;
+  l.generation.speed_factors = {1.0, 1.6};
+  l.generation.spins = {0.0};
+  l.generation.refine_iterations = 2;
+  l.generation.max_candidates = 24;
+  return l;
+}
+
+Action decide_legal(Player& player, const Rules& rules, const GameState& s,
+                    std::uint64_t seed = 1) {
+  const Action a = player.decide(rules, s, seed);
+  const std::optional<std::string> why = rules.check(s, a);
+  EXPECT_FALSE(why.has_value()) << why.value_or("");
+  return a;
+}
+
+int pocket_of(const ShotFacts& f, int ball) {
+  for (std::size_t i = 0; i < f.pocketed.size(); ++i) {
+    if (f.pocketed[i] == ball) return f.pocket_of[i];
+  }
+  return -1;
+}
+
+Vec2 at(Vec2 centre, double deg, double dist) {
+  const double a = deg * kPi / 180.0;
+  return centre + Vec2{std::cos(a), std::sin(a)} * dist;
+}
+
+// ---------------------------------------------------------------------------
+
+TEST(AiLevels, EveryNameResolvesAndMakePlayerAcceptsIt) {
+  const std::vector<std::string> names = ai_level_names();
+  ASSERT_EQ(names, (std::vector<std::string>{"beginner", "amateur", "club", "expert", "champion"}));
+  for (const std::string& n : names) {
+    const AiLevel l = ai_level(n);
+    EXPECT_EQ(l.name, n);
+    const auto p = make_player(n);
+    EXPECT_EQ(p->name(), n);
+    ASSERT_TRUE(p->noise().has_value());
+    EXPECT_EQ(*p->noise(), l.noise);
+    EXPECT_EQ(make_ai_player(l)->name(), n);
+  }
+  EXPECT_EQ(ai_level("beginner").noise, parse_noise("4x"));
+  EXPECT_EQ(ai_level("champion").noise, parse_noise("tournament"));
+  EXPECT_TRUE(ai_level("champion").lookahead);
+  EXPECT_FALSE(make_player("baseline")->noise().has_value());
+}
+
+TEST(AiLevels, UnknownNamesAreRefusedWithTheKnownOnes) {
+  try {
+    ai_level("shark");
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("shark"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("champion"), std::string::npos) << msg;
+  }
+  try {
+    make_player("shark");
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("baseline"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("beginner"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("champion"), std::string::npos) << msg;
+  }
+}
+
+TEST(AiShotKind, Names) {
+  EXPECT_EQ(to_string(ShotKind::direct), "direct");
+  EXPECT_EQ(to_string(ShotKind::bank), "bank");
+  EXPECT_EQ(to_string(ShotKind::kick), "kick");
+  EXPECT_EQ(to_string(ShotKind::combination), "combination");
+  EXPECT_EQ(to_string(ShotKind::safety), "safety");
+  EXPECT_EQ(to_string(ShotKind::break_shot), "break_shot");
+}
+
+TEST(AiPlayer, PotsAStraightInBall) {
+  const Rules rules = eight_ball_rules();
+  const int pocket = pocket_index(rules, "bottom_right");
+  const StraightIn si =
+      straight_in(rules, pocket, {rules.table().length / 2, rules.table().width / 2}, 0.45, 0.35);
+  GameState s = bare_table(rules, si.cue);
+  put(s, 3, si.object);
+  put(s, 8, {0.5, 1.0});
+  put(s, 12, {0.3, 0.9});
+  for (const std::string level : {"beginner", "expert"}) {
+    AiLevel l = level == "beginner" ? ai_level(level) : small_level(level);
+    const auto player = make_ai_player(l);
+    const Action a = decide_legal(*player, rules, s);
+    ASSERT_TRUE(std::holds_alternative<Shoot>(a)) << level;
+    const Shoot& shot = std::get<Shoot>(a);
+    ASSERT_TRUE(shot.call.has_value()) << level;
+    EXPECT_EQ(shot.call->ball, 3) << level;
+    const Outcome out = rules.apply(s, a);  // as intended, without noise
+    EXPECT_GE(pocket_of(out.facts, 3), 0) << level;
+    EXPECT_TRUE(out.ruling.fouls.empty()) << level << ": " << out.ruling.text;
+    EXPECT_TRUE(out.ruling.turn_continues) << level << ": " << out.ruling.text;
+  }
+}
+
+TEST(AiPlayer, FindsTheBankWhenEveryDirectPotIsBlocked) {
+  // 9-ball: the 1 with a blocker on its line to every pocket (hitting a
+  // blocker first is a foul, so no combination either); the way out is
+  // off the top rail.
+  const Rules rules = nine_ball_rules();
+  const Vec2 one{1.6, 0.9};
+  GameState s = bare_table(rules, at(one, 240.0, 0.12));
+  put(s, 1, one);
+  int blocker = 2;
+  for (const Pocket& pk : rules.table().pockets) {
+    put(s, blocker++, one + unit(pk.centre - one) * 0.3);
+  }
+  // No direct pot exists.
+  for (const CandidateShot& c : generate_shots(rules, s, ShotGenOptions{})) {
+    EXPECT_NE(c.kind, ShotKind::direct);
+  }
+  const auto player = make_ai_player(small_level());
+  const Action a = decide_legal(*player, rules, s);
+  ASSERT_TRUE(std::holds_alternative<Shoot>(a));
+  const Outcome out = rules.apply(s, a);
+  EXPECT_EQ(out.facts.first_hit, 1);
+  EXPECT_GE(pocket_of(out.facts, 1), 0) << out.ruling.text;
+  EXPECT_TRUE(out.ruling.turn_continues) << out.ruling.text;
+}
+
+TEST(AiPlayer, PlaysASafetyWhenNothingIsMakeable) {
+  // The 1 in a ring of others, open only toward the cue ball: no pot.
+  const Rules rules = nine_ball_rules();
+  const Vec2 one{1.6, 0.6};
+  GameState s = bare_table(rules, {0.6, 0.6});
+  put(s, 1, one);
+  for (int k = 0; k < 6; ++k) {
+    if (k == 3) continue;  // the side facing the cue ball
+    put(s, 2 + (k > 3 ? k - 1 : k), at(one, 60.0 * k, 2.0 * kR + 0.003));
+  }
+  put(s, 9, {2.3, 1.1});
+  const auto player = make_ai_player(small_level());
+  const Action a = decide_legal(*player, rules, s);
+  ASSERT_TRUE(std::holds_alternative<Shoot>(a));
+  const Outcome out = rules.apply(s, a);
+  EXPECT_EQ(out.facts.first_hit, 1);
+  EXPECT_TRUE(out.ruling.fouls.empty()) << out.ruling.text;
+  EXPECT_FALSE(out.ruling.turn_continues) << out.ruling.text;
+  // The opponent is left without an easy pot.
+  ASSERT_EQ(out.state.player, 1);
+  EXPECT_LT(ai_detail::best_pot_estimate(rules, out.state, 0.125), 0.6);
+}
+
+TEST(AiPlayer, PlacesTheCueBallAnywhereThenShoots) {
+  const Rules rules = eight_ball_rules();
+  GameState s = bare_table(rules, {0.5, 0.5});
+  s.on_table[0] = 0;
+  s.ball_in_hand = BallInHand::anywhere;
+  put(s, 2, {1.8, 0.4});
+  put(s, 5, {0.9, 1.0});
+  put(s, 8, {1.3, 0.7});
+  put(s, 13, {2.0, 0.9});
+  const auto player = make_ai_player(small_level());
+  const Action a = decide_legal(*player, rules, s);
+  ASSERT_TRUE(std::holds_alternative<PlaceCueBall>(a));
+  const GameState placed = rules.apply(s, a).state;
+  const Action b = decide_legal(*player, rules, placed, 2);
+  ASSERT_TRUE(std::holds_alternative<Shoot>(b));
+  const Outcome out = rules.apply(placed, b);
+  EXPECT_TRUE(out.ruling.fouls.empty()) << out.ruling.text;
+  EXPECT_TRUE(out.ruling.turn_continues) << out.ruling.text;  // ball in hand: an easy pot
+}
+
+TEST(AiPlayer, PlacesTheCueBallBehindTheHeadString) {
+  const Rules rules = eight_ball_rules();
+  GameState s = bare_table(rules, {0.5, 0.5});
+  s.on_table[0] = 0;
+  s.ball_in_hand = BallInHand::kitchen;
+  put(s, 2, {1.8, 0.4});
+  put(s, 4, {0.3, 0.9});  // behind the head string: not a fair first ball
+  put(s, 11, {2.2, 1.0});
+  for (const std::string level : {"beginner", "expert"}) {
+    const auto player = make_ai_player(level == "beginner" ? ai_level(level) : small_level());
+    const Action a = decide_legal(*player, rules, s);
+    ASSERT_TRUE(std::holds_alternative<PlaceCueBall>(a)) << level;
+    EXPECT_LE(std::get<PlaceCueBall>(a).position.x, rules.head_string()) << level;
+    const GameState placed = rules.apply(s, a).state;
+    const Action b = decide_legal(*player, rules, placed, 2);
+    ASSERT_TRUE(std::holds_alternative<Shoot>(b)) << level;
+    const Outcome out = rules.apply(placed, b);
+    EXPECT_NE(out.facts.first_hit, 4) << level;
+  }
+}
+
+TEST(AiPlayer, SameSeedAndBudgetSameActionOnOneAndTwoThreads) {
+  const Rules rules = eight_ball_rules();
+  GameState s = bare_table(rules, {0.7, 0.5});
+  put(s, 1, {1.5, 0.4});
+  put(s, 3, {1.9, 1.0});
+  put(s, 9, {1.2, 0.9});
+  put(s, 8, {2.2, 0.3});
+  AiLevel l = small_level("champion");
+  l.candidates = 5;
+  l.samples = 6;
+  l.simulation_budget = 40;
+  for (std::uint64_t seed : {1u, 2u}) {
+    l.threads = 1;
+    const Action one = make_ai_player(l)->decide(rules, s, seed);
+    l.threads = 2;
+    const Action two = make_ai_player(l)->decide(rules, s, seed);
+    EXPECT_TRUE(one == two) << "seed " << seed;
+  }
+}
+
+TEST(AiPlayer, WholeGamesAreLegal) {
+  // play_game throws if any action is refused.
+  for (const GameType g : {GameType::eight_ball, GameType::nine_ball}) {
+    GameConfig c;
+    c.game = g;
+    c.max_shots = 60;
+    const Rules rules(c);
+    AiLevel l = small_level("club");
+    l.candidates = 3;
+    l.samples = 2;
+    l.generation.max_candidates = 12;
+    const auto ai = make_ai_player(l);
+    const auto beginner = make_ai_player(ai_level("beginner"));
+    const auto baseline = make_baseline_player();
+    for (int breaker : {0, 1}) {
+      const GameRecord r = play_game(rules, *ai, breaker ? *beginner : *baseline, breaker,
+                                     static_cast<std::uint64_t>(11 + breaker),
+                                     parse_noise("tournament"));
+      EXPECT_EQ(r.actions.back().after.phase, Phase::game_over);
+    }
+  }
+}
+
+}  // namespace
