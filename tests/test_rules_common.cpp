@@ -190,8 +190,18 @@ TEST(RulesCommonPhase, CallsSafetiesAndPushOutsBelongToTheirGame) {
   GameState n = bare_table(nine, {0.8, 0.5});
   n.push_out_allowed = true;
   put(n, 1, {1.9, 0.9});
+  // 9-ball calls are informational: allowed, ignored by the ruling, but
+  // they must name a ball on the table and a pocket that exists, and a
+  // push-out carries none.
   Shoot called = shot_at(n.position[0], n.position[1], 2.0);
   called.call = Call{1, 0};
+  EXPECT_FALSE(nine.check(n, called).has_value());
+  called.call = Call{1, 6};
+  rejected(nine, n, called);
+  called.call = Call{4, 0};  // the 4 is not on this table
+  rejected(nine, n, called);
+  called.call = Call{1, 0};
+  called.push_out = true;
   rejected(nine, n, called);
   Shoot safe = shot_at(n.position[0], n.position[1], 2.0);
   safe.safety = true;

@@ -442,6 +442,7 @@ TEST(RulesEightGroups, TheCalledBallInTheCalledPocketContinuesTheTurn) {
   EXPECT_TRUE(o.ruling.fouls.empty());
   EXPECT_TRUE(o.ruling.turn_continues);
   EXPECT_EQ(o.ruling.assigned, Group::none);  // already assigned
+  EXPECT_TRUE(o.ruling.call_made);
   EXPECT_FALSE(o.ruling.text.empty());
   EXPECT_EQ(o.state.player, 0);
   EXPECT_EQ(o.state.phase, Phase::shot);

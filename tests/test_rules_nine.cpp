@@ -184,6 +184,23 @@ TEST(RulesNineShots, AnyBallLegallyPocketedContinuesTheTurn) {
   EXPECT_EQ(o.state.ball_in_hand, BallInHand::none);
   EXPECT_FALSE(on(o.state, 5));
   EXPECT_FALSE(o.state.push_out_allowed);
+  EXPECT_FALSE(o.ruling.call_made);  // no call
+
+  // A 9-ball call is informational: the same shot called on the 5 in this
+  // pocket gets the same ruling, marked as a pot made; called elsewhere,
+  // the same ruling, not marked.
+  Shoot called = shot_at(c.cue, c.carrier, 3.0);
+  called.call = Call{5, br};
+  const Outcome oc = rules.apply(s, called);
+  EXPECT_EQ(oc.state, o.state);
+  EXPECT_EQ(oc.ruling.fouls, o.ruling.fouls);
+  EXPECT_EQ(oc.ruling.turn_continues, o.ruling.turn_continues);
+  EXPECT_TRUE(oc.ruling.call_made);
+  called.call = Call{5, (br + 1) % 6};
+  const Outcome ow = rules.apply(s, called);
+  EXPECT_EQ(ow.state, o.state);
+  EXPECT_TRUE(ow.ruling.turn_continues);
+  EXPECT_FALSE(ow.ruling.call_made);
 }
 
 TEST(RulesNineShots, TheNineLegallyPocketedOnACombinationWins) {

@@ -132,6 +132,8 @@ struct Shoot {
   CueStrike strike;
   /// 8-ball: the called ball and pocket. Without a call a shot counts
   /// only as an obvious one (docs/rules.md); the 8 must always be called.
+  /// 9-ball: optional and informational (the rules ignore it); it marks
+  /// the shot as a pot attempt for statistics.
   std::optional<Call> call;
   bool safety = false;    ///< 8-ball: declared safety, the turn ends after it
   bool push_out = false;  ///< 9-ball: declared push-out
@@ -175,6 +177,9 @@ struct Ruling {
   std::vector<int> spotted;      ///< balls put back on the table
   int winner = -1;               ///< set when the game ended with this action
   std::string text;              ///< the ruling in words
+  /// The shot carried a call and the called ball fell in the called
+  /// pocket with no foul (a pot attempt that succeeded; match statistics).
+  bool call_made = false;
   bool operator==(const Ruling&) const = default;
 };
 

@@ -73,6 +73,14 @@ struct PlayerStats {
 
   /// balls_pocketed / innings (0 without innings).
   double balls_per_inning() const;
+  /// Pot attempts: shots other than breaks that carried a call (8-ball
+  /// calls; 9-ball players may call too, for this count). Made: the
+  /// called ball fell in the called pocket with no foul
+  /// (Ruling::call_made).
+  int pot_attempts = 0;
+  int pots_made = 0;
+  /// pots_made / pot_attempts (0 without attempts).
+  double pot_rate() const;
 };
 
 struct MatchSummary {

@@ -168,6 +168,11 @@ GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
   return record;
 }
 
+double PlayerStats::pot_rate() const {
+  return pot_attempts > 0 ? static_cast<double>(pots_made) / static_cast<double>(pot_attempts)
+                          : 0.0;
+}
+
 double PlayerStats::balls_per_inning() const {
   return innings > 0 ? static_cast<double>(balls_pocketed) / static_cast<double>(innings) : 0.0;
 }
@@ -214,6 +219,11 @@ void add_game(MatchSummary& summary, const GameRecord& record) {
       any_break = true;
     }
     me.balls_pocketed += pocketed_by_shot(before, ra);
+    const Shoot& shot = std::get<Shoot>(ra.action);
+    if (before.phase != Phase::break_shot && shot.call) {
+      me.pot_attempts += 1;
+      if (ra.ruling.call_made) me.pots_made += 1;
+    }
     for (const Foul f : ra.ruling.fouls) me.fouls[std::string(to_string(f))] += 1;
   }
 
@@ -284,6 +294,9 @@ std::string match_summary_json(const MatchSummary& s) {
     o["shots"] = p.shots;
     o["balls_pocketed"] = p.balls_pocketed;
     o["balls_per_inning"] = p.balls_per_inning();
+    o["pot_attempts"] = p.pot_attempts;
+    o["pots_made"] = p.pots_made;
+    o["pot_rate"] = p.pot_rate();
     ojson fouls = ojson::object();
     for (const auto& [kind, count] : p.fouls) fouls[kind] = count;
     o["fouls"] = std::move(fouls);

@@ -216,8 +216,20 @@ std::optional<std::string> Rules::check(const GameState& s, const Action& action
     return "strike offsets a and b must be within the ball ([-1, 1] radii)";
   }
   if (config_.game == GameType::nine_ball) {
-    if (shot.call) return "9-ball shots are not called";
     if (shot.safety) return "9-ball has no declared safety";
+    if (shot.call) {
+      // Informational only: a valid pocket and an object ball on the table.
+      const Call& call = *shot.call;
+      if (call.pocket < 0 || call.pocket >= static_cast<int>(table_.pockets.size())) {
+        return "called pocket " + std::to_string(call.pocket) + " does not exist (0-" +
+               std::to_string(table_.pockets.size() - 1) + ")";
+      }
+      if (call.ball < 1 || call.ball >= ball_count() ||
+          !s.on_table[static_cast<std::size_t>(call.ball)]) {
+        return "called ball " + std::to_string(call.ball) + " is not on the table";
+      }
+      if (shot.push_out) return "a push-out is not a pot attempt: it has no call";
+    }
     if (shot.push_out && !legal_actions(s).push_out) {
       return "a push-out is only allowed on the shot right after the break";
     }
@@ -694,6 +706,8 @@ Outcome Rules::apply(const GameState& state, const Action& action) const {
     }
   }
 
+  r.call_made = !is_break && shot.call && r.fouls.empty() &&
+                pocket_of(shot.call->ball) == shot.call->pocket;
   if (s.phase != Phase::game_over && config_.max_shots > 0 && s.shots >= config_.max_shots) {
     game_over(-1, "stalemate: no result after " + std::to_string(s.shots) + " shots");
     r.text += " The game is drawn (" + s.result + ").";

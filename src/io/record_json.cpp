@@ -30,7 +30,7 @@
 //           {"type": "decide", "choice"}
 //   STRIKE  {"speed", "phi", "theta", "a", "b"}; "intended" is a STRIKE or null
 //   ruling  {"fouls": [names], "legal_break", "turn_continues", "assigned",
-//            "spotted": [ball numbers], "winner", "text"}
+//            "spotted": [ball numbers], "winner", "text", "call_made"}
 //
 // Every field is always written (null for an empty optional) and always
 // required on reading, so a record cannot lose a field without notice.
@@ -171,7 +171,7 @@ ojson state_json(const GameState& s) {
 }
 
 ojson ruling_json(const Ruling& r) {
-  const auto& [fouls, legal_break, turn_continues, assigned, spotted, winner, text] = r;
+  const auto& [fouls, legal_break, turn_continues, assigned, spotted, winner, text, call_made] = r;
   ojson j = ojson::object();
   ojson names = ojson::array();
   for (const Foul f : fouls) names.push_back(to_string(f));
@@ -182,6 +182,7 @@ ojson ruling_json(const Ruling& r) {
   j["spotted"] = spotted;
   j["winner"] = winner;
   j["text"] = text;
+  j["call_made"] = call_made;
   return j;
 }
 
@@ -637,7 +638,7 @@ bool RecordReader::state(const json& v, const std::string& path, GameState& s) {
 bool RecordReader::ruling(const json& v, const std::string& path, Ruling& r) {
   if (!object(v, path,
               {"fouls", "legal_break", "turn_continues", "assigned", "spotted", "winner",
-               "text"})) {
+               "text", "call_made"})) {
     return false;
   }
   const auto at = [&](std::string_view key) { return member_path(path, key); };
@@ -661,7 +662,8 @@ bool RecordReader::ruling(const json& v, const std::string& path, Ruling& r) {
     if (!integer(spotted[i], index_path(at("spotted"), i), 0, 15, r.spotted[i])) return false;
   }
   return integer(v["winner"], at("winner"), -1, 1, r.winner) &&
-         text(v["text"], at("text"), r.text);
+         text(v["text"], at("text"), r.text) &&
+         boolean(v["call_made"], at("call_made"), r.call_made);
 }
 
 bool RecordReader::action(const json& v, const std::string& path, Action& a) {
