@@ -5,9 +5,11 @@
 #   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
 #   (c) install the release build and build and run the example consumer
 #       against it (find_package(breakshot)); run scripts/run.sh
-#   (d) the libFuzzer target, built with clang: seed corpus replay (a test),
-#       then fuzzing for BREAKSHOT_FUZZ_SECONDS (default 60) seconds, seeded
-#       with fuzz/corpus and examples/lab
+#   (d) the libFuzzer targets, built with clang: seed corpus replays (tests),
+#       then fuzzing scenarios for BREAKSHOT_FUZZ_SECONDS (default 60)
+#       seconds, seeded with fuzz/corpus and examples/lab, and game records
+#       for BREAKSHOT_RECORD_FUZZ_SECONDS (default 30), seeded with
+#       fuzz/record_corpus
 #
 # The last line is the sum over every ctest run: "N passed, 0 failed".
 #
@@ -21,11 +23,12 @@ quick=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done
 fuzz_seconds=${BREAKSHOT_FUZZ_SECONDS:-60}
+record_fuzz_seconds=${BREAKSHOT_RECORD_FUZZ_SECONDS:-30}
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
@@ -128,6 +131,20 @@ if [ "$quick" -eq 0 ]; then
     tail -n 80 "$fuzz_log"
     echo "test.sh: the fuzzer found a failing input; it is in build/fuzz/artifacts/" >&2
     echo "test.sh: reproduce with: build/fuzz/fuzz/breakshot_fuzz build/fuzz/artifacts/FILE" >&2
+    false
+  fi
+  grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
+    "$fuzz_log" || true
+  stage "(d) fuzz: game records for ${record_fuzz_seconds}s"
+  mkdir -p build/fuzz/record-corpus-work
+  fuzz_log=$logs/fuzz-record.log
+  if ! build/fuzz/fuzz/breakshot_fuzz_record \
+      -max_total_time="$record_fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
+      -artifact_prefix=build/fuzz/artifacts/ -print_final_stats=1 \
+      build/fuzz/record-corpus-work fuzz/record_corpus >"$fuzz_log" 2>&1; then
+    tail -n 80 "$fuzz_log"
+    echo "test.sh: the record fuzzer found a failing input; it is in build/fuzz/artifacts/" >&2
+    echo "test.sh: reproduce with: build/fuzz/fuzz/breakshot_fuzz_record build/fuzz/artifacts/FILE" >&2
     false
   fi
   grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
