@@ -54,18 +54,16 @@ void expect_well_formed(const Rules& rules, const GameState& s,
     if (pot) {
       EXPECT_GE(c.pocket, 0) << what(c);
       EXPECT_NE(c.kind, ShotKind::safety);
-      if (eight) {
-        ASSERT_TRUE(c.shot.call.has_value()) << what(c);
-        EXPECT_EQ(c.shot.call->ball, c.target);
-        EXPECT_EQ(c.shot.call->pocket, c.pocket);
-        EXPECT_FALSE(c.shot.safety);
-      }
+      // 8-ball needs the call; 9-ball carries it for the pot statistics.
+      ASSERT_TRUE(c.shot.call.has_value()) << what(c);
+      EXPECT_EQ(c.shot.call->ball, c.target);
+      EXPECT_EQ(c.shot.call->pocket, c.pocket);
+      EXPECT_FALSE(c.shot.safety);
     } else {
       EXPECT_FALSE(c.shot.call.has_value());
       EXPECT_EQ(c.shot.safety, eight) << what(c);
     }
     if (!eight) {
-      EXPECT_FALSE(c.shot.call.has_value());
       EXPECT_FALSE(c.shot.safety);
     }
   }

@@ -108,11 +108,15 @@ constexpr double kAcceptThreshold = 0.1;
 // A placement or a candidate needs to beat staying put by this much, so
 // that the placement decision settles.
 constexpr double kStayMargin = 0.02;
+// What a pot's value loses per unit of its sampled miss rate (above).
+constexpr double kMissPenalty = 0.25;
 // Without sampling, a pot is preferred to a safety from this prior up.
 constexpr double kFairPot = 0.2;
 
 constexpr double kBreakSpeedSoft = 8.5;  // m/s
 constexpr double kBreakSpeedHard = 11.0;
+constexpr double kBreakSpeedMedium = 10.0;
+constexpr double kBreakSpeedNine = 12.0;
 constexpr double kBreakDraw = -0.2;  // a little draw keeps the cue ball near the centre
 
 /// A decision's remaining allowance: simulations (deterministic) and wall
@@ -239,6 +243,19 @@ class AiPlayer final : public Player {
 
     cands = shortlist(std::move(cands), static_cast<std::size_t>(std::max(
                                             1, static_cast<int>(std::lround(level_.candidates * scale)))));
+    // 8-ball: each declared safety also unannounced. Without a call the
+    // shot counts only if the first ball hit drops (docs/rules.md), so it
+    // plays out like the safety except that such a ball keeps the turn
+    // instead of ending it; the samples say which is worth more.
+    if (state.game == GameType::eight_ball && level_.samples >= 12) {
+      const std::size_t n0 = cands.size();
+      for (std::size_t i = 0; i < n0; ++i) {
+        if (!cands[i].shot.safety) continue;
+        CandidateShot open = cands[i];
+        open.shot.safety = false;
+        if (!rules.check(state, open.shot)) cands.push_back(open);
+      }
+    }
     const std::size_t n = cands.size();
     const int total = std::max(1, static_cast<int>(std::lround(level_.samples * scale)));
     const int first = std::max(1, (total + 1) / 2);
@@ -248,6 +265,7 @@ class AiPlayer final : public Player {
     // the samples left (for the lookahead).
     std::vector<double> sum(n, 0.0);
     std::vector<int> count(n, 0);
+    std::vector<int> kept(n, 0);
     std::vector<std::vector<GameState>> left(n);
     const bool keep = level_.lookahead;
 
@@ -257,6 +275,7 @@ class AiPlayer final : public Player {
       if (per == 0 || which.empty()) return;
       struct Result {
         double value = 0.0;
+        bool kept = false;  ///< the shooter still at the table, or won
         GameState after;
       };
       const std::vector<Result> res = parallel_map<Result>(
@@ -266,13 +285,17 @@ class AiPlayer final : public Player {
             Result r;
             r.value = sample_shot(rules, state, cands[c].shot, level_.noise,
                                   mix_seed(sample_seed, static_cast<std::uint64_t>(s)), sigma_,
-                                  keep ? &r.after : nullptr);
+                                  &r.after);
+            r.kept = r.after.phase == Phase::game_over ? r.after.winner == state.player
+                                                       : r.after.player == state.player;
+            if (!keep) r.after = GameState{};
             return r;
           });
       for (std::size_t u = 0; u < res.size(); ++u) {
         const std::size_t c = which[u / per];
         sum[c] += res[u].value;
         count[c] += 1;
+        kept[c] += res[u].kept ? 1 : 0;
         if (keep) left[c].push_back(res[u].after);
       }
     };
@@ -285,7 +308,17 @@ class AiPlayer final : public Player {
         budget.take(static_cast<std::int64_t>(n) * first) / static_cast<std::int64_t>(n));
     run(all, 0, std::max(1, first_granted));
 
-    const auto mean = [&](std::size_t c) { return count[c] ? sum[c] / count[c] : kNoValue; };
+    // A pot is charged for the share of its samples that miss: beyond
+    // what the miss's table is worth, a missed pot hands the opponent the
+    // table, which the static values read too kindly (risk aversion; the
+    // strongest level only).
+    const double risk = level_.lookahead ? kMissPenalty : 0.0;
+    const auto mean = [&](std::size_t c) {
+      if (!count[c]) return kNoValue;
+      double m = sum[c] / count[c];
+      if (cands[c].target >= 0) m -= risk * (1.0 - static_cast<double>(kept[c]) / count[c]);
+      return m;
+    };
     const auto ranked = [&]() {
       std::vector<std::size_t> order(n);
       std::iota(order.begin(), order.end(), std::size_t{0});
@@ -372,31 +405,35 @@ class AiPlayer final : public Player {
   }
 
   /// Corrects value[c] for each c in `top`: for up to kStates of the
-  /// tables its samples left with the player still at the table, the best
-  /// of the next shot's top pots is sampled; the mean difference between
-  /// that and the static value of the table, times the share of samples
-  /// that left such a table, is added.
+  /// tables its samples left with a shot to play from where the cue ball
+  /// lies (the player's own next shot, or the opponent's after a miss or
+  /// a safety), the shooter's best few pots there are sampled, with the
+  /// static value of playing safe (the table with no pot) as a floor. The
+  /// mean difference between that and the static value of those tables,
+  /// times the share of samples that left such a table, is added. So the
+  /// cue ball's leave (position play) and what a safety really leaves the
+  /// opponent are both read by sampling rather than by the quick estimate.
   void lookahead(const Rules& rules, const GameState& state, std::uint64_t seed,
                  const std::vector<std::size_t>& top,
                  const std::vector<std::vector<GameState>>& left, const std::vector<int>& count,
                  std::vector<double>& value, Budget& budget) const {
-    constexpr std::size_t kStates = 4;
+    const std::size_t kStates = level_.samples >= 48 ? 8 : 4;
     constexpr std::size_t kNext = 3;
-    const int next_samples = std::max(4, level_.samples / 4);
+    const int next_samples = std::max(4, level_.samples / 6);
     const int me = state.player;
     struct Unit {
       std::size_t cand;
       const GameState* table;
     };
     std::vector<Unit> units;
-    std::vector<int> continuing(value.size(), 0);
+    std::vector<int> readable(value.size(), 0);
     for (std::size_t c : top) {
       std::size_t taken = 0;
       for (const GameState& g : left[c]) {
-        const bool again = g.phase == Phase::shot && g.player == me &&
-                           g.ball_in_hand == BallInHand::none && g.on_table[0];
-        if (!again) continue;
-        ++continuing[c];
+        const bool shot = g.phase == Phase::shot && g.ball_in_hand == BallInHand::none &&
+                          g.on_table[0];
+        if (!shot) continue;
+        ++readable[c];
         if (taken < kStates) {
           units.push_back(Unit{c, &g});
           ++taken;
@@ -410,7 +447,11 @@ class AiPlayer final : public Player {
     const std::uint64_t look_seed = mix_seed(seed, kLookStream);
     const std::vector<double> delta = parallel_map<double>(units.size(), level_.threads, [&](std::size_t u) {
       const GameState& g = *units[u].table;
-      const double stat = position_value(rules, g, me, sigma_);
+      const int shooter = g.player;
+      const double stat = position_value(rules, g, shooter, sigma_);
+      // Playing safe: the static value without the pot.
+      const double safe =
+          stat - ai_detail::kShooterGain * best_pot_estimate(rules, g, sigma_);
       std::vector<CandidateShot> next = generate_shots(rules, g, gen);
       std::stable_sort(next.begin(), next.end(),
                        [](const CandidateShot& a, const CandidateShot& b) { return a.prior > b.prior; });
@@ -425,7 +466,10 @@ class AiPlayer final : public Player {
         q = std::max(q, s / next_samples);
       }
       // Nothing to pot found: the static value (a safety) stands.
-      return q == kNoValue ? 0.0 : q - stat;
+      if (q == kNoValue) return 0.0;
+      q = std::max(q, safe);
+      const double d = q - stat;
+      return shooter == me ? d : -d;
     });
     std::vector<double> dsum(value.size(), 0.0);
     std::vector<int> dn(value.size(), 0);
@@ -435,7 +479,7 @@ class AiPlayer final : public Player {
     }
     for (std::size_t c : top) {
       if (dn[c] == 0 || count[c] == 0) continue;
-      value[c] += (dsum[c] / dn[c]) * continuing[c] / static_cast<double>(count[c]);
+      value[c] += (dsum[c] / dn[c]) * readable[c] / static_cast<double>(count[c]);
     }
   }
 
@@ -621,11 +665,26 @@ class AiPlayer final : public Player {
     std::vector<double> offsets{0.0};
     std::vector<double> speeds{kBreakSpeedHard};
     std::vector<double> spread{0.0};
+    std::vector<double> draws{kBreakDraw};
     if (searches()) {
       offsets = {0.0, -0.2, 0.2};
       speeds = {kBreakSpeedSoft, kBreakSpeedHard};
       spread = level_.candidates >= 8 ? std::vector<double>{0.0, -0.25, 0.25, -0.45, 0.45}
                                       : std::vector<double>{0.0, -0.3, 0.3};
+    }
+    if (level_.lookahead) {
+      // The strongest level searches the break finely: from the side of
+      // the kitchen, a fraction of a ball off the head ball's centre, at
+      // about 10-11 m/s with a centre hit keeps the cue ball and drops a
+      // ball most often (about 0.85 of 8-ball racks under tournament
+      // noise, measured on the engine, against 0.7 at the head spot).
+      offsets = {-0.3, -0.2, -0.1, 0.0, 0.1, 0.2, 0.3};
+      // 9-ball's diamond wants a little more pace (11-12 m/s).
+      speeds = state.game == GameType::nine_ball
+                   ? std::vector<double>{kBreakSpeedHard, kBreakSpeedNine}
+                   : std::vector<double>{kBreakSpeedMedium, kBreakSpeedHard};
+      spread = {-0.45, 0.45, -0.25, 0.25};
+      draws = {0.0, kBreakDraw};
     }
     GameState probe = state;
     probe.on_table[0] = 0;  // the cue ball's current place must not block a placement
@@ -636,7 +695,9 @@ class AiPlayer final : public Player {
         // Aim a fraction of a ball to one side of the head ball's centre.
         const Vec2 d = (target - p) / norm(target - p);
         const Vec2 aim = target + perp(d) * (off * R);
-        for (double v : speeds) options.push_back(Option{p, make_shoot(aim_deg(p, aim), v, kBreakDraw)});
+        for (double v : speeds) {
+          for (double b : draws) options.push_back(Option{p, make_shoot(aim_deg(p, aim), v, b)});
+        }
       }
     }
     if (options.empty()) {
@@ -760,10 +821,15 @@ AiLevel make_level(std::string_view name) {
     l.samples = 24;
   } else if (name == "champion") {
     l.noise = parse_noise("tournament");
-    l.candidates = 60;
+    // More speeds and spins for position play, more candidates sampled and
+    // read a shot deeper: still well under a second a decision.
+    l.generation.speed_factors = {1.0, 1.3, 1.7, 2.4, 3.2};
+    l.generation.spins = {-0.5, -0.2, 0.0, 0.25, 0.5};
+    l.generation.max_candidates = 200;
+    l.candidates = 90;
     l.samples = 64;
     l.lookahead = true;
-    l.lookahead_candidates = 5;
+    l.lookahead_candidates = 16;
   }
   return l;
 }

@@ -818,7 +818,11 @@ class Generator {
         c.shot.strike.speed = factor == 1.0 && b == 0.0 ? speed : v;
         c.shot.strike.phi = r->phi;
         c.shot.strike.b = b;
-        if (la_.call) c.shot.call = Call{l.target, l.pocket};
+        // 8-ball: the call the rules need. 9-ball: the same call, which
+        // the rules ignore but the match counts as a pot attempt (dropped
+        // if the rules refuse it).
+        c.shot.call = Call{l.target, l.pocket};
+        if (!la_.call && rules_.check(state_, Action{c.shot})) c.shot.call.reset();
         // A little less for the harder strokes, so that ties go to the
         // simpler one.
         c.prior = prior * (1.0 - 0.03 * std::abs(b)) * (factor > 2.0 ? 0.97 : 1.0);
