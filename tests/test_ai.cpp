@@ -133,6 +133,27 @@ TEST(AiPlayer, PotsAStraightInBall) {
   }
 }
 
+TEST(AiPlayer, NineBallPotsCarryAnInformationalCall) {
+  // 9-ball: the rules ignore a call, but the AI makes one on its pots so
+  // that the match can count its pot attempts.
+  const Rules rules = nine_ball_rules();
+  const int pocket = pocket_index(rules, "bottom_right");
+  const StraightIn si =
+      straight_in(rules, pocket, {rules.table().length / 2, rules.table().width / 2}, 0.45, 0.35);
+  GameState s = bare_table(rules, si.cue);
+  put(s, 1, si.object);
+  put(s, 9, {0.5, 1.0});
+  const auto player = make_ai_player(small_level());
+  const Action a = decide_legal(*player, rules, s);
+  ASSERT_TRUE(std::holds_alternative<Shoot>(a));
+  const Shoot& shot = std::get<Shoot>(a);
+  ASSERT_TRUE(shot.call.has_value());
+  EXPECT_EQ(shot.call->ball, 1);
+  EXPECT_EQ(shot.call->pocket, pocket);
+  const Outcome out = rules.apply(s, a);
+  EXPECT_TRUE(out.ruling.call_made) << out.ruling.text;
+}
+
 TEST(AiPlayer, FindsTheBankWhenEveryDirectPotIsBlocked) {
   // 9-ball: the 1 with a blocker on its line to every pocket (hitting a
   // blocker first is a foul, so no combination either); the way out is
