@@ -460,6 +460,29 @@ TEST_F(MatchCli, MatchPrintsTheSummary) {
   EXPECT_EQ(read_file(dir_ / "records" / "game-0001.json").config.table_size, "7ft");
 }
 
+TEST_F(MatchCli, TimingAddsDecisionTimesOnlyWhenAsked) {
+  const std::string args = "match --game nine_ball --players baseline,beginner --games 2 --seed 3 "
+                           "--noise tournament";
+  const Run plain = run(args);
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_FALSE(json::parse(plain.out)["players"][0].contains("decision_seconds"));
+  const Run timed = run(args + " --timing");
+  ASSERT_EQ(timed.status, 0) << timed.err;
+  const json j = json::parse(timed.out);
+  for (const json& p : j["players"]) {
+    ASSERT_TRUE(p.contains("decision_seconds")) << timed.out;
+    const json& t = p["decision_seconds"];
+    EXPECT_GT(t["decisions"].get<int>(), 0);
+    EXPECT_LE(t["median"].get<double>(), t["p90"].get<double>());
+    EXPECT_LE(t["p90"].get<double>(), t["max"].get<double>());
+    EXPECT_GE(t["median"].get<double>(), 0.0);
+  }
+  // The games themselves do not change with timing on.
+  json a = json::parse(plain.out), b = j;
+  for (json& p : b["players"]) p.erase("decision_seconds");
+  EXPECT_EQ(a, b);
+}
+
 TEST_F(MatchCli, ReplayOfAWrittenRecordIsIdentical) {
   ASSERT_EQ(play_one().status, 0);
   const Run r = run("replay " + quote((dir_ / "records" / "game-0001.json").string()));

@@ -3,7 +3,7 @@
 //
 //   breakshot simulate FILE|- [-o PATH] [--plot PREFIX]
 //   breakshot match --game eight_ball|nine_ball --players A,B --games N
-//                   --seed S --noise LEVEL [--table 7ft|8ft|9ft] [--records DIR]
+//                   --seed S --noise LEVEL [--table 7ft|8ft|9ft] [--records DIR] [--timing]
 //     (--noise is the noise of players without one of their own; AI levels
 //     shoot with their level's noise)
 //   breakshot replay RECORD|-
@@ -176,6 +176,7 @@ struct MatchArgs {
   std::string noise;
   std::string table = "9ft";
   std::string records;
+  bool timing = false;
 };
 
 template <class T>
@@ -224,6 +225,7 @@ bs::MatchOptions match_options(const MatchArgs& a) {
   }
   opt.table_size = a.table;
   opt.records_dir = a.records;
+  opt.timing = a.timing;
   return opt;
 }
 
@@ -336,6 +338,9 @@ int main(int argc, char** argv) {
   match->add_option("--records", match_args.records,
                     "Write each game's record to DIR/game-0001.json, ... (DIR is created)")
       ->type_name("DIR");
+  match->add_flag("--timing", match_args.timing,
+                  "Add each player's decision times (median, p90, max seconds) to the summary; "
+                  "they vary from run to run");
   match->footer(
       "--noise is the baseline noise: AI levels shoot with their level's own noise\n"
       "(docs/ai.md), whatever --noise says. The summary gives each player's noise.\n"

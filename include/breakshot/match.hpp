@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
@@ -42,6 +43,10 @@ struct MatchOptions {
   /// Where to write each game's record (game-0001.json, ...); created if
   /// missing. Empty: no records.
   std::string records_dir;
+  /// Measure how long each player's decisions take (wall clock) and put
+  /// the figures in the summary. Off by default: times differ from run to
+  /// run, and without them the summary is a function of the options.
+  bool timing = false;
 };
 
 /// One player's figures over a match. Everything counts only the
@@ -70,6 +75,8 @@ struct PlayerStats {
   /// Fouls by kind, by the names of to_string(Foul); every kind is
   /// listed, 0 included. One shot may commit several.
   std::map<std::string, int> fouls;
+  /// Seconds per decision, in order (MatchOptions::timing only).
+  std::vector<double> decision_seconds;
 
   /// balls_pocketed / innings (0 without innings).
   double balls_per_inning() const;

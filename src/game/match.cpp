@@ -15,13 +15,16 @@
 
 #include "breakshot/match.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -106,6 +109,32 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
   out.close();
   if (!out) throw std::runtime_error("cannot write " + path.string() + ": write error");
+}
+
+// A player whose decisions are timed (MatchOptions::timing).
+class TimedPlayer final : public Player {
+ public:
+  TimedPlayer(Player& inner, std::vector<double>& seconds) : inner_(inner), seconds_(seconds) {}
+  std::string name() const override { return inner_.name(); }
+  std::optional<NoiseModel> noise() const override { return inner_.noise(); }
+  Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) override {
+    const auto start = std::chrono::steady_clock::now();
+    Action a = inner_.decide(rules, state, seed);
+    seconds_.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return a;
+  }
+
+ private:
+  Player& inner_;
+  std::vector<double>& seconds_;
+};
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+  return v[std::min(k, v.size() - 1)];
 }
 
 }  // namespace
@@ -259,8 +288,12 @@ MatchSummary play_match(const MatchOptions& options) {
 
   MatchSummary summary = empty_summary_with(
       options, {effective_noise(*p0, options.noise), effective_noise(*p1, options.noise)});
+  TimedPlayer t0(*p0, summary.players[0].decision_seconds);
+  TimedPlayer t1(*p1, summary.players[1].decision_seconds);
+  Player& s0 = options.timing ? static_cast<Player&>(t0) : *p0;
+  Player& s1 = options.timing ? static_cast<Player&>(t1) : *p1;
   for (int g = 0; g < options.games; ++g) {
-    const GameRecord record = play_game(rules, *p0, *p1, g % 2,
+    const GameRecord record = play_game(rules, s0, s1, g % 2,
                                         mix_seed(options.seed, static_cast<std::uint64_t>(g)),
                                         options.noise);
     add_game(summary, record);
@@ -297,6 +330,14 @@ std::string match_summary_json(const MatchSummary& s) {
     o["pot_attempts"] = p.pot_attempts;
     o["pots_made"] = p.pots_made;
     o["pot_rate"] = p.pot_rate();
+    if (!p.decision_seconds.empty()) {
+      ojson t = ojson::object();
+      t["decisions"] = p.decision_seconds.size();
+      t["median"] = quantile(p.decision_seconds, 0.5);
+      t["p90"] = quantile(p.decision_seconds, 0.9);
+      t["max"] = quantile(p.decision_seconds, 1.0);
+      o["decision_seconds"] = std::move(t);
+    }
     ojson fouls = ojson::object();
     for (const auto& [kind, count] : p.fouls) fouls[kind] = count;
     o["fouls"] = std::move(fouls);
