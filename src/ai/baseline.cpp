@@ -59,6 +59,7 @@
 #include "breakshot/pool.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
+#include "geometry.hpp"
 
 namespace breakshot {
 
@@ -98,34 +99,8 @@ Vec2 rotate(Vec2 v, double angle) {
 /// Signed angle from a to b (radians, counter-clockwise positive).
 double angle_between(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
 
-bool segments_cross(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
-  const double d1 = cross(q1 - q0, p0 - q0);
-  const double d2 = cross(q1 - q0, p1 - q0);
-  const double d3 = cross(p1 - p0, q0 - p0);
-  const double d4 = cross(p1 - p0, q1 - p0);
-  return ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) &&
-         ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0));
-}
-
-double segment_segment_distance(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
-  if (segments_cross(p0, p1, q0, q1)) return 0.0;
-  return std::min({segment_distance(p0, q0, q1), segment_distance(p1, q0, q1),
-                   segment_distance(q0, p0, p1), segment_distance(q1, p0, p1)});
-}
-
-/// Distance from the segment a-b to a wall piece (an arc as its full
-/// circle: a little cautious).
-double wall_distance(const Wall& w, Vec2 a, Vec2 b) {
-  switch (w.kind) {
-    case WallKind::segment:
-      return segment_segment_distance(a, b, w.a, w.b);
-    case WallKind::corner:
-      return segment_distance(w.a, a, b);
-    case WallKind::arc:
-      return std::max(segment_distance(w.a, a, b) - w.radius, 0.0);
-  }
-  return 0.0;
-}
+using ai::segments_distance;
+using ai::wall_distance;
 
 /// Speed and rolling speed (R omega about the horizontal axis across the
 /// path; equal to the speed once rolling) of a ball after travelling d

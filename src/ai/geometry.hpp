@@ -1,0 +1,20 @@
+// Path geometry shared by the computer players (internal): distances
+// between straight paths and from a path to the table's walls.
+#pragma once
+
+#include "breakshot/table.hpp"
+#include "breakshot/vec.hpp"
+
+namespace breakshot::ai {
+
+/// True if the segments p0-p1 and q0-q1 cross at a point inside both.
+bool segments_cross(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1);
+
+/// Distance between the segments p0-p1 and q0-q1 (0 if they cross).
+double segments_distance(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1);
+
+/// Distance from the segment a-b to a wall piece; an arc counts as its
+/// whole circle, which errs on the side of caution.
+double wall_distance(const Wall& w, Vec2 a, Vec2 b);
+
+}  // namespace breakshot::ai
