@@ -17,6 +17,7 @@
 // output), 2 the record cannot be read or is invalid (standard error
 // names the JSON path), 1 anything else.
 
+#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -46,7 +47,10 @@
 #include "breakshot/player.hpp"
 #include "breakshot/record.hpp"
 #include "breakshot/scenario_io.hpp"
+#include "breakshot/serve.hpp"
 #include "breakshot/simulation.hpp"
+
+#include <csignal>
 
 #ifndef BREAKSHOT_VERSION
 #define BREAKSHOT_VERSION "0.1.0"
@@ -283,6 +287,42 @@ int run_replay(const std::string& file) {
   return kExitOk;
 }
 
+struct ServeArgs {
+#ifdef BREAKSHOT_WEB_DIST
+  std::string root = BREAKSHOT_WEB_DIST;
+#else
+  std::string root = "build/web/dist";
+#endif
+  int port = 8000;
+  bool quiet = false;
+};
+
+// Set by SIGINT/SIGTERM so that `serve` returns and the process exits 0.
+std::atomic<bool> g_stop_serving{false};
+extern "C" void on_stop_signal(int) { g_stop_serving.store(true); }
+
+int run_serve(const ServeArgs& args) {
+  breakshot::ServeOptions o;
+  o.root = args.root;
+  o.port = args.port;
+  o.stop = &g_stop_serving;
+  o.on_ready = [&](int port) {
+    std::cout << "breakshot: serving " << args.root << "\n"
+              << "breakshot: open http://127.0.0.1:" << port << "/ (Ctrl-C stops)" << std::endl;
+  };
+  if (!args.quiet) {
+    o.log = [](const std::string& line) { std::cerr << line << '\n'; };
+  }
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+  try {
+    breakshot::serve(o);
+  } catch (const std::runtime_error& e) {
+    throw Failure{e.what()};
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -291,7 +331,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer(
       "Run 'breakshot simulate --help' for the scenario file and exit status,\n"
-      "'breakshot match --help' and 'breakshot replay --help' for games.\n"
+      "'breakshot match --help' and 'breakshot replay --help' for games,\n"
+      "'breakshot serve --help' for the browser game and lab.\n"
       "The scenario and result file formats are described in docs/scenario.md.");
 
   SimulateOptions opt;
@@ -364,6 +405,23 @@ int main(int argc, char** argv) {
       "     JSON path\n"
       "  1  anything else");
 
+  ServeArgs serve_args;
+  CLI::App* srv = app.add_subcommand(
+      "serve", "Serve the browser game and lab (built by scripts/web.sh) on 127.0.0.1");
+  srv->add_option("--port", serve_args.port, "TCP port (default 8000; 0 picks a free one)")
+      ->type_name("P");
+  srv->add_option("--root", serve_args.root, "Folder of the built page (default: " +
+                                                 serve_args.root + ")")
+      ->type_name("DIR");
+  srv->add_flag("--quiet", serve_args.quiet, "Do not log requests on standard error");
+  srv->footer(
+      "Listens on 127.0.0.1 only and serves nothing outside DIR; the page\n"
+      "loads nothing from elsewhere. Ctrl-C (or SIGTERM) stops it.\n"
+      "\n"
+      "Exit status:\n"
+      "  0  stopped by a signal\n"
+      "  1  the page is not built, the port is in use, or another error");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -376,6 +434,7 @@ int main(int argc, char** argv) {
   try {
     if (match->parsed()) return run_match(match_args);
     if (rep->parsed()) return run_replay(record_file);
+    if (srv->parsed()) return run_serve(serve_args);
     return run_simulate(opt);
   } catch (const Failure& f) {
     std::cerr << "breakshot: " << f.message << '\n';
