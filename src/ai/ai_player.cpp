@@ -55,6 +55,7 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
+#include "breakshot/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
@@ -168,11 +169,12 @@ Shoot make_shoot(double phi, double speed, double b = 0.0) {
   return s;
 }
 
-double aim_deg(Vec2 from, Vec2 to) { return std::atan2(to.y - from.y, to.x - from.x) / kDeg; }
+double aim_deg(Vec2 from, Vec2 to) { return dm::atan2(to.y - from.y, to.x - from.x) / kDeg; }
 
 Vec2 rotate(Vec2 v, double rad) {
-  const double c = std::cos(rad);
-  const double s = std::sin(rad);
+  double s = 0.0;
+  double c = 0.0;
+  dm::sincos(rad, s, c);
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 

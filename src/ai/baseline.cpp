@@ -54,6 +54,7 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
+#include "breakshot/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/pool.hpp"
@@ -75,7 +76,10 @@ constexpr double kSlidingFriction = 0.2;
 constexpr double kRollingFriction = 0.01;
 constexpr double kBallBallRestitution = 0.95;
 
-constexpr double kMaxCut = 80.0 * kDeg;  // thinner cuts are not tried
+// Cosines of the largest cut angles, correctly rounded (literals, so that
+// no maths library is involved).
+constexpr double kMaxCutCos = 0.17364817766693041;  // 80 degrees: thinner cuts are not tried
+constexpr double kCos60 = 0.50000000000000011;      // 60 degrees
 constexpr double kBallMargin = 0.001;    // m beyond 2R between a path and a ball
 constexpr double kWallMargin = 0.001;    // m beyond R between a path and a cushion or jaw
 constexpr double kMinSpeed = 1.5;        // m/s cue speed of pots
@@ -91,13 +95,14 @@ constexpr double kGridStep = 0.05;  // m, the placement grid's spacing
 Vec2 unit(Vec2 v) { return v / norm(v); }
 
 Vec2 rotate(Vec2 v, double angle) {
-  const double c = std::cos(angle);
-  const double s = std::sin(angle);
+  double s = 0.0;
+  double c = 0.0;
+  dm::sincos(angle, s, c);
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 
 /// Signed angle from a to b (radians, counter-clockwise positive).
-double angle_between(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
+double angle_between(Vec2 a, Vec2 b) { return dm::atan2(cross(a, b), dot(a, b)); }
 
 using ai::segments_distance;
 using ai::wall_distance;
@@ -219,7 +224,7 @@ class Planner {
         if (d1 < 1e-9) continue;
         const Vec2 u = (ghost - cue) / d1;
         const double cos_cut = dot(u, n);
-        if (cos_cut < std::cos(kMaxCut)) continue;
+        if (cos_cut < kMaxCutCos) continue;
         if (!ghost_fits(ghost) || !open(cue, ghost, t, true)) continue;
         // Enough speed for the object ball to reach a cushion.
         const double to_rail = distance_to_rail(b, n);
@@ -241,7 +246,7 @@ class Planner {
         // The 8 must not drop on a safety (8-ball: a loss); other balls
         // had better not either (the turn ends anyway).
         if (heads_into_pocket(b, n, to_rail)) score *= t == 8 ? 1e4 : 10.0;
-        out.push_back(Plan{t, -1, std::atan2(u.y, u.x) / kDeg, speed, score});
+        out.push_back(Plan{t, -1, dm::atan2(u.y, u.x) / kDeg, speed, score});
       }
     }
     std::stable_sort(out.begin(), out.end(),
@@ -282,12 +287,12 @@ class Planner {
           const double leg2 = norm(ghost - bounce);
           if (leg2 < 1e-9) continue;
           const double cos_cut = dot((ghost - bounce) / leg2, n);
-          if (cos_cut < std::cos(60.0 * kDeg)) continue;
+          if (cos_cut < kCos60) continue;
           if (!open(cue, bounce, -1, false) || !open(bounce, ghost, t, false)) continue;
           const double length = norm(bounce - cue) + leg2;
           Plan p;
           p.ball = t;
-          p.phi = std::atan2(to.y, to.x) / kDeg;
+          p.phi = dm::atan2(to.y, to.x) / kDeg;
           p.speed = std::clamp(2.0 + 0.8 * length, 2.5, kMaxSpeed);
           p.score = length / cos_cut;
           out.push_back(p);
@@ -420,7 +425,7 @@ class Planner {
       if (d1 < 1e-9) return std::nullopt;
       const Vec2 u = (ghost - cue) / d1;
       const double cos_cut = dot(u, n);
-      if (cos_cut < std::cos(kMaxCut)) return std::nullopt;
+      if (cos_cut < kMaxCutCos) return std::nullopt;
       if (it == 0) {
         // The slowest speed (on the grid) that gets the object ball to
         // the pocket with some pace left.
@@ -450,14 +455,14 @@ class Planner {
     const double d1 = norm(ghost - cue);
     const Vec2 u = (ghost - cue) / d1;
     const double cos_cut = dot(u, n);
-    if (cos_cut < std::cos(kMaxCut)) return std::nullopt;
+    if (cos_cut < kMaxCutCos) return std::nullopt;
     if (!ghost_fits(ghost) || !open(cue, ghost, ball, true)) return std::nullopt;
     if (scratch_risk(ghost, *c)) return std::nullopt;
     const double room = std::max(lg.room, 0.002);
     Plan p;
     p.ball = ball;
     p.pocket = k;
-    p.phi = std::atan2(u.y, u.x) / kDeg;
+    p.phi = dm::atan2(u.y, u.x) / kDeg;
     p.speed = speed;
     p.score = (d1 + 0.05) * (d2 + 0.05) / (cos_cut * room);
     return p;
@@ -620,7 +625,7 @@ class BaselinePlayer final : public Player {
     }
     const Vec2 cue = planner.pos(0);
     const Vec2 to = apex > 0 ? planner.pos(apex) - cue : Vec2{1.0, 0.0};
-    return make_shoot(std::atan2(to.y, to.x) / kDeg, kBreakSpeed);
+    return make_shoot(dm::atan2(to.y, to.x) / kDeg, kBreakSpeed);
   }
 
   /// Where to put the cue ball, or nullopt to play it from where it lies.
@@ -800,7 +805,7 @@ class BaselinePlayer final : public Player {
     } else if (!targets.empty()) {
       // Every way is blocked: straight at the nearest legal ball anyway.
       const Vec2 to = planner.pos(targets.front()) - cue;
-      s = make_shoot(std::atan2(to.y, to.x) / kDeg, 3.0);
+      s = make_shoot(dm::atan2(to.y, to.x) / kDeg, 3.0);
     } else {
       s = make_shoot(0.0, 3.0);
     }

@@ -17,6 +17,8 @@
 #include <cmath>
 #include <thread>
 
+#include "breakshot/detmath.hpp"
+
 namespace breakshot::ai_detail {
 
 namespace {
@@ -128,7 +130,7 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
       const Vec2 mouth = mouth_direction(table, pk.centre, &side);
       const double cos_alpha = -dot(u, mouth);
       if (cos_alpha < (side ? kSideMinCos : kCornerMinCos)) continue;
-      const double tol = side ? kSideTolerance * pk.radius * std::pow(cos_alpha, 1.5)
+      const double tol = side ? kSideTolerance * pk.radius * cos_alpha * std::sqrt(cos_alpha)
                               : kCornerTolerance * pk.radius * cos_alpha;
       const double d2 = std::max(dist - pk.radius, 0.01);
       if (!path_open(state, b, b + u * d2, t, R)) continue;
@@ -141,7 +143,7 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
       if (cos_cut < kMaxCutCos) continue;
       if (!path_open(state, cue, ghost, t, R)) continue;
       const double miss = std::max(e * d1 * d2 / (2.0 * R * cos_cut), 1e-9);
-      double p = std::erf(tol / (std::sqrt(2.0) * miss));
+      double p = dm::erf(tol / (std::sqrt(2.0) * miss));
       p /= 1.0 + kDistancePenalty * (d1 + d2);
       best = std::max(best, p);
     }

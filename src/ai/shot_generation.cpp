@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
+#include "breakshot/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/pool.hpp"
 #include "breakshot/simulation.hpp"
@@ -63,9 +64,13 @@ constexpr double kRollingFriction = 0.01;
 constexpr double kBallBallRestitution = 0.95;
 constexpr double kRailRetention = 0.7;  // speed kept through a cushion, roughly
 
-constexpr double kMaxCut = 80.0 * kDeg;       // thinner direct cuts are hopeless
-constexpr double kMaxBankCut = 70.0 * kDeg;   // banks, kicks and combinations
-constexpr double kMaxComboCut = 60.0 * kDeg;  // each contact of a combination
+// The largest cut angles, as their cosines correctly rounded (literals, so
+// that no maths library is involved): 80 degrees for direct cuts (thinner
+// ones are hopeless), 70 for banks, kicks and combinations, 60 for each
+// contact of a combination.
+constexpr double kMaxCutCos = 0.17364817766693041;
+constexpr double kMaxBankCutCos = 0.34202014332566882;
+constexpr double kMaxComboCutCos = 0.50000000000000011;
 constexpr double kBallMargin = 0.001;         // m beyond 2R between a path and a ball
 constexpr double kWallMargin = 0.001;         // m beyond R between a path and a cushion
 constexpr double kArrival = 0.5;              // m/s the target keeps at the pocket
@@ -80,17 +85,18 @@ constexpr double kSigmaAim = 0.17;
 Vec2 unit(Vec2 v) { return v / norm(v); }
 
 Vec2 rotate(Vec2 v, double angle) {
-  const double c = std::cos(angle);
-  const double s = std::sin(angle);
+  double s = 0.0;
+  double c = 0.0;
+  dm::sincos(angle, s, c);
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 
-double phi_of(Vec2 v) { return std::atan2(v.y, v.x) / kDeg; }
+double phi_of(Vec2 v) { return dm::atan2(v.y, v.x) / kDeg; }
 
 using ai::segments_distance;
 using ai::wall_distance;
 
-double standard_normal_within(double x) { return std::erf(x / std::sqrt(2.0)); }
+double standard_normal_within(double x) { return dm::erf(x / std::sqrt(2.0)); }
 
 /// Where the balls are: the state's, or a layout left by a simulated shot.
 struct Layout {
@@ -393,7 +399,7 @@ class Generator {
     if (d1 < 1e-6 || !fits(ghost)) return std::nullopt;
     const Vec2 u = (ghost - cue) / d1;
     const double cos_cut = dot(u, ap->dir);
-    if (cos_cut < std::cos(kMaxCut)) return std::nullopt;
+    if (cos_cut < kMaxCutCos) return std::nullopt;
     if (!balls_clear(layout_, cue, ghost, t) || !walls_clear(cue, ghost)) return std::nullopt;
     Line l;
     l.kind = ShotKind::direct;
@@ -427,7 +433,7 @@ class Generator {
     if (d1 < 1e-6 || !fits(ghost)) return std::nullopt;
     const Vec2 u = (ghost - cue) / d1;
     const double cos_cut = dot(u, d_first);
-    if (cos_cut < std::cos(kMaxBankCut)) return std::nullopt;
+    if (cos_cut < kMaxBankCutCos) return std::nullopt;
     if (!balls_clear(layout_, cue, ghost, t) || !walls_clear(cue, ghost)) return std::nullopt;
     Line l;
     l.kind = ShotKind::bank;
@@ -462,7 +468,7 @@ class Generator {
     if (leg2 < 1e-6) return std::nullopt;
     const Vec2 u2 = (ghost - *hit) / leg2;
     const double cos_cut = dot(u2, ap->dir);
-    if (cos_cut < std::cos(kMaxBankCut)) return std::nullopt;
+    if (cos_cut < kMaxBankCutCos) return std::nullopt;
     if (!balls_clear(layout_, cue, *hit, -1) || !walls_clear(cue, *hit)) return std::nullopt;
     if (!balls_clear(layout_, *hit, ghost, t) || !walls_clear(*hit, ghost)) return std::nullopt;
     Line l;
@@ -517,7 +523,7 @@ class Generator {
     if (d_f < 1e-6) return std::nullopt;
     const Vec2 uf = (ghost_t - bf) / d_f;
     const double cos_cut2 = dot(uf, ap->dir);
-    if (cos_cut2 < std::cos(kMaxComboCut)) return std::nullopt;
+    if (cos_cut2 < kMaxComboCutCos) return std::nullopt;
     if (!balls_clear(layout_, bf, ghost_t, f, t) || !walls_clear(bf, ghost_t)) return std::nullopt;
     const Vec2 ghost_f = bf - uf * (2.0 * R_);
     if (!fits(ghost_f)) return std::nullopt;
@@ -526,7 +532,7 @@ class Generator {
     if (d1 < 1e-6) return std::nullopt;
     const Vec2 u = (ghost_f - cue) / d1;
     const double cos_cut1 = dot(u, uf);
-    if (cos_cut1 < std::cos(kMaxComboCut)) return std::nullopt;
+    if (cos_cut1 < kMaxComboCutCos) return std::nullopt;
     if (!balls_clear(layout_, cue, ghost_f, f) || !walls_clear(cue, ghost_f)) return std::nullopt;
     Line l;
     l.kind = ShotKind::combination;
@@ -843,7 +849,7 @@ class Generator {
         const double d1 = norm(ghost - cue);
         if (d1 < 1e-6) continue;
         const double cos_cut = dot((ghost - cue) / d1, ap->dir);
-        if (cos_cut < std::cos(kMaxCut)) continue;
+        if (cos_cut < kMaxCutCos) continue;
         if (!balls_clear(lay, cue, ghost, t)) continue;
         best = std::max(best, prior_from(ap->room, slope_estimate(d1, ap->length, cos_cut)));
       }
@@ -883,7 +889,7 @@ class Generator {
         const double d1 = norm(ghost - cue);
         if (d1 < 1e-9 || !fits(ghost)) continue;
         const Vec2 u = (ghost - cue) / d1;
-        if (dot(u, n) < std::cos(kMaxCut)) continue;
+        if (dot(u, n) < kMaxCutCos) continue;
         if (!balls_clear(layout_, cue, ghost, t) || !walls_clear(cue, ghost)) continue;
         any_open = true;
         for (double speed : {1.2, 2.2, 3.4}) {

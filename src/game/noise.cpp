@@ -10,10 +10,11 @@
 // engines' seeding are implementation-defined) or from the maths library
 // (std::log is not required to be correctly rounded, and libraries differ
 // in the last bit). Draws come from SplitMix64; Gaussians from Marsaglia's
-// polar method, which needs only a square root (exact in IEEE arithmetic)
-// and a logarithm, computed below from +, -, *, / alone. With contraction
-// off (-ffp-contract=off, CMakeLists.txt) every step is one IEEE operation
-// and the result is the same bit for bit everywhere.
+// polar method, which needs only a square root (correctly rounded in IEEE
+// arithmetic) and a logarithm, dm::log (breakshot/detmath.hpp, built from
+// +, -, *, / alone). With contraction off (-ffp-contract=off,
+// CMakeLists.txt) every step is one IEEE operation and the result is the
+// same bit for bit everywhere.
 //
 // The five parameters always take the first five of the deviates of a
 // seed, in the order phi, theta, speed, a, b, whatever the sigmas: turning
@@ -30,6 +31,8 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+
+#include "breakshot/detmath.hpp"
 
 namespace breakshot {
 
@@ -133,29 +136,6 @@ class SplitMix64 {
   std::uint64_t state_;
 };
 
-/// Natural logarithm of x in (0, 1], to about an ulp, from arithmetic only
-/// (see the top of the file). x = m 2^e with m in [sqrt(1/2), sqrt(2)),
-/// then log m = 2 atanh(s), s = (m - 1) / (m + 1), |s| < 0.172, whose odd
-/// series has converged below 1e-17 relative after the s^25 term.
-double portable_log(double x) {
-  int e = 0;
-  double m = std::frexp(x, &e);  // x = m 2^e, m in [0.5, 1): exact
-  if (m < 0.70710678118654752) {
-    m *= 2.0;  // exact
-    --e;
-  }
-  const double s = (m - 1.0) / (m + 1.0);
-  const double s2 = s * s;
-  double sum = 0.0;
-  for (int k = 25; k >= 3; k -= 2) sum = (sum + 1.0 / k) * s2;
-  const double log_m = 2.0 * s + 2.0 * s * sum;
-  // ln 2 split into a part with few bits (exact times e) and the rest.
-  constexpr double kLn2Hi = 6.93147180369123816490e-01;
-  constexpr double kLn2Lo = 1.90821492927058770002e-10;
-  const double de = static_cast<double>(e);
-  return de * kLn2Hi + (log_m + de * kLn2Lo);
-}
-
 /// Independent standard normal deviates, two per accepted pair
 /// (Marsaglia and Bray 1964, the polar method).
 class Gaussian {
@@ -171,7 +151,7 @@ class Gaussian {
       const double v = rng_.symmetric();
       const double s = u * u + v * v;
       if (s >= 1.0 || s == 0.0) continue;
-      const double f = std::sqrt(-2.0 * portable_log(s) / s);
+      const double f = std::sqrt(-2.0 * dm::log(s) / s);
       spare_ = v * f;
       has_spare_ = true;
       return u * f;

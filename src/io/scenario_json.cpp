@@ -1086,7 +1086,7 @@ bool ScenarioReader::check_pool_run_ends(const std::string& how, const Scenario&
     const bool struck = s.cue && static_cast<std::size_t>(s.cue->ball) == i;
     // A bound on the speed of the ball and of its contact point with the
     // cloth; a struck ball leaves at less than twice the cue's speed.
-    double speed = norm(b.velocity) + r * std::hypot(b.spin.x, b.spin.y);
+    double speed = norm(b.velocity) + r * norm(Vec2{b.spin.x, b.spin.y});
     if (struck) speed = std::max(speed, 2.0 * s.cue->strike.speed);
     double spin_z = std::fabs(b.spin.z);
     const bool english = struck && s.cue->strike.a != 0.0;

@@ -81,6 +81,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "breakshot/detmath.hpp"
 #include "breakshot/pool.hpp"
 
 namespace breakshot {
@@ -101,7 +102,7 @@ constexpr Vec2 flat(Vec3 a) { return {a.x, a.y}; }
 
 double BallFriction::operator()(double slip) const {
   // Clamped at zero: a negative coefficient would feed energy in.
-  return std::max(0.0, a + b * std::exp(-c * std::abs(slip)));
+  return std::max(0.0, a + b * dm::exp(-c * std::abs(slip)));
 }
 
 BallImpact ball_ball_impact(Vec2 p1, Vec2 v1, Vec3 w1, double m1, double r1, Vec2 p2, Vec2 v2,

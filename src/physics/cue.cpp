@@ -75,6 +75,8 @@
 
 #include <cmath>
 
+#include "breakshot/detmath.hpp"
+
 namespace breakshot {
 
 namespace {
@@ -101,7 +103,7 @@ bool valid(const CueStrike& cue, double ball_mass, double ball_radius, const Cue
 double squirt_angle(double a, double ball_mass, double end_mass) {
   if (end_mass <= 0.0 || a == 0.0) return 0.0;
   const double q = 1.0 - a * a;
-  return std::atan2(2.5 * a * std::sqrt(q), 1.0 + ball_mass / end_mass + 2.5 * q);
+  return dm::atan2(2.5 * a * std::sqrt(q), 1.0 + ball_mass / end_mass + 2.5 * q);
 }
 
 }  // namespace
@@ -127,8 +129,9 @@ StrikeResult strike(const CueStrike& cue, double ball_mass, double ball_radius,
       (1.0 + e) * cue.speed / (1.0 + ball_mass / params.mass + 2.5 * offset2);
 
   const double theta = cue.theta * kDegree;
-  const double ct = std::cos(theta);
-  const double st = std::sin(theta);
+  double st = 0.0;
+  double ct = 0.0;
+  dm::sincos(theta, st, ct);
 
   // Spin in the shot frame (f, l, z).
   const double k = 2.5 * along / ball_radius;
@@ -137,14 +140,17 @@ StrikeResult strike(const CueStrike& cue, double ball_mass, double ball_radius,
   const double w_z = k * a * ct;
 
   const double phi = cue.phi * kDegree;
-  const Vec2 f{std::cos(phi), std::sin(phi)};
+  Vec2 f;
+  dm::sincos(phi, f.y, f.x);
   const Vec2 l = perp(f);
   const Vec2 w_xy = w_f * f + w_l * l;
   out.spin = Vec3{w_xy.x, w_xy.y, w_z};
 
   const double alpha = squirt_angle(a, ball_mass, params.end_mass);
   const double dir = phi + alpha;
-  out.velocity = Vec2{std::cos(dir), std::sin(dir)} * (along * ct);
+  Vec2 heading;
+  dm::sincos(dir, heading.y, heading.x);
+  out.velocity = heading * (along * ct);
   out.squirt = alpha / kDegree;
   // Overflow with absurd magnitudes (a speed near DBL_MAX, a radius near
   // zero) would give inf or NaN: such a stroke is outside the model too.

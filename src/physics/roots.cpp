@@ -47,6 +47,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "breakshot/detmath.hpp"
+
 namespace breakshot {
 namespace {
 
@@ -993,7 +995,7 @@ double root_bound(const double* p, int n) {
     // |c_{n-k} / c_n|^(1/k), with the powers taken apart so that the
     // ratio cannot overflow.
     const double q = std::fabs(p[n - k]) * (k == n ? 0.5 : 1.0);
-    r = std::max(r, k == 1 ? q / lead : std::pow(q, 1.0 / k) / std::pow(lead, 1.0 / k));
+    r = std::max(r, k == 1 ? q / lead : dm::pow(q, 1.0 / k) / dm::pow(lead, 1.0 / k));
   }
   r *= 2.0 * (1.0 + 0x1p-20);
   return std::isfinite(r) ? r : std::numeric_limits<double>::max();
