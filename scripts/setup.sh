@@ -10,10 +10,14 @@ set -euo pipefail
 # Required: the toolchain, the test and benchmark frameworks, and the two
 # libraries the engine and its command use. libclang-rt-14-dev carries
 # libFuzzer and clang's sanitizer runtimes (scripts/test.sh fuzzes).
+# emscripten builds the browser version (scripts/web.sh); chromium and a
+# font are what its browser tests drive (web/tests/browser.mjs, with
+# playwright-core from npm, which never downloads a browser).
 required=(
   build-essential cmake ninja-build g++ clang libclang-rt-14-dev
   libgtest-dev googletest libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
+  emscripten chromium fonts-dejavu-core curl
 )
 # Optional: rsvg-convert, to turn the SVG plots into PNG previews.
 optional=(librsvg2-bin)

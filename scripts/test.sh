@@ -5,6 +5,9 @@
 #   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
 #   (c) install the release build and build and run the example consumer
 #       against it (find_package(breakshot)); run scripts/run.sh
+#   (e) the browser version: native and wasm give the same replies byte
+#       for byte (web/tests/identity.mjs), and playwright-core drives
+#       Chromium through the served page (web/tests/browser.mjs)
 #   (d) the libFuzzer targets, built with clang: seed corpus replays (tests),
 #       then fuzzing scenarios for BREAKSHOT_FUZZ_SECONDS (default 60)
 #       seconds, seeded with fuzz/corpus and examples/lab, and game records
@@ -79,6 +82,21 @@ run_ctest() {
   failed=$((failed + nfail))
 }
 
+# Runs a node test script that ends with "N passed, M failed" and adds its
+# counts to the totals.
+run_node_tests() {
+  local name=$1 log=$logs/node-$1.log line
+  shift
+  "$@" 2>&1 | tee "$log"
+  line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
+  if [ -z "$line" ]; then
+    echo "test.sh: no summary line from the $name tests" >&2
+    return 1
+  fi
+  passed=$((passed + $(cut -d' ' -f1 <<<"$line")))
+  failed=$((failed + $(cut -d' ' -f3 <<<"$line")))
+}
+
 t_start=$SECONDS
 
 stage "setup (scripts/setup.sh)"
@@ -111,9 +129,18 @@ if [ "$quick" -eq 0 ]; then
   cmake --build build/consumer -j 2
   build/consumer/consumer
 
-  stage "(c) scripts/run.sh (the README's main job)"
-  scripts/run.sh >"$logs/run.log" 2>&1 || { cat "$logs/run.log"; false; }
+  stage "(c) scripts/run.sh --check (the README's main job)"
+  scripts/run.sh --check >"$logs/run.log" 2>&1 || { cat "$logs/run.log"; false; }
   tail -n 6 "$logs/run.log"
+
+  # scripts/run.sh built the wasm engine and the page (scripts/web.sh).
+  stage "(e) web: native and wasm replies, byte for byte"
+  run_node_tests identity node web/tests/identity.mjs --probe build/release/web_api_probe \
+    --engine build/web/dist/breakshot.js
+  stage "(e) web: browser tests (playwright-core + /usr/bin/chromium)"
+  (cd web/tests && npm ci --no-audit --no-fund --loglevel=error)
+  run_node_tests browser node web/tests/browser.mjs --cli build/release/breakshot \
+    --root build/web/dist --shots build/web/screenshots
 
   stage "(d) fuzz: configure + build (clang)"
   cmake --preset fuzz

@@ -53,7 +53,7 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
   counter_.assign(n, 0);
   // Room for the events of a typical shot, so that simulating one
   // allocates nothing after set-up (a break has about 100 events).
-  events_.reserve(std::min<std::uint64_t>(scenario_.max_events, 64 + 16 * n));
+  events_.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(scenario_.max_events, 64 + 16 * n)));
   next_.resize(n);
   event_.resize(n);
   heap_.resize(n);

@@ -1,0 +1,572 @@
+// The facade of the browser version (web/api/web_api.hpp, docs/web.md),
+// natively: every bad input answered with an error naming its field,
+// playback frames that are the simulation's states, games whose records
+// replay identical and whose links reproduce them bit for bit, AI games
+// that are the games play_game plays with the same seeds, and the
+// floating-point <charconv> stand-in of the wasm build
+// (web/compat/portable_charconv.hpp) giving libstdc++'s bytes.
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "../web/compat/portable_charconv.hpp"
+#include "breakshot/ai.hpp"
+#include "breakshot/game.hpp"
+#include "breakshot/lab.hpp"
+#include "breakshot/match.hpp"
+#include "breakshot/record.hpp"
+#include "breakshot/scenario_io.hpp"
+#include "breakshot/simulation.hpp"
+#include "web_api.hpp"
+
+namespace {
+
+using nlohmann::json;
+namespace bs = breakshot;
+
+std::string read_example(const std::string& rel) {
+  std::ifstream in(std::string(BREAKSHOT_SOURCE_DIR) + "/" + rel, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+json J(const char* text) { return json::parse(text); }
+
+/// The "error" text of a reply ("" if it is not an error).
+std::string error_of(const char* text) {
+  const json j = J(text);
+  return j.is_object() && j.contains("error") ? j["error"].get<std::string>() : std::string();
+}
+
+bool starts_with(const std::string& s, const std::string& prefix) {
+  return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+struct GameDeleter {
+  void operator()(BsGame* g) const { bs_game_free(g); }
+};
+struct PlaybackDeleter {
+  void operator()(BsPlayback* p) const { bs_playback_free(p); }
+};
+using GamePtr = std::unique_ptr<BsGame, GameDeleter>;
+using PlaybackPtr = std::unique_ptr<BsPlayback, PlaybackDeleter>;
+
+GamePtr new_game(const std::string& config) {
+  GamePtr g(bs_game_new(config.c_str()));
+  EXPECT_NE(g, nullptr) << bs_last_error();
+  return g;
+}
+
+std::string state_of(BsGame* g) { return bs_game_state(g); }
+std::string link_of(BsGame* g) { return J(bs_game_link(g))["link"].get<std::string>(); }
+std::string record_of(BsGame* g) { return bs_game_record(g); }
+
+/// Acts; fails the test on an error reply.
+json act(BsGame* g, const std::string& action) {
+  const std::string reply = bs_game_act(g, action.c_str());
+  EXPECT_EQ(error_of(reply.c_str()), "") << action;
+  return json::parse(reply);
+}
+
+/// The AI's decision (for a human seat, the hint of `level`), played as
+/// the reply gives it: its exact text, so nothing is re-encoded.
+json ai_act(BsGame* g, const char* level = nullptr) {
+  const std::string reply = bs_game_ai_action(g, level);
+  const std::string head = "{\"action\":";
+  EXPECT_TRUE(starts_with(reply, head)) << reply;
+  if (!starts_with(reply, head)) return json();
+  return act(g, reply.substr(head.size(), reply.size() - head.size() - 1));
+}
+
+/// For a seat that may be human: its own AI, or the hint of `level`.
+json step_ai(BsGame* g, const char* level_for_humans) {
+  const json s = json::parse(state_of(g));
+  const bool human = s["players"][s["player"].get<std::size_t>()] == "human";
+  return ai_act(g, human ? level_for_humans : nullptr);
+}
+
+/// A short game with human shots and AI actions at two levels:
+/// human (seat 0) against club (seat 1) with a small budget.
+GamePtr short_game(int ai_actions) {
+  GamePtr g = new_game(
+      R"({"game": "eight_ball", "table": "8ft", "seed": "2026", "breaker": 0,
+          "players": ["human", "club"], "ai_budget": 40})");
+  act(g.get(), R"({"place": [0.5, 0.6]})");
+  act(g.get(), R"({"shoot": {"speed": 9.0, "phi": -1.5, "theta": 0, "a": 0, "b": -0.2}})");
+  for (int k = 0; k < ai_actions; ++k) {
+    if (json::parse(state_of(g.get()))["phase"] == "game_over") break;
+    step_ai(g.get(), "beginner");
+  }
+  return g;
+}
+
+// ---------------------------------------------------------------------------
+
+TEST(WebApi, VersionListsTheLevelsAndTheirBudgets) {
+  const json v = J(bs_version());
+  EXPECT_FALSE(v["version"].get<std::string>().empty());
+  EXPECT_EQ(v["levels"].size(), bs::ai_level_names().size());
+  for (const std::string& l : bs::ai_level_names()) EXPECT_GE(v["ai_budgets"][l].get<int>(), 1) << l;
+}
+
+TEST(WebApi, SimulateIsTheResultFile) {
+  for (const char* f : {"examples/pool/break_9ball.json", "examples/lab/two_balls.json"}) {
+    const std::string text = read_example(f);
+    const auto parsed = bs::read_scenario(text);
+    ASSERT_TRUE(std::holds_alternative<bs::Scenario>(parsed)) << f;
+    const bs::Scenario& s = std::get<bs::Scenario>(parsed);
+    char* reply = bs_simulate(text.c_str());
+    EXPECT_EQ(std::string(reply), bs::write_result(s, bs::simulate(s))) << f;
+    bs_free(reply);
+  }
+}
+
+TEST(WebApi, ErrorsNameTheField) {
+  // simulate: the scenario reader's path, or the document.
+  char* r = bs_simulate("{\"physics\": {\"model\": \"pool\"}, \"table\": 7}");
+  EXPECT_TRUE(starts_with(error_of(r), "table")) << r;
+  bs_free(r);
+  r = bs_simulate(nullptr);
+  EXPECT_TRUE(starts_with(error_of(r), "scenario:")) << r;
+  bs_free(r);
+
+  // Game configs.
+  const std::pair<const char*, const char*> configs[] = {
+      {R"({"players": ["human", "human"]})", "game: missing"},
+      {R"({"game": "snooker", "players": ["human", "human"]})", "game:"},
+      {R"({"game": "eight_ball"})", "players: missing"},
+      {R"({"game": "eight_ball", "players": ["human"]})", "players:"},
+      {R"({"game": "eight_ball", "players": ["human", "wizard"]})", "players[1]:"},
+      {R"({"game": "eight_ball", "players": ["human", 3]})", "players[1]:"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "seed": "12x"})", "seed:"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "seed": "18446744073709551616"})", "seed:"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "breaker": 2})", "breaker:"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "table": "6ft"})", "table:"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "ai_budget": 0})", "ai_budget:"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "colour": "red"})", "colour: unknown key"},
+      {R"([1, 2])", "(document):"},
+      {R"({"game": )", "config: not valid JSON"},
+  };
+  for (const auto& [config, prefix] : configs) {
+    EXPECT_EQ(bs_game_new(config), nullptr) << config;
+    EXPECT_TRUE(starts_with(error_of(bs_last_error()), prefix)) << config << " -> " << bs_last_error();
+  }
+  EXPECT_EQ(bs_game_new(nullptr), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "config:"));
+
+  // Actions: the field, or the rules' reason; the game is unchanged.
+  GamePtr g = new_game(R"({"game": "eight_ball", "seed": "1", "players": ["human", "beginner"]})");
+  const std::string before = state_of(g.get());
+  const std::pair<const char*, const char*> actions[] = {
+      {R"({"shoot": {"speed": "fast", "phi": 0}})", "shoot.speed:"},
+      {R"({"shoot": {"phi": 0}})", "shoot.speed: missing"},
+      {R"({"shoot": {"speed": 1, "phi": 0, "spin": 2}})", "shoot.spin: unknown key"},
+      {R"({"shoot": {"speed": 1, "phi": 0}, "call": {"ball": "x", "pocket": 1}})", "call.ball:"},
+      {R"({"shoot": {"speed": 1, "phi": 0}, "safety": 1})", "safety:"},
+      {R"({"place": [1]})", "place:"},
+      {R"({"place": [0.5, "y"]})", "place[1]:"},
+      {R"({"decide": "maybe"})", "decide:"},
+      {R"({"jump": true})", "(action):"},
+      {R"({"place": [0.5, 0.6], "extra": 1})", "extra: unknown key"},
+      {R"(not json)", "action: not valid JSON"},
+  };
+  for (const auto& [action, prefix] : actions) {
+    const char* reply = bs_game_act(g.get(), action);
+    EXPECT_TRUE(starts_with(error_of(reply), prefix)) << action << " -> " << reply;
+  }
+  // The rules' reasons (check()).
+  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"decide": "shoot"})")), "");
+  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"shoot": {"speed": 25, "phi": 0}})")), "");
+  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"place": [2.0, 0.6]})")), "");
+  EXPECT_EQ(state_of(g.get()), before);
+
+  // AI: a human seat needs a level for a hint; unknown levels are named.
+  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), nullptr)), "level:"));
+  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "grandmaster")), "level:"));
+  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "human")), "level:"));
+
+  // Undo, shot playback, null handles.
+  EXPECT_TRUE(starts_with(error_of(bs_game_undo_to(g.get(), 1)), "n:"));
+  EXPECT_TRUE(starts_with(error_of(bs_game_undo_to(g.get(), -1)), "n:"));
+  EXPECT_EQ(bs_game_shot_playback(g.get(), 0), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "index:"));
+  EXPECT_TRUE(starts_with(error_of(bs_game_state(nullptr)), "handle:"));
+  EXPECT_TRUE(starts_with(error_of(bs_playback_frame(nullptr, 0.0)), "handle:"));
+  EXPECT_EQ(bs_game_shot_playback(nullptr, 0), nullptr);
+
+  // Links.
+  for (const char* link : {"", "v2.e30", "v1.!!!", "v1.e30", "v1.W10"}) {
+    EXPECT_EQ(bs_game_from_link(link), nullptr) << link;
+    EXPECT_TRUE(starts_with(error_of(bs_last_error()), "link")) << link << " -> " << bs_last_error();
+  }
+  EXPECT_EQ(bs_game_from_link(nullptr), nullptr);
+
+  // Playbacks.
+  EXPECT_EQ(bs_playback_new("{\"physics\": 1}"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "physics")) << bs_last_error();
+  const std::string scenario = read_example("examples/pool/stop_shot.json");
+  PlaybackPtr pb(bs_playback_new(scenario.c_str()));
+  ASSERT_NE(pb, nullptr) << bs_last_error();
+  EXPECT_EQ(error_of(bs_playback_frame(pb.get(), 0.5)), "");
+  EXPECT_TRUE(starts_with(error_of(bs_playback_frame(pb.get(), 0.25)), "t:"));
+  EXPECT_TRUE(starts_with(error_of(bs_playback_frame(pb.get(), std::nan(""))), "t:"));
+  EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), -1)), "from:"));
+  EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), 100000)), "from:"));
+}
+
+TEST(WebApi, LinkErrorsNameTheActionRefused) {
+  // {"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","shoot"]]}
+  const std::string body =
+      R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","shoot"]]})";
+  static constexpr char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+  std::string enc;
+  std::uint32_t acc = 0;
+  int bits = 0;
+  for (const char c : body) {
+    acc = (acc << 8) | static_cast<unsigned char>(c);
+    bits += 8;
+    while (bits >= 6) {
+      bits -= 6;
+      enc.push_back(kB64[(acc >> bits) & 63]);
+    }
+  }
+  if (bits > 0) enc.push_back(kB64[(acc << (6 - bits)) & 63]);
+  EXPECT_EQ(bs_game_from_link(("v1." + enc).c_str()), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "link.a[0]: refused:")) << bs_last_error();
+}
+
+TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
+  for (const char* file : {"examples/pool/break_8ball.json", "examples/lab/newtons_cradle.json",
+                           "examples/lab/l_shaped_friction.json"}) {
+    const std::string text = read_example(file);
+    const auto parsed = bs::read_scenario(text);
+    ASSERT_TRUE(std::holds_alternative<bs::Scenario>(parsed)) << file;
+    const bs::Scenario& s = std::get<bs::Scenario>(parsed);
+    const bs::RunResult result = bs::simulate(s);
+
+    PlaybackPtr pb(bs_playback_new(text.c_str()));
+    ASSERT_NE(pb, nullptr) << bs_last_error();
+    bs::Simulation sim(s);
+    double end = result.final_time;
+    for (int k = 0; k < 30; ++k) {
+      const double t = std::fmin(static_cast<double>(k) * 0.2, end);
+      sim.advance_to(t);
+      const json f = J(bs_playback_frame(pb.get(), t));
+      ASSERT_EQ(f["balls"].size(), s.balls.size()) << file;
+      EXPECT_EQ(f["t"].get<double>(), sim.time());
+      EXPECT_EQ(f["events"].get<std::size_t>(), sim.events().size());
+      EXPECT_EQ(f["at_rest"].get<bool>(), sim.at_rest());
+      double energy = 0.0;
+      for (std::size_t i = 0; i < s.balls.size(); ++i) {
+        const bs::BallState b = sim.ball(i);
+        const json& fb = f["balls"][i];
+        EXPECT_EQ(fb[0].get<double>(), b.position.x) << file << " t=" << t << " ball " << i;
+        EXPECT_EQ(fb[1].get<double>(), b.position.y);
+        EXPECT_EQ(fb[2].get<int>(), b.state == bs::MotionState::pocketed ? 0 : 1);
+        EXPECT_EQ(fb[3].get<double>(), b.velocity.x);
+        EXPECT_EQ(fb[4].get<double>(), b.velocity.y);
+        EXPECT_EQ(fb[5].get<double>(), bs::kinetic_energy(s.balls[i], b));
+        EXPECT_EQ(fb[6].get<double>(), bs::momentum(s.balls[i], b).x);
+        EXPECT_EQ(fb[7].get<double>(), bs::momentum(s.balls[i], b).y);
+        energy += bs::kinetic_energy(s.balls[i], b);
+      }
+      EXPECT_EQ(f["energy"].get<double>(), energy);
+    }
+    // The last frame: simulate()'s final state and events.
+    const json last = J(bs_playback_frame(pb.get(), end));
+    EXPECT_EQ(last["t"].get<double>(), result.final_time) << file;
+    EXPECT_EQ(last["events"].get<std::size_t>(), result.events.size());
+    for (std::size_t i = 0; i < s.balls.size(); ++i) {
+      EXPECT_EQ(last["balls"][i][0].get<double>(), result.final_balls[i].position.x) << file << " ball " << i;
+      EXPECT_EQ(last["balls"][i][1].get<double>(), result.final_balls[i].position.y);
+      EXPECT_EQ(last["balls"][i][3].get<double>(), result.final_balls[i].velocity.x);
+    }
+    const json ev = J(bs_playback_events(pb.get(), 0));
+    ASSERT_EQ(ev["events"].size(), result.events.size());
+    for (std::size_t k = 0; k < result.events.size(); ++k) {
+      EXPECT_EQ(ev["events"][k]["time"].get<double>(), result.events[k].time);
+      EXPECT_EQ(ev["events"][k]["type"].get<std::string>(), bs::to_string(result.events[k].type));
+    }
+    // A run that ends at a time (the lab) stops there, as simulate() does.
+    if (!s.until.rest) {
+      const json after = J(bs_playback_frame(pb.get(), end + 100.0));
+      EXPECT_EQ(after["t"].get<double>(), result.final_time);
+    }
+  }
+}
+
+TEST(WebApi, ShotPlaybackIsTheShotAsTheRulesPlayedIt) {
+  GamePtr g = short_game(6);
+  const bs::GameRecord rec = std::get<bs::GameRecord>(bs::read_record(record_of(g.get())));
+  int shots = 0;
+  for (std::size_t i = 0; i < rec.actions.size(); ++i) {
+    const bs::RecordedAction& ra = rec.actions[i];
+    PlaybackPtr pb(bs_game_shot_playback(g.get(), static_cast<int>(i)));
+    if (!std::holds_alternative<bs::Shoot>(ra.action)) {
+      EXPECT_EQ(pb, nullptr);
+      continue;
+    }
+    ++shots;
+    ASSERT_NE(pb, nullptr) << bs_last_error();
+    const bs::GameState& before = i == 0 ? rec.start : rec.actions[i - 1].after;
+    std::vector<int> numbers;
+    for (std::size_t b = 0; b < before.on_table.size(); ++b) {
+      if (before.on_table[b]) numbers.push_back(static_cast<int>(b));
+    }
+    const json f = J(bs_playback_frame(pb.get(), 1000.0));
+    ASSERT_TRUE(f["at_rest"].get<bool>());
+    ASSERT_EQ(f["balls"].size(), numbers.size());
+    for (std::size_t k = 0; k < numbers.size(); ++k) {
+      const auto b = static_cast<std::size_t>(numbers[k]);
+      const bool spotted = std::count(ra.ruling.spotted.begin(), ra.ruling.spotted.end(), numbers[k]) > 0;
+      if (spotted) continue;
+      const bool on = f["balls"][k][2].get<int>() == 1;
+      EXPECT_EQ(ra.after.on_table[b] != 0, on) << "action " << i << " ball " << b;
+      if (on && ra.after.racks == before.racks) {
+        EXPECT_EQ(f["balls"][k][0].get<double>(), ra.after.position[b].x) << "action " << i << " ball " << b;
+        EXPECT_EQ(f["balls"][k][1].get<double>(), ra.after.position[b].y);
+      }
+    }
+  }
+  EXPECT_GE(shots, 3);
+}
+
+TEST(WebApi, RecordReplaysIdentical) {
+  GamePtr g = short_game(8);
+  const std::string text = record_of(g.get());
+  const auto parsed = bs::read_record(text);
+  ASSERT_TRUE(std::holds_alternative<bs::GameRecord>(parsed))
+      << std::get<bs::RecordError>(parsed).path << ": " << std::get<bs::RecordError>(parsed).reason;
+  const bs::GameRecord& rec = std::get<bs::GameRecord>(parsed);
+  EXPECT_EQ(rec.actions.size(), json::parse(state_of(g.get()))["actions"].get<std::size_t>());
+  EXPECT_GE(rec.actions.size(), 8u);
+  EXPECT_EQ(rec.players[0], "human");
+  EXPECT_EQ(rec.players[1], "club");
+  EXPECT_EQ(rec.noise[1], bs::ai_level("club").noise);
+  const bs::ReplayReport report = bs::replay(rec);
+  EXPECT_TRUE(report.identical) << report.message;
+  EXPECT_EQ(report.actions_identical, rec.actions.size());
+  EXPECT_EQ(bs::write_record(rec), text);
+
+#ifdef BREAKSHOT_CLI
+  // And `breakshot replay` says so (exit status 0).
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "breakshot-web-api-record.json";
+  std::ofstream(file, std::ios::binary) << text;
+  const std::string cmd = std::string(BREAKSHOT_CLI) + " replay '" + file.string() + "' > /dev/null";
+  EXPECT_EQ(std::system(cmd.c_str()), 0);
+  std::filesystem::remove(file);
+#endif
+}
+
+TEST(WebApi, LinkRoundTripReproducesTheGameExactly) {
+  GamePtr g = short_game(6);
+  // A human shot whose numbers only survive as bits: -0, a subnormal,
+  // and digits beyond what a decimal would keep.
+  const json s = json::parse(state_of(g.get()));
+  if (s["phase"] != "game_over" && s["legal"]["must_place"] == false && s["legal"]["choices"].empty()) {
+    act(g.get(), R"({"shoot": {"speed": 2.0000000000000004, "phi": -0.0, "theta": 4.9e-324,
+                     "a": 0.1, "b": -1e-310}, "safety": true})");
+  }
+  const std::string link = link_of(g.get());
+  ASSERT_TRUE(starts_with(link, "v1."));
+  GamePtr h(bs_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_last_error();
+  EXPECT_EQ(record_of(h.get()), record_of(g.get()));
+  EXPECT_EQ(state_of(h.get()), state_of(g.get()));
+  EXPECT_EQ(link_of(h.get()), link);
+  // The same game goes on the same way.
+  for (int k = 0; k < 2; ++k) {
+    if (json::parse(state_of(g.get()))["phase"] == "game_over") break;
+    EXPECT_EQ(step_ai(g.get(), "beginner").dump(), step_ai(h.get(), "beginner").dump());
+  }
+  EXPECT_EQ(record_of(h.get()), record_of(g.get()));
+  // A link inside a page address works too.
+  GamePtr u(bs_game_from_link(("http://127.0.0.1:8000/#game=" + link + "&shot=2").c_str()));
+  ASSERT_NE(u, nullptr) << bs_last_error();
+}
+
+TEST(WebApi, UndoKeepsTheFirstActions) {
+  GamePtr g = short_game(0);
+  const std::string link2 = link_of(g.get());
+  const std::string state2 = state_of(g.get());
+  for (int k = 0; k < 3; ++k) step_ai(g.get(), "beginner");
+  const json st = J(bs_game_undo_to(g.get(), 2));
+  EXPECT_EQ(st.dump(), json::parse(state2).dump());
+  EXPECT_EQ(link_of(g.get()), link2);
+  EXPECT_EQ(state_of(g.get()), state2);
+}
+
+TEST(WebApi, AiGameIsTheGamePlayGamePlays) {
+  // Both seats AI: the facade's game is play_game's, action for action,
+  // because the seeds are derived the same way.
+  const std::uint64_t seed = 4242;
+  for (const auto& game : {std::string("nine_ball"), std::string("eight_ball")}) {
+    GamePtr g = new_game(R"({"game": ")" + game + R"(", "table": "7ft", "seed": ")" +
+                         std::to_string(seed) +
+                         R"(", "breaker": 1, "players": ["amateur", "beginner"], "ai_budget": 30})");
+    for (int k = 0; k < 800 && json::parse(state_of(g.get()))["phase"] != "game_over"; ++k) ai_act(g.get());
+    ASSERT_EQ(json::parse(state_of(g.get()))["phase"], "game_over") << game;
+
+    bs::GameConfig config;
+    config.game = *bs::parse_game_type(game);
+    config.table_size = "7ft";
+    const bs::Rules rules(config);
+    std::vector<std::unique_ptr<bs::Player>> players;
+    for (const char* name : {"amateur", "beginner"}) {
+      bs::AiLevel l = bs::ai_level(name);
+      l.threads = 1;
+      l.time_budget = 0.0;
+      l.simulation_budget = 30;
+      players.push_back(bs::make_ai_player(l));
+    }
+    const bs::GameRecord expected = bs::play_game(rules, *players[0], *players[1], 1, seed, bs::NoiseModel{});
+    const bs::GameRecord got = std::get<bs::GameRecord>(bs::read_record(record_of(g.get())));
+    EXPECT_EQ(got.actions.size(), expected.actions.size()) << game;
+    EXPECT_TRUE(got == expected) << game;
+  }
+}
+
+TEST(WebApi, CheckPlacementRefusals) {
+  GamePtr g = new_game(R"({"game": "nine_ball", "table": "9ft", "seed": "5", "players": ["human", "human"]})");
+  const json table = J(bs_game_table(g.get()));
+  const double head = table["head_string"].get<double>();
+  const double width = table["width"].get<double>();
+  EXPECT_TRUE(J(bs_game_check_placement(g.get(), head - 0.1, width / 2))["ok"].get<bool>());
+  // The break: behind the head string, on the cloth.
+  json r = J(bs_game_check_placement(g.get(), head + 0.1, width / 2));
+  EXPECT_FALSE(r["ok"].get<bool>());
+  EXPECT_NE(r["reason"].get<std::string>().find("head string"), std::string::npos) << r;
+  r = J(bs_game_check_placement(g.get(), -0.5, width / 2));
+  EXPECT_FALSE(r["ok"].get<bool>());
+  r = J(bs_game_check_placement(g.get(), 0.01, width / 2));  // into the cushion
+  EXPECT_FALSE(r["ok"].get<bool>());
+  r = J(bs_game_check_placement(g.get(), std::nan(""), 0.5));
+  EXPECT_FALSE(r["ok"].get<bool>());
+
+  // A feeble break that reaches nothing: a foul, the cue ball in hand
+  // anywhere for the other player; not on a ball.
+  act(g.get(), R"({"shoot": {"speed": 0.2, "phi": 0}})");
+  const json s = json::parse(state_of(g.get()));
+  ASSERT_EQ(s["ball_in_hand"], "anywhere") << s;
+  const json& one = s["balls"][1];
+  r = J(bs_game_check_placement(g.get(), one[0].get<double>(), one[1].get<double>() + 0.01));
+  EXPECT_FALSE(r["ok"].get<bool>());
+  EXPECT_NE(r["reason"].get<std::string>().find("overlap"), std::string::npos) << r;
+  EXPECT_TRUE(J(bs_game_check_placement(g.get(), head + 0.3, width / 2))["ok"].get<bool>());
+
+  // Once the cue ball is on the table it is not in hand any more.
+  act(g.get(), R"({"place": [1.0, 0.3]})");
+  r = J(bs_game_check_placement(g.get(), 1.2, 0.3));
+  EXPECT_FALSE(r["ok"].get<bool>());
+  EXPECT_NE(r["reason"].get<std::string>().find("not in hand"), std::string::npos) << r;
+}
+
+TEST(WebApi, TableDescribesTheGamesTable) {
+  GamePtr g = new_game(R"({"game": "eight_ball", "table": "7ft", "players": ["human", "human"]})");
+  const json t = J(bs_game_table(g.get()));
+  const bs::Table table = bs::make_pool_table("7ft");
+  EXPECT_EQ(t["length"].get<double>(), table.length);
+  EXPECT_EQ(t["walls"].size(), table.walls.size());
+  EXPECT_EQ(t["pockets"].size(), 6u);
+  EXPECT_EQ(t["outline"].size(), table.outline.size());
+  for (const json& w : t["walls"]) {
+    const std::string kind = w["kind"].get<std::string>();
+    EXPECT_TRUE(kind == "segment" || kind == "corner" || kind == "arc") << kind;
+  }
+}
+
+// ---------------------------------------------------------------------------
+// The wasm build's floating-point <charconv> (web/compat).
+
+std::string std_text(double v) {
+  char buf[400];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string compat_text(double v) {
+  char buf[400];
+  const auto r = breakshot_compat::to_chars_shortest(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+TEST(WebCompat, ShortestTextIsLibstdcxxs) {
+  std::uint64_t x = 0x853c49e6748fea9bULL;
+  const auto next = [&] {
+    // SplitMix64: a fixed stream of 64-bit patterns.
+    x += 0x9e3779b97f4a7c15ULL;
+    std::uint64_t z = x;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  };
+  std::vector<double> values = {0.0, -0.0, 1.0, 0.1, 1e22, 1e23, 5e-324, 1e-5, 1e-4, 123456.0,
+                                1.2345678901234568e20, 9007199254740993.0,
+                                std::numeric_limits<double>::max(),
+                                std::numeric_limits<double>::min(),
+                                std::numeric_limits<double>::infinity(),
+                                -std::numeric_limits<double>::infinity()};
+  for (int e = -1074; e <= 1023; ++e) {
+    values.push_back(std::ldexp(1.0, e));
+    values.push_back(std::nextafter(std::ldexp(1.0, e), 0.0));
+  }
+  for (int i = 0; i < 100000; ++i) {
+    values.push_back(std::bit_cast<double>(next()));
+    // Numbers of the size physics gives: |v| in [1e-8, 1e4).
+    const double u = static_cast<double>(next() >> 11) * 0x1.0p-53;
+    values.push_back((u - 0.5) * std::pow(10.0, static_cast<double>(next() % 12) - 8.0));
+  }
+  int bad = 0;
+  for (const double v : values) {
+    if (std::isnan(v)) continue;
+    const std::string a = std_text(v);
+    const std::string b = compat_text(v);
+    if (a != b && ++bad <= 10) ADD_FAILURE() << std::hexfloat << v << ": std " << a << ", compat " << b;
+    double back = 0.0;
+    const auto r = breakshot_compat::from_chars_decimal(a.data(), a.data() + a.size(), back);
+    if (std::isfinite(v)) {
+      EXPECT_EQ(r.ptr, a.data() + a.size());
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(back), std::bit_cast<std::uint64_t>(v)) << a;
+    }
+  }
+  EXPECT_EQ(bad, 0);
+}
+
+TEST(WebCompat, FromCharsIsTheStandards) {
+  for (const std::string text : {"1.5", "4", "0.5x", "-", "", "1e", "1e+", "abc", "1.", ".5", "+1",
+                                 "1e400", "-1e400", "1e-400", "5e-324", "  1", "1E5", "0x10", "inf",
+                                 "-nan", "2.5e-3junk"}) {
+    double a = 7.0, b = 7.0;
+    const auto ra = std::from_chars(text.data(), text.data() + text.size(), a);
+    const auto rb = breakshot_compat::from_chars_decimal(text.data(), text.data() + text.size(), b);
+    EXPECT_EQ(ra.ptr - text.data(), rb.ptr - text.data()) << "'" << text << "'";
+    EXPECT_EQ(ra.ec, rb.ec) << "'" << text << "'";
+    if (ra.ec == std::errc() && !std::isnan(a)) {
+      EXPECT_EQ(a, b) << "'" << text << "'";
+    }
+  }
+  char buf[64];
+  auto r = breakshot_compat::to_chars_precision(buf, buf + sizeof buf, 3.14159, std::chars_format::fixed, 2);
+  EXPECT_EQ(std::string(buf, r.ptr), "3.14");
+  r = breakshot_compat::to_chars_precision(buf, buf + sizeof buf, 1234.5, std::chars_format::general, 6);
+  char ref[64];
+  const auto rr = std::to_chars(ref, ref + sizeof ref, 1234.5, std::chars_format::general, 6);
+  EXPECT_EQ(std::string(buf, r.ptr), std::string(ref, rr.ptr));
+}
+
+}  // namespace

@@ -1,0 +1,1126 @@
+// The facade of the browser version (web/api/web_api.hpp, docs/web.md).
+//
+// Replies are built with nlohmann::ordered_json and dumped compactly: its
+// number printing (Grisu2 on the bits, integer arithmetic only) and its
+// parsing (strtod, correctly rounded in glibc and musl) are the same code
+// native and wasm, so a reply is the same bytes on both. Doubles are
+// printed so that they read back exactly (JavaScript's JSON.parse too).
+// bs_simulate returns the engine's own result text (write_result).
+//
+// Games. A BsGame holds the rules and a GameRecord (record.hpp) that
+// grows with every action, so bs_game_record is that record as
+// write_record writes it, and `breakshot replay` accepts it. Seeds are
+// those of play_game (src/game/match.cpp), from the game's seed S:
+//   rack            mix_seed(S ^ kRackStream, 0)
+//   noise, action i mix_seed(S, i)
+//   AI, action i    mix_seed(mix_seed(S, kPlayerStream), i)
+// so a game between two AI seats is the game play_game plays with the
+// same players (tests/test_web_api.cpp checks it). A seat is "human" (no
+// noise: the strike is played as given) or an AI level name (ai.hpp): it
+// shoots with the level's noise, whoever chose the shot. The AI decides
+// with one thread, no time budget and a budget in simulations per
+// decision (AiLevel::simulation_budget), so that a decision is the same
+// on every machine and, in wasm, quick enough for a page (measured in
+// docs/web.md):
+//   beginner 100 (it samples nothing)   amateur 600   club 2000
+//   expert 4000   champion 12000
+// A game's config may set "ai_budget" to override them all (tests).
+//
+// Links. A link is "v1." followed by the base64url (RFC 4648 section 5,
+// no padding) of a compact JSON object:
+//   {"g": game, "t": table, "s": "seed (decimal)", "b": breaker,
+//    "p": [seat0, seat1], "n": ai_budget (only when set),
+//    "a": [action, ...]}
+// with each action as chosen (before noise):
+//   ["p", X, Y]                                      place the cue ball
+//   ["s", SPEED, PHI, THETA, A, B, ball, pocket, f]  shoot; ball and
+//        pocket -1 without a call; f = 1 safety + 2 push-out
+//   ["d", "choice"]                                  decide
+// where the capitals are doubles written as the hexadecimal of their IEEE
+// bits, without leading zeros ("0" for +0, "8000000000000000" for -0,
+// "3ff0000000000000" for 1.0), so nothing is rounded. The executed strike
+// is not stored: it is perturb(intended, seat noise, radius,
+// mix_seed(S, i)), re-derived exactly as the record's replay does, so a
+// link holds the same game as the record, at about half the length.
+// bs_game_from_link replays the actions through the rules and stops with
+// an error naming the first one refused ("a[7]: ...").
+//
+// Errors never cross the boundary: every entry point catches everything
+// and answers {"error": "..."}; input errors name the JSON path.
+
+#include "web_api.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <new>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "breakshot/ai.hpp"
+#include "breakshot/game.hpp"
+#include "breakshot/lab.hpp"
+#include "breakshot/noise.hpp"
+#include "breakshot/player.hpp"
+#include "breakshot/record.hpp"
+#include "breakshot/scenario_io.hpp"
+#include "breakshot/simulation.hpp"
+
+#ifndef BREAKSHOT_VERSION
+#define BREAKSHOT_VERSION "0.1.0"
+#endif
+
+namespace bs = breakshot;
+using ojson = nlohmann::ordered_json;
+using json = nlohmann::json;
+
+namespace {
+
+// The stream tags of play_game (src/game/match.cpp): the same constants,
+// so that a web game's seeds are a match's.
+constexpr std::uint64_t kPlayerStream = 0x706c61796572ULL;
+constexpr std::uint64_t kRackStream = 0x7261636bULL;
+
+constexpr std::string_view kHuman = "human";
+constexpr std::string_view kLinkPrefix = "v1.";
+
+/// Simulations per AI decision in the browser (see the top of the file).
+/// Each is above what the level's own search takes in nearly every
+/// position (measured: the decisions with and without the budget agree),
+/// so the budget only bounds the rare long decision.
+std::int64_t web_budget(std::string_view level) {
+  if (level == "amateur") return 600;
+  if (level == "club") return 2000;
+  if (level == "expert") return 4000;
+  if (level == "champion") return 12000;
+  return 100;  // beginner: samples nothing, the budget is never taken
+}
+
+/// A bad input: its path and what is wrong with it.
+struct BadInput {
+  std::string message;
+};
+
+[[noreturn]] void bad(const std::string& path, const std::string& what) {
+  throw BadInput{path.empty() ? what : path + ": " + what};
+}
+
+std::string error_json(const std::string& message) {
+  ojson j = ojson::object();
+  j["error"] = message;
+  return j.dump();
+}
+
+/// Runs `body`, turning any exception into {"error"}.
+template <class F>
+std::string guarded(F&& body) {
+  try {
+    return body();
+  } catch (const BadInput& e) {
+    return error_json(e.message);
+  } catch (const std::bad_alloc&) {
+    return error_json("out of memory");
+  } catch (const std::exception& e) {
+    return error_json(std::string("internal error: ") + e.what());
+  } catch (...) {
+    return error_json("internal error");
+  }
+}
+
+thread_local std::string g_last_error = error_json("no error");
+
+// ---------------------------------------------------------------------------
+// Reading JSON input
+
+std::string member_path(const std::string& path, std::string_view key) {
+  return path.empty() ? std::string(key) : path + "." + std::string(key);
+}
+
+std::string index_path(const std::string& path, std::size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
+
+std::string kind_of(const json& v) {
+  if (v.is_null()) return "null";
+  if (v.is_boolean()) return "a boolean";
+  if (v.is_number()) return "a number";
+  if (v.is_string()) return "a string";
+  if (v.is_array()) return "an array";
+  return "an object";
+}
+
+json parse_text(const char* text, const std::string& what) {
+  if (text == nullptr) bad(what, "missing (a null pointer)");
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    bad(what, std::string("not valid JSON: ") + e.what());
+  }
+}
+
+/// An object whose keys must all be in `known`.
+const json& object(const json& v, const std::string& path,
+                   std::initializer_list<std::string_view> known) {
+  if (!v.is_object()) bad(path.empty() ? "(document)" : path, "expected an object, not " + kind_of(v));
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    bool ok = false;
+    for (std::string_view k : known) ok = ok || it.key() == k;
+    if (!ok) {
+      std::string list;
+      for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      bad(member_path(path, it.key()), "unknown key (known: " + list + ")");
+    }
+  }
+  return v;
+}
+
+const json* find(const json& obj, std::string_view key) {
+  const auto it = obj.find(std::string(key));
+  return it == obj.end() ? nullptr : &*it;
+}
+
+const json& required(const json& obj, const std::string& path, std::string_view key) {
+  const json* v = find(obj, key);
+  if (v == nullptr) bad(member_path(path, key), "missing");
+  return *v;
+}
+
+double number(const json& v, const std::string& path) {
+  if (!v.is_number()) bad(path, "expected a number, not " + kind_of(v));
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) bad(path, "not a finite number");
+  return d;
+}
+
+bool boolean(const json& v, const std::string& path) {
+  if (!v.is_boolean()) bad(path, "expected true or false, not " + kind_of(v));
+  return v.get<bool>();
+}
+
+std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi) {
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (!v.is_number_integer()) bad(path, "expected an integer in " + range + ", not " + kind_of(v));
+  if (v.is_number_unsigned()) {
+    const auto u = v.get<std::uint64_t>();
+    if (u > static_cast<std::uint64_t>(hi) || (lo > 0 && u < static_cast<std::uint64_t>(lo))) {
+      bad(path, "must be an integer in " + range);
+    }
+    return static_cast<std::int64_t>(u);
+  }
+  const auto i = v.get<std::int64_t>();
+  if (i < lo || i > hi) bad(path, "must be an integer in " + range);
+  return i;
+}
+
+const std::string& text(const json& v, const std::string& path) {
+  if (!v.is_string()) bad(path, "expected a string, not " + kind_of(v));
+  return v.get_ref<const std::string&>();
+}
+
+std::uint64_t parse_seed(const std::string& s, const std::string& path) {
+  std::uint64_t out = 0;
+  bool ok = !s.empty() && s.size() <= 20;
+  for (const char c : s) ok = ok && c >= '0' && c <= '9';
+  if (ok) {
+    for (const char c : s) {
+      const auto d = static_cast<std::uint64_t>(c - '0');
+      if (out > (std::numeric_limits<std::uint64_t>::max() - d) / 10) {
+        ok = false;
+        break;
+      }
+      out = out * 10 + d;
+    }
+  }
+  if (!ok) bad(path, "expected a seed: a decimal integer in [0, 2^64) as a string, not \"" + s + "\"");
+  return out;
+}
+
+/// A seed: a decimal string, or an integer number up to 2^53.
+std::uint64_t seed_value(const json& v, const std::string& path) {
+  if (v.is_string()) return parse_seed(v.get_ref<const std::string&>(), path);
+  if (v.is_number_integer()) {
+    return static_cast<std::uint64_t>(integer(v, path, 0, std::int64_t{1} << 53));
+  }
+  bad(path, "expected a seed (a decimal string), not " + kind_of(v));
+}
+
+/// "human" or a known AI level.
+std::string seat_name(const json& v, const std::string& path) {
+  const std::string& s = text(v, path);
+  if (s == kHuman) return s;
+  try {
+    (void)bs::ai_level(s);
+  } catch (const std::invalid_argument& e) {
+    bad(path, std::string("\"human\" or ") + e.what());
+  }
+  return s;
+}
+
+// ---------------------------------------------------------------------------
+// Writing replies
+
+ojson vec2_json(bs::Vec2 v) { return ojson::array({v.x, v.y}); }
+
+ojson ints_json(const std::vector<int>& v) {
+  ojson a = ojson::array();
+  for (const int i : v) a.push_back(i);
+  return a;
+}
+
+ojson strike_json(const bs::CueStrike& s) {
+  ojson j = ojson::object();
+  j["speed"] = s.speed;
+  j["phi"] = s.phi;
+  j["theta"] = s.theta;
+  j["a"] = s.a;
+  j["b"] = s.b;
+  return j;
+}
+
+/// An action in the form bs_game_act reads.
+ojson action_json(const bs::Action& a) {
+  ojson j = ojson::object();
+  if (const auto* p = std::get_if<bs::PlaceCueBall>(&a)) {
+    j["place"] = vec2_json(p->position);
+  } else if (const auto* s = std::get_if<bs::Shoot>(&a)) {
+    j["shoot"] = strike_json(s->strike);
+    if (s->call) {
+      ojson c = ojson::object();
+      c["ball"] = s->call->ball;
+      c["pocket"] = s->call->pocket;
+      j["call"] = c;
+    }
+    j["safety"] = s->safety;
+    j["push_out"] = s->push_out;
+  } else {
+    j["decide"] = bs::to_string(std::get<bs::Decide>(a).choice);
+  }
+  return j;
+}
+
+std::string_view action_kind(const bs::Action& a) {
+  if (std::holds_alternative<bs::PlaceCueBall>(a)) return "place";
+  if (std::holds_alternative<bs::Shoot>(a)) return "shoot";
+  return "decide";
+}
+
+ojson ruling_json(const bs::Ruling& r) {
+  ojson j = ojson::object();
+  ojson fouls = ojson::array();
+  for (const bs::Foul f : r.fouls) fouls.push_back(bs::to_string(f));
+  j["fouls"] = fouls;
+  j["text"] = r.text;
+  j["turn_continues"] = r.turn_continues;
+  j["legal_break"] = r.legal_break;
+  j["assigned"] = bs::to_string(r.assigned);
+  j["spotted"] = ints_json(r.spotted);
+  j["winner"] = r.winner;
+  j["call_made"] = r.call_made;
+  return j;
+}
+
+ojson facts_json(const bs::ShotFacts& f) {
+  ojson j = ojson::object();
+  j["first_hit"] = f.first_hit;
+  j["pocketed"] = ints_json(f.pocketed);
+  j["pocket_of"] = ints_json(f.pocket_of);
+  j["miscue"] = f.miscue;
+  j["cushion_after_contact"] = f.cushion_after_contact;
+  j["object_balls_to_cushion"] = f.object_balls_to_cushion;
+  return j;
+}
+
+/// An event as the result file writes it (ids for balls, names for
+/// cushions and pockets).
+ojson event_json(const bs::Scenario& s, const bs::Event& e) {
+  const auto id = [&](std::int32_t i) -> ojson {
+    if (i >= 0 && static_cast<std::size_t>(i) < s.balls.size()) {
+      return s.balls[static_cast<std::size_t>(i)].id;
+    }
+    return nullptr;
+  };
+  ojson j = ojson::object();
+  j["time"] = e.time;
+  j["type"] = bs::to_string(e.type);
+  ojson balls = ojson::array({id(e.ball)});
+  if (e.type == bs::EventType::ball_ball) balls.push_back(id(e.other));
+  j["balls"] = balls;
+  switch (e.type) {
+    case bs::EventType::ball_cushion:
+      j["cushion"] = e.wall >= 0 && static_cast<std::size_t>(e.wall) < s.table.walls.size()
+                         ? ojson(s.table.walls[static_cast<std::size_t>(e.wall)].name)
+                         : ojson(nullptr);
+      break;
+    case bs::EventType::ball_pocket:
+      j["pocket"] = e.pocket >= 0 && static_cast<std::size_t>(e.pocket) < s.table.pockets.size()
+                        ? ojson(s.table.pockets[static_cast<std::size_t>(e.pocket)].name)
+                        : ojson(nullptr);
+      break;
+    case bs::EventType::state_change:
+      j["from"] = bs::to_string(e.from);
+      j["to"] = bs::to_string(e.to);
+      break;
+    case bs::EventType::cue_strike:
+    case bs::EventType::ball_ball:
+      break;
+  }
+  return j;
+}
+
+std::string_view wall_kind(bs::WallKind k) {
+  switch (k) {
+    case bs::WallKind::segment:
+      return "segment";
+    case bs::WallKind::corner:
+      return "corner";
+    case bs::WallKind::arc:
+      return "arc";
+  }
+  return "segment";
+}
+
+char* copy_out(const std::string& s) {
+  char* p = static_cast<char*>(std::malloc(s.size() + 1));
+  if (p != nullptr) std::memcpy(p, s.c_str(), s.size() + 1);
+  return p;
+}
+
+// ---------------------------------------------------------------------------
+// Links: base64url and doubles as bits
+
+constexpr char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+
+std::string base64url(std::string_view in) {
+  std::string out;
+  out.reserve((in.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 3 <= in.size(); i += 3) {
+    const std::uint32_t v = (std::uint32_t{static_cast<unsigned char>(in[i])} << 16) |
+                            (std::uint32_t{static_cast<unsigned char>(in[i + 1])} << 8) |
+                            std::uint32_t{static_cast<unsigned char>(in[i + 2])};
+    for (int k = 3; k >= 0; --k) out.push_back(kB64[(v >> (6 * k)) & 63]);
+  }
+  const std::size_t rest = in.size() - i;
+  if (rest > 0) {
+    std::uint32_t v = std::uint32_t{static_cast<unsigned char>(in[i])} << 16;
+    if (rest == 2) v |= std::uint32_t{static_cast<unsigned char>(in[i + 1])} << 8;
+    out.push_back(kB64[(v >> 18) & 63]);
+    out.push_back(kB64[(v >> 12) & 63]);
+    if (rest == 2) out.push_back(kB64[(v >> 6) & 63]);
+  }
+  return out;
+}
+
+std::optional<std::string> unbase64url(std::string_view in) {
+  if (in.size() % 4 == 1) return std::nullopt;
+  std::string out;
+  out.reserve(in.size() / 4 * 3 + 2);
+  std::uint32_t acc = 0;
+  int bits = 0;
+  for (const char c : in) {
+    std::uint32_t v = 0;
+    if (c >= 'A' && c <= 'Z') {
+      v = static_cast<std::uint32_t>(c - 'A');
+    } else if (c >= 'a' && c <= 'z') {
+      v = static_cast<std::uint32_t>(c - 'a' + 26);
+    } else if (c >= '0' && c <= '9') {
+      v = static_cast<std::uint32_t>(c - '0' + 52);
+    } else if (c == '-') {
+      v = 62;
+    } else if (c == '_') {
+      v = 63;
+    } else {
+      return std::nullopt;
+    }
+    acc = (acc << 6) | v;
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out.push_back(static_cast<char>((acc >> bits) & 0xff));
+    }
+  }
+  return out;
+}
+
+std::string double_hex(double d) {
+  std::uint64_t u = 0;
+  std::memcpy(&u, &d, sizeof u);
+  if (u == 0) return "0";
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string s;
+  while (u != 0) {
+    s.insert(s.begin(), kHex[u & 15]);
+    u >>= 4;
+  }
+  return s;
+}
+
+double hex_double(const json& v, const std::string& path) {
+  const std::string& s = text(v, path);
+  bool ok = !s.empty() && s.size() <= 16;
+  std::uint64_t u = 0;
+  for (const char c : s) {
+    unsigned d = 0;
+    if (c >= '0' && c <= '9') {
+      d = static_cast<unsigned>(c - '0');
+    } else if (c >= 'a' && c <= 'f') {
+      d = static_cast<unsigned>(c - 'a' + 10);
+    } else {
+      ok = false;
+      break;
+    }
+    u = (u << 4) | d;
+  }
+  if (!ok) bad(path, "expected the hexadecimal bits of a double (1 to 16 digits 0-9a-f)");
+  double d = 0.0;
+  std::memcpy(&d, &u, sizeof d);
+  if (!std::isfinite(d)) bad(path, "not a finite number");
+  return d;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Playback
+
+struct BsPlayback {
+  explicit BsPlayback(const bs::Scenario& s) : scenario(s), sim(scenario) {}
+  bs::Scenario scenario;
+  bs::Simulation sim;
+  bool limit = false;  // max_events stopped a frame
+  std::string reply;
+};
+
+namespace {
+
+std::string frame_json(BsPlayback& pb, double t) {
+  if (!std::isfinite(t)) bad("t", "not a finite number");
+  if (t < pb.sim.time()) {
+    bad("t", "the frame time goes backwards (" + ojson(t).dump() + " < " +
+                 ojson(pb.sim.time()).dump() + ")");
+  }
+  // A run that ends at a time ends there (as simulate() does).
+  const double target = pb.scenario.until.rest ? t : std::fmin(t, pb.scenario.until.time);
+  if (!pb.limit && pb.sim.advance_to(target) == bs::StopReason::event_limit) pb.limit = true;
+  ojson j = ojson::object();
+  j["t"] = pb.sim.time();
+  ojson balls = ojson::array();
+  double energy = 0.0;
+  bs::Vec2 p;
+  for (std::size_t i = 0; i < pb.sim.ball_count(); ++i) {
+    const bs::BallState st = pb.sim.ball(i);
+    const bs::BallSpec& spec = pb.scenario.balls[i];
+    const double e = bs::kinetic_energy(spec, st);
+    const bs::Vec2 m = bs::momentum(spec, st);
+    // Summed in scenario order, as the result file's samples are.
+    energy += e;
+    p += m;
+    balls.push_back(ojson::array({st.position.x, st.position.y,
+                                  st.state == bs::MotionState::pocketed ? 0 : 1, st.velocity.x,
+                                  st.velocity.y, e, m.x, m.y}));
+  }
+  j["balls"] = balls;
+  j["energy"] = energy;
+  j["momentum"] = vec2_json(p);
+  j["events"] = pb.sim.events().size();
+  j["at_rest"] = pb.sim.at_rest();
+  j["complete"] = !pb.limit;
+  return j.dump();
+}
+
+std::string events_json(const BsPlayback& pb, int from) {
+  const std::vector<bs::Event>& ev = pb.sim.events();
+  if (from < 0 || static_cast<std::size_t>(from) > ev.size()) {
+    bad("from", "must be in [0, " + std::to_string(ev.size()) + "], not " + std::to_string(from));
+  }
+  ojson list = ojson::array();
+  for (std::size_t k = static_cast<std::size_t>(from); k < ev.size(); ++k) {
+    list.push_back(event_json(pb.scenario, ev[k]));
+  }
+  ojson j = ojson::object();
+  j["from"] = from;
+  j["events"] = list;
+  return j.dump();
+}
+
+bs::Scenario scenario_from(const char* scenario_json) {
+  if (scenario_json == nullptr) bad("scenario", "missing (a null pointer)");
+  auto parsed = bs::read_scenario(scenario_json);
+  if (const auto* err = std::get_if<bs::ScenarioError>(&parsed)) {
+    bad(err->path, (err->unsupported ? "not supported: " : "") + err->reason);
+  }
+  return std::get<bs::Scenario>(std::move(parsed));
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Games
+
+struct BsGame {
+  BsGame(const bs::GameConfig& config, std::array<std::string, 2> seat_names, std::uint64_t seed,
+         int breaker, std::optional<std::int64_t> budget)
+      : rules(config), seats(std::move(seat_names)), ai_budget(budget) {
+    record.config = config;
+    record.players = seats;
+    record.seed = seed;
+    for (std::size_t k = 0; k < 2; ++k) {
+      record.noise[k] = seats[k] == kHuman ? bs::NoiseModel{} : bs::ai_level(seats[k]).noise;
+    }
+    record.start = rules.start(bs::mix_seed(seed ^ kRackStream, 0), breaker);
+  }
+
+  const bs::GameState& state() const {
+    return record.actions.empty() ? record.start : record.actions.back().after;
+  }
+  const bs::GameState& state_before(std::size_t i) const {
+    return i == 0 ? record.start : record.actions[i - 1].after;
+  }
+
+  bs::Rules rules;
+  std::array<std::string, 2> seats;
+  std::optional<std::int64_t> ai_budget;
+  bs::GameRecord record;
+  std::string reply;
+};
+
+namespace {
+
+struct GameConfigInput {
+  bs::GameConfig config;
+  std::array<std::string, 2> seats;
+  std::uint64_t seed = 0;
+  int breaker = 0;
+  std::optional<std::int64_t> ai_budget;
+};
+
+constexpr std::int64_t kMaxBudget = 1'000'000'000;
+
+bs::GameType game_type(const json& v, const std::string& path) {
+  const std::string& s = text(v, path);
+  const auto g = bs::parse_game_type(s);
+  if (!g) bad(path, "unknown game \"" + s + "\" (known: eight_ball, nine_ball)");
+  return *g;
+}
+
+std::string table_size(const json& v, const std::string& path) {
+  const std::string& s = text(v, path);
+  if (s != "7ft" && s != "8ft" && s != "9ft") bad(path, "unknown table \"" + s + "\" (known: 7ft, 8ft, 9ft)");
+  return s;
+}
+
+GameConfigInput read_config(const json& doc) {
+  object(doc, "", {"game", "table", "seed", "breaker", "players", "ai_budget"});
+  GameConfigInput in;
+  in.config.game = game_type(required(doc, "", "game"), "game");
+  if (const json* t = find(doc, "table")) in.config.table_size = table_size(*t, "table");
+  if (const json* s = find(doc, "seed")) in.seed = seed_value(*s, "seed");
+  if (const json* b = find(doc, "breaker")) in.breaker = static_cast<int>(integer(*b, "breaker", 0, 1));
+  const json& players = required(doc, "", "players");
+  if (!players.is_array() || players.size() != 2) {
+    bad("players", "expected an array of two seats (\"human\" or an AI level)");
+  }
+  for (std::size_t k = 0; k < 2; ++k) in.seats[k] = seat_name(players[k], index_path("players", k));
+  if (const json* n = find(doc, "ai_budget")) in.ai_budget = integer(*n, "ai_budget", 1, kMaxBudget);
+  return in;
+}
+
+std::unique_ptr<BsGame> make_game(const GameConfigInput& in) {
+  return std::make_unique<BsGame>(in.config, in.seats, in.seed, in.breaker, in.ai_budget);
+}
+
+bs::Action read_action(const json& doc) {
+  if (!doc.is_object()) bad("(action)", "expected an object, not " + kind_of(doc));
+  if (find(doc, "place") != nullptr) {
+    object(doc, "", {"place"});
+    const json& p = doc["place"];
+    if (!p.is_array() || p.size() != 2) bad("place", "expected [x, y]");
+    return bs::PlaceCueBall{{number(p[0], "place[0]"), number(p[1], "place[1]")}};
+  }
+  if (find(doc, "decide") != nullptr) {
+    object(doc, "", {"decide"});
+    const std::string& c = text(doc["decide"], "decide");
+    const auto choice = bs::parse_choice(c);
+    if (!choice) {
+      bad("decide", "unknown choice \"" + c +
+                        "\" (known: shoot, pass_back, accept_table, rerack_and_break, "
+                        "rerack_opponent_breaks, respot_eight)");
+    }
+    return bs::Decide{*choice};
+  }
+  if (find(doc, "shoot") != nullptr) {
+    object(doc, "", {"shoot", "call", "safety", "push_out"});
+    const json& s = object(doc["shoot"], "shoot", {"speed", "phi", "theta", "a", "b"});
+    bs::Shoot shot;
+    shot.strike.speed = number(required(s, "shoot", "speed"), "shoot.speed");
+    shot.strike.phi = number(required(s, "shoot", "phi"), "shoot.phi");
+    if (const json* v = find(s, "theta")) shot.strike.theta = number(*v, "shoot.theta");
+    if (const json* v = find(s, "a")) shot.strike.a = number(*v, "shoot.a");
+    if (const json* v = find(s, "b")) shot.strike.b = number(*v, "shoot.b");
+    if (const json* c = find(doc, "call"); c != nullptr && !c->is_null()) {
+      object(*c, "call", {"ball", "pocket"});
+      bs::Call call;
+      call.ball = static_cast<int>(integer(required(*c, "call", "ball"), "call.ball", 0, 1000));
+      call.pocket = static_cast<int>(integer(required(*c, "call", "pocket"), "call.pocket", 0, 1000));
+      shot.call = call;
+    }
+    if (const json* v = find(doc, "safety")) shot.safety = boolean(*v, "safety");
+    if (const json* v = find(doc, "push_out")) shot.push_out = boolean(*v, "push_out");
+    return shot;
+  }
+  bad("(action)", "expected one of {\"place\": [x, y]}, {\"shoot\": {...}} or {\"decide\": \"...\"}");
+}
+
+ojson legal_json(const bs::LegalActions& la) {
+  ojson j = ojson::object();
+  j["place"] = bs::to_string(la.place);
+  j["must_place"] = la.must_place;
+  j["shoot"] = la.shoot;
+  j["push_out"] = la.push_out;
+  j["call"] = la.call;
+  j["targets"] = ints_json(la.targets);
+  ojson choices = ojson::array();
+  for (const bs::Choice c : la.choices) choices.push_back(bs::to_string(c));
+  j["choices"] = choices;
+  return j;
+}
+
+ojson state_json(const BsGame& g) {
+  const bs::GameState& s = g.state();
+  ojson j = ojson::object();
+  j["game"] = bs::to_string(s.game);
+  j["phase"] = bs::to_string(s.phase);
+  j["player"] = s.player;
+  j["breaker"] = s.breaker;
+  j["ball_in_hand"] = bs::to_string(s.ball_in_hand);
+  j["kitchen_shot"] = s.kitchen_shot;
+  ojson balls = ojson::array();
+  for (std::size_t b = 0; b < s.position.size(); ++b) {
+    balls.push_back(ojson::array({s.position[b].x, s.position[b].y, s.on_table[b] ? 1 : 0}));
+  }
+  j["balls"] = balls;
+  j["group"] = ojson::array({bs::to_string(s.group[0]), bs::to_string(s.group[1])});
+  j["fouls_in_a_row"] = ojson::array({s.fouls_in_a_row[0], s.fouls_in_a_row[1]});
+  j["push_out_allowed"] = s.push_out_allowed;
+  j["after_push_out"] = s.after_push_out;
+  j["winner"] = s.winner;
+  j["result"] = s.result;
+  j["shots"] = s.shots;
+  j["innings"] = s.innings;
+  j["racks"] = s.racks;
+  j["players"] = ojson::array({g.seats[0], g.seats[1]});
+  j["actions"] = g.record.actions.size();
+  j["legal"] = legal_json(g.rules.legal_actions(s));
+  return j;
+}
+
+ojson table_json(const BsGame& g) {
+  const bs::Table& t = g.rules.table();
+  ojson j = ojson::object();
+  j["length"] = t.length;
+  j["width"] = t.width;
+  j["ball_radius"] = g.rules.config().ball_radius;
+  j["head_string"] = g.rules.head_string();
+  j["head_spot"] = vec2_json(t.head_spot);
+  j["foot_spot"] = vec2_json(t.foot_spot);
+  ojson outline = ojson::array();
+  for (const bs::Vec2 v : t.outline) outline.push_back(vec2_json(v));
+  j["outline"] = outline;
+  ojson walls = ojson::array();
+  for (const bs::Wall& w : t.walls) {
+    ojson wj = ojson::object();
+    wj["kind"] = wall_kind(w.kind);
+    wj["a"] = vec2_json(w.a);
+    wj["b"] = vec2_json(w.b);
+    wj["normal"] = vec2_json(w.normal);
+    wj["radius"] = w.radius;
+    wj["name"] = w.name;
+    walls.push_back(wj);
+  }
+  j["walls"] = walls;
+  ojson pockets = ojson::array();
+  for (const bs::Pocket& p : t.pockets) {
+    ojson pj = ojson::object();
+    pj["centre"] = vec2_json(p.centre);
+    pj["radius"] = p.radius;
+    pj["name"] = p.name;
+    pockets.push_back(pj);
+  }
+  j["pockets"] = pockets;
+  return j;
+}
+
+/// Plays `action` (as chosen) for the seat to act; nullopt and the game
+/// unchanged if the rules refuse it (`why` says why).
+std::optional<ojson> play(BsGame& g, const bs::Action& action, std::string& why) {
+  const bs::GameState& state = g.state();
+  if (auto reason = g.rules.check(state, action)) {
+    why = *reason;
+    return std::nullopt;
+  }
+  const std::size_t i = g.record.actions.size();
+  const int seat = state.player;
+  bs::RecordedAction ra;
+  ra.player = seat;
+  ra.noise_seed = bs::mix_seed(g.record.seed, i);
+  ra.action = action;
+  std::vector<int> numbers;
+  if (auto* shoot = std::get_if<bs::Shoot>(&ra.action)) {
+    ra.intended = shoot->strike;
+    shoot->strike = bs::perturb(shoot->strike, g.record.noise[static_cast<std::size_t>(seat)],
+                                g.rules.config().ball_radius, ra.noise_seed);
+    (void)g.rules.shot_scenario(state, shoot->strike, &numbers);
+  }
+  bs::Outcome out;
+  try {
+    out = g.rules.apply(state, ra.action);
+  } catch (const std::exception& e) {
+    why = std::string("the action as executed was refused: ") + e.what();
+    return std::nullopt;
+  }
+  ojson j = ojson::object();
+  j["index"] = i;
+  j["player"] = seat;
+  j["kind"] = action_kind(ra.action);
+  j["executed"] = action_json(ra.action);
+  if (ra.intended) {
+    j["intended"] = strike_json(*ra.intended);
+    j["numbers"] = ints_json(numbers);
+  }
+  j["ruling"] = ruling_json(out.ruling);
+  j["facts"] = facts_json(out.facts);
+  ra.ruling = std::move(out.ruling);
+  ra.after = std::move(out.state);
+  g.record.actions.push_back(std::move(ra));
+  j["state"] = state_json(g);
+  return j;
+}
+
+std::string act_json(BsGame& g, const char* action_text) {
+  const bs::Action action = read_action(parse_text(action_text, "action"));
+  std::string why;
+  std::optional<ojson> j = play(g, action, why);
+  if (!j) return error_json(why);
+  return j->dump();
+}
+
+bs::AiLevel web_level(const std::string& name, const std::optional<std::int64_t>& budget) {
+  bs::AiLevel l = bs::ai_level(name);
+  l.threads = 1;
+  l.time_budget = 0.0;
+  l.simulation_budget = budget ? *budget : web_budget(name);
+  return l;
+}
+
+std::string ai_action_json(BsGame& g, const char* level) {
+  const bs::GameState& state = g.state();
+  if (state.phase == bs::Phase::game_over) bad("", "the game is over");
+  std::string name;
+  if (level != nullptr && level[0] != '\0') {
+    name = level;
+    if (name == kHuman) bad("level", "\"human\" is not an AI level");
+    try {
+      (void)bs::ai_level(name);
+    } catch (const std::invalid_argument& e) {
+      bad("level", e.what());
+    }
+  } else {
+    name = g.seats[static_cast<std::size_t>(state.player)];
+    if (name == kHuman) {
+      bad("level", "the seat to act (" + std::to_string(state.player) +
+                       ") is human: name an AI level for a hint");
+    }
+  }
+  const std::size_t i = g.record.actions.size();
+  const std::unique_ptr<bs::Player> ai = bs::make_ai_player(web_level(name, g.ai_budget));
+  const std::uint64_t seed = bs::mix_seed(bs::mix_seed(g.record.seed, kPlayerStream), i);
+  const bs::Action a = ai->decide(g.rules, state, seed);
+  ojson j = ojson::object();
+  j["action"] = action_json(a);
+  return j.dump();
+}
+
+std::string link_text(const BsGame& g) {
+  ojson j = ojson::object();
+  j["g"] = bs::to_string(g.record.config.game);
+  j["t"] = g.record.config.table_size;
+  j["s"] = std::to_string(g.record.seed);
+  j["b"] = g.record.start.breaker;
+  j["p"] = ojson::array({g.seats[0], g.seats[1]});
+  if (g.ai_budget) j["n"] = *g.ai_budget;
+  ojson actions = ojson::array();
+  for (const bs::RecordedAction& ra : g.record.actions) {
+    if (const auto* p = std::get_if<bs::PlaceCueBall>(&ra.action)) {
+      actions.push_back(ojson::array({"p", double_hex(p->position.x), double_hex(p->position.y)}));
+    } else if (const auto* s = std::get_if<bs::Shoot>(&ra.action)) {
+      const bs::CueStrike& k = ra.intended ? *ra.intended : s->strike;
+      actions.push_back(ojson::array(
+          {"s", double_hex(k.speed), double_hex(k.phi), double_hex(k.theta), double_hex(k.a),
+           double_hex(k.b), s->call ? s->call->ball : -1, s->call ? s->call->pocket : -1,
+           (s->safety ? 1 : 0) + (s->push_out ? 2 : 0)}));
+    } else {
+      actions.push_back(ojson::array({"d", bs::to_string(std::get<bs::Decide>(ra.action).choice)}));
+    }
+  }
+  j["a"] = actions;
+  return std::string(kLinkPrefix) + base64url(j.dump());
+}
+
+bs::Action link_action(const json& v, const std::string& path) {
+  if (!v.is_array() || v.empty() || !v[0].is_string()) bad(path, "expected an action array [\"p\"|\"s\"|\"d\", ...]");
+  const std::string& k = v[0].get_ref<const std::string&>();
+  if (k == "p") {
+    if (v.size() != 3) bad(path, "expected [\"p\", X, Y]");
+    return bs::PlaceCueBall{{hex_double(v[1], index_path(path, 1)), hex_double(v[2], index_path(path, 2))}};
+  }
+  if (k == "s") {
+    if (v.size() != 9) bad(path, "expected [\"s\", SPEED, PHI, THETA, A, B, ball, pocket, flags]");
+    bs::Shoot s;
+    s.strike.speed = hex_double(v[1], index_path(path, 1));
+    s.strike.phi = hex_double(v[2], index_path(path, 2));
+    s.strike.theta = hex_double(v[3], index_path(path, 3));
+    s.strike.a = hex_double(v[4], index_path(path, 4));
+    s.strike.b = hex_double(v[5], index_path(path, 5));
+    const auto ball = integer(v[6], index_path(path, 6), -1, 1000);
+    const auto pocket = integer(v[7], index_path(path, 7), -1, 1000);
+    if ((ball < 0) != (pocket < 0)) bad(index_path(path, 6), "a call needs both a ball and a pocket");
+    if (ball >= 0) s.call = bs::Call{static_cast<int>(ball), static_cast<int>(pocket)};
+    const auto flags = integer(v[8], index_path(path, 8), 0, 3);
+    s.safety = (flags & 1) != 0;
+    s.push_out = (flags & 2) != 0;
+    return s;
+  }
+  if (k == "d") {
+    if (v.size() != 2) bad(path, "expected [\"d\", \"choice\"]");
+    const std::string& c = text(v[1], index_path(path, 1));
+    const auto choice = bs::parse_choice(c);
+    if (!choice) bad(index_path(path, 1), "unknown choice \"" + c + "\"");
+    return bs::Decide{*choice};
+  }
+  bad(index_path(path, 0), "unknown action kind \"" + k + "\" (known: p, s, d)");
+}
+
+std::unique_ptr<BsGame> game_from_link(const char* link) {
+  if (link == nullptr) bad("link", "missing (a null pointer)");
+  std::string_view text_view(link);
+  // A link pasted with its URL fragment around it.
+  if (const auto at = text_view.find("game="); at != std::string_view::npos) {
+    text_view.remove_prefix(at + 5);
+    text_view = text_view.substr(0, text_view.find('&'));
+  }
+  if (text_view.substr(0, kLinkPrefix.size()) != kLinkPrefix) {
+    bad("link", "expected a link starting with \"v1.\"");
+  }
+  const std::optional<std::string> decoded = unbase64url(text_view.substr(kLinkPrefix.size()));
+  if (!decoded) bad("link", "not base64url text after \"v1.\"");
+  json doc;
+  try {
+    doc = json::parse(*decoded);
+  } catch (const json::parse_error& e) {
+    bad("link", std::string("not valid JSON inside: ") + e.what());
+  }
+  object(doc, "link", {"g", "t", "s", "b", "p", "n", "a"});
+  GameConfigInput in;
+  in.config.game = game_type(required(doc, "link", "g"), "link.g");
+  in.config.table_size = table_size(required(doc, "link", "t"), "link.t");
+  in.seed = parse_seed(text(required(doc, "link", "s"), "link.s"), "link.s");
+  in.breaker = static_cast<int>(integer(required(doc, "link", "b"), "link.b", 0, 1));
+  const json& players = required(doc, "link", "p");
+  if (!players.is_array() || players.size() != 2) bad("link.p", "expected two seats");
+  for (std::size_t k = 0; k < 2; ++k) in.seats[k] = seat_name(players[k], index_path("link.p", k));
+  if (const json* n = find(doc, "n")) in.ai_budget = integer(*n, "link.n", 1, kMaxBudget);
+  const json& actions = required(doc, "link", "a");
+  if (!actions.is_array()) bad("link.a", "expected an array of actions");
+  std::unique_ptr<BsGame> g = make_game(in);
+  for (std::size_t i = 0; i < actions.size(); ++i) {
+    const std::string path = index_path("link.a", i);
+    const bs::Action a = link_action(actions[i], path);
+    std::string why;
+    if (!play(*g, a, why)) bad(path, "refused: " + why);
+  }
+  return g;
+}
+
+template <class T>
+T* fail_null(const std::string& message) {
+  g_last_error = error_json(message);
+  return nullptr;
+}
+
+/// Runs a *_new body: the handle, or NULL with bs_last_error set.
+template <class T, class F>
+T* guarded_new(F&& body) {
+  try {
+    return body().release();
+  } catch (const BadInput& e) {
+    return fail_null<T>(e.message);
+  } catch (const std::bad_alloc&) {
+    return fail_null<T>("out of memory");
+  } catch (const std::exception& e) {
+    return fail_null<T>(std::string("internal error: ") + e.what());
+  } catch (...) {
+    return fail_null<T>("internal error");
+  }
+}
+
+const char* keep(std::string& slot, std::string text) {
+  slot = std::move(text);
+  return slot.c_str();
+}
+
+// The replies of calls on a NULL handle.
+const char* null_handle() {
+  static const std::string reply = error_json("handle: a null handle");
+  return reply.c_str();
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// The C API
+
+extern "C" {
+
+const char* bs_version(void) {
+  static const std::string reply = [] {
+    ojson j = ojson::object();
+    j["version"] = BREAKSHOT_VERSION;
+    ojson levels = ojson::array();
+    ojson budgets = ojson::object();
+    for (const std::string& l : bs::ai_level_names()) {
+      levels.push_back(l);
+      budgets[l] = web_budget(l);
+    }
+    j["levels"] = levels;
+    j["ai_budgets"] = budgets;
+    return j.dump();
+  }();
+  return reply.c_str();
+}
+
+char* bs_simulate(const char* scenario_json) {
+  return copy_out(guarded([&] {
+    const bs::Scenario s = scenario_from(scenario_json);
+    return bs::write_result(s, bs::simulate(s));
+  }));
+}
+
+void bs_free(char* p) { std::free(p); }
+
+BsPlayback* bs_playback_new(const char* scenario_json) {
+  return guarded_new<BsPlayback>(
+      [&] { return std::make_unique<BsPlayback>(scenario_from(scenario_json)); });
+}
+
+const char* bs_playback_frame(BsPlayback* pb, double t) {
+  if (pb == nullptr) return null_handle();
+  return keep(pb->reply, guarded([&] { return frame_json(*pb, t); }));
+}
+
+const char* bs_playback_events(BsPlayback* pb, int from) {
+  if (pb == nullptr) return null_handle();
+  return keep(pb->reply, guarded([&] { return events_json(*pb, from); }));
+}
+
+void bs_playback_free(BsPlayback* pb) { delete pb; }
+
+BsGame* bs_game_new(const char* config_json) {
+  return guarded_new<BsGame>([&] { return make_game(read_config(parse_text(config_json, "config"))); });
+}
+
+BsGame* bs_game_from_link(const char* link) {
+  return guarded_new<BsGame>([&] { return game_from_link(link); });
+}
+
+const char* bs_game_table(BsGame* g) {
+  if (g == nullptr) return null_handle();
+  return keep(g->reply, guarded([&] { return table_json(*g).dump(); }));
+}
+
+const char* bs_game_state(BsGame* g) {
+  if (g == nullptr) return null_handle();
+  return keep(g->reply, guarded([&] { return state_json(*g).dump(); }));
+}
+
+const char* bs_game_check_placement(BsGame* g, double x, double y) {
+  if (g == nullptr) return null_handle();
+  return keep(g->reply, guarded([&] {
+                ojson j = ojson::object();
+                const auto why = g->rules.check_placement(g->state(), {x, y});
+                j["ok"] = !why;
+                if (why) j["reason"] = *why;
+                return j.dump();
+              }));
+}
+
+const char* bs_game_act(BsGame* g, const char* action_json_text) {
+  if (g == nullptr) return null_handle();
+  return keep(g->reply, guarded([&] { return act_json(*g, action_json_text); }));
+}
+
+const char* bs_game_ai_action(BsGame* g, const char* level_or_null) {
+  if (g == nullptr) return null_handle();
+  return keep(g->reply, guarded([&] { return ai_action_json(*g, level_or_null); }));
+}
+
+BsPlayback* bs_game_shot_playback(BsGame* g, int index) {
+  return guarded_new<BsPlayback>([&] {
+    if (g == nullptr) bad("handle", "a null handle");
+    const std::size_t n = g->record.actions.size();
+    if (index < 0 || static_cast<std::size_t>(index) >= n) {
+      bad("index", "must be in [0, " + std::to_string(n) + "), not " + std::to_string(index));
+    }
+    const bs::RecordedAction& ra = g->record.actions[static_cast<std::size_t>(index)];
+    const auto* shot = std::get_if<bs::Shoot>(&ra.action);
+    if (shot == nullptr) {
+      bad("index", "action " + std::to_string(index) + " is not a shot (" +
+                       std::string(action_kind(ra.action)) + ")");
+    }
+    return std::make_unique<BsPlayback>(
+        g->rules.shot_scenario(g->state_before(static_cast<std::size_t>(index)), shot->strike));
+  });
+}
+
+const char* bs_game_link(BsGame* g) {
+  if (g == nullptr) return null_handle();
+  return keep(g->reply, guarded([&] {
+                ojson j = ojson::object();
+                j["link"] = link_text(*g);
+                return j.dump();
+              }));
+}
+
+const char* bs_game_record(BsGame* g) {
+  if (g == nullptr) return null_handle();
+  return keep(g->reply, guarded([&] { return bs::write_record(g->record); }));
+}
+
+const char* bs_game_undo_to(BsGame* g, int n) {
+  if (g == nullptr) return null_handle();
+  return keep(g->reply, guarded([&] {
+                const std::size_t size = g->record.actions.size();
+                if (n < 0 || static_cast<std::size_t>(n) > size) {
+                  bad("n", "must be in [0, " + std::to_string(size) + "], not " + std::to_string(n));
+                }
+                g->record.actions.erase(g->record.actions.begin() + n, g->record.actions.end());
+                return state_json(*g).dump();
+              }));
+}
+
+void bs_game_free(BsGame* g) { delete g; }
+
+const char* bs_last_error(void) { return g_last_error.c_str(); }
+
+}  // extern "C"

@@ -1,0 +1,65 @@
+/* The engine, the rules and the AI behind a C API that passes JSON text:
+ * the facade of the browser version (docs/web.md, "The C API"). It is
+ * compiled natively (library breakshot_web_api) and to wasm
+ * (web/CMakeLists.txt); both give the same bytes for the same calls
+ * (web/tests/identity.mjs).
+ *
+ * Every function takes and returns UTF-8 JSON text. A returned
+ * `const char*` is owned by the handle and stays valid until the next
+ * call on the same handle (bs_version's forever; bs_last_error's until
+ * the next failing *_new call). bs_simulate's `char*` belongs to the
+ * caller, who releases it with bs_free. Nothing throws across this
+ * boundary: a bad input or a failure is answered with
+ * {"error": "<what is wrong, naming the field>"}. Handles are not
+ * thread-safe; distinct handles are independent (no shared state but
+ * bs_last_error's buffer, which is per thread).
+ */
+#ifndef BREAKSHOT_WEB_API_HPP
+#define BREAKSHOT_WEB_API_HPP
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct BsPlayback BsPlayback;
+typedef struct BsGame BsGame;
+
+/* {"version": "...", "levels": [...], "budgets": {...}} */
+const char* bs_version(void);
+
+/* The result file of a scenario (shared/contract/scenario-format.md),
+ * exactly as `breakshot simulate` writes it, or {"error"}. Release the
+ * text with bs_free. */
+char* bs_simulate(const char* scenario_json);
+void bs_free(char* p);
+
+/* Playback: the exact states of a scenario at frame times. NULL on error
+ * (see bs_last_error). */
+BsPlayback* bs_playback_new(const char* scenario_json);
+const char* bs_playback_frame(BsPlayback* pb, double t);
+const char* bs_playback_events(BsPlayback* pb, int from);
+void bs_playback_free(BsPlayback* pb);
+
+/* Games between two seats, each "human" or an AI level name. */
+BsGame* bs_game_new(const char* config_json);
+BsGame* bs_game_from_link(const char* link);
+const char* bs_game_table(BsGame* g);
+const char* bs_game_state(BsGame* g);
+const char* bs_game_check_placement(BsGame* g, double x, double y);
+const char* bs_game_act(BsGame* g, const char* action_json);
+const char* bs_game_ai_action(BsGame* g, const char* level_or_null);
+BsPlayback* bs_game_shot_playback(BsGame* g, int index);
+const char* bs_game_link(BsGame* g);
+const char* bs_game_record(BsGame* g);
+const char* bs_game_undo_to(BsGame* g, int n);
+void bs_game_free(BsGame* g);
+
+/* {"error": "..."} of the last *_new call (or bs_game_from_link,
+ * bs_game_shot_playback) that returned NULL. */
+const char* bs_last_error(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* BREAKSHOT_WEB_API_HPP */

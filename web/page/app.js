@@ -1,0 +1,196 @@
+// The page shell: loads the engine, switches between the Game and Lab
+// tabs, routes the URL fragment (#game=<link>[&shot=k], #lab) and exposes
+// the test hooks (window.breakshot, docs/web.md).
+
+import { GameUI } from './game.js';
+
+const $ = (id) => document.getElementById(id);
+
+let engine = null;
+let ui = null;
+let labMounted = false;
+let labLoading = null;
+let seedCounter = 0;
+
+function setError(text) {
+  const el = $('status-error');
+  if (!el) return;
+  el.textContent = text;
+  el.hidden = false;
+}
+
+/** The fragment as key/value pairs: "#game=v1.abc&shot=3". */
+function parseFragment() {
+  const h = location.hash.replace(/^#/, '');
+  const out = {};
+  if (!h) return out;
+  for (const part of h.split('&')) {
+    const i = part.indexOf('=');
+    if (i < 0) out[decodeURIComponent(part)] = '';
+    else out[decodeURIComponent(part.slice(0, i))] = decodeURIComponent(part.slice(i + 1));
+  }
+  return out;
+}
+
+function selectTab(name) {
+  const game = name !== 'lab';
+  $('tab-game').setAttribute('aria-selected', String(game));
+  $('tab-lab').setAttribute('aria-selected', String(!game));
+  $('game').hidden = !game;
+  const lab = $('lab');
+  if (lab) lab.hidden = game;
+  if (game) {
+    if (ui) ui.layout();
+  } else {
+    openLab();
+  }
+}
+
+function openLab() {
+  let lab = $('lab');
+  if (!lab) {
+    lab = document.createElement('section');
+    lab.id = 'lab';
+    lab.className = 'view';
+    $('views').appendChild(lab);
+  }
+  lab.hidden = false;
+  if (labMounted || labLoading) return;
+  if (!engine) {
+    lab.textContent = 'The engine is still loading…';
+    return;
+  }
+  lab.textContent = 'Loading the lab…';
+  labLoading = import('./lab.js')
+    .then((mod) => {
+      lab.textContent = '';
+      if (typeof mod.mountLab !== 'function') throw new Error('lab.js has no mountLab');
+      mod.mountLab(lab, engine);
+      labMounted = true;
+    })
+    .catch((e) => {
+      lab.textContent = '';
+      const p = document.createElement('p');
+      p.className = 'lab-missing';
+      p.textContent = `The lab is not available: ${e && e.message ? e.message : e}`;
+      lab.appendChild(p);
+    })
+    .finally(() => { labLoading = null; });
+}
+
+function formConfig() {
+  const opponent = $('opponent').value;
+  let seed = $('seed').value.trim();
+  if (!/^\d{1,19}$/.test(seed)) {
+    // the clock and a counter, at new-game time only; the link keeps it
+    seedCounter += 1;
+    seed = String(Date.now() * 16 + (seedCounter % 16));
+  }
+  return {
+    game: $('game-type').value,
+    table: $('table-size').value,
+    seed,
+    breaker: Number($('breaker').value),
+    players: ['human', opponent === 'friend' ? 'human' : opponent],
+  };
+}
+
+function startFromForm() {
+  if (!ui) return;
+  const cfg = formConfig();
+  if (ui.newGame(cfg)) {
+    // a fresh game has no link in the address bar until it is shared
+    if (location.hash.startsWith('#game=')) {
+      try { history.replaceState(null, '', location.pathname + location.search); } catch (e) { /* ignore */ }
+    }
+  }
+}
+
+function route() {
+  const f = parseFragment();
+  if ('lab' in f) {
+    selectTab('lab');
+    return 'lab';
+  }
+  if (f.game) {
+    selectTab('game');
+    let shot = null;
+    if (f.shot != null && /^\d+$/.test(f.shot)) shot = Number(f.shot);
+    const why = ui.openLink(f.game, shot);
+    if (why !== true) {
+      // a broken link: keep (or start) a game and say what is wrong
+      if (!ui.g) startFromForm();
+      ui.showError(`Cannot open the link: ${why}`);
+    }
+    syncForm();
+    return 'game';
+  }
+  return false;
+}
+
+function syncForm() {
+  if (!ui || !ui.st) return;
+  const st = ui.st;
+  $('game-type').value = st.game;
+  if (st.players && st.players[1]) $('opponent').value = st.players[1] === 'human' ? 'friend' : st.players[1];
+  if (ui.table) {
+    const size = Math.abs(ui.table.length - 2.54) < 0.01 ? '9ft' : Math.abs(ui.table.length - 2.34) < 0.01 ? '8ft' : '7ft';
+    $('table-size').value = size;
+  }
+}
+
+async function main() {
+  $('tab-game').addEventListener('click', () => selectTab('game'));
+  $('tab-lab').addEventListener('click', () => selectTab('lab'));
+  $('new-game').addEventListener('click', () => {
+    selectTab('game');
+    const box = $('new-game-box');
+    box.open = true;
+    box.scrollIntoView({ block: 'nearest' });
+    $('game-type').focus({ preventScroll: true });
+  });
+  $('new-game-form').addEventListener('submit', (ev) => {
+    ev.preventDefault();
+    startFromForm();
+  });
+  window.addEventListener('unhandledrejection', (ev) => {
+    ev.preventDefault();
+    setError(`Error: ${ev.reason && ev.reason.message ? ev.reason.message : ev.reason}`);
+  });
+
+  let loadEngine;
+  try {
+    ({ loadEngine } = await import('./engine.js'));
+    engine = await loadEngine();
+  } catch (e) {
+    $('status-turn').textContent = 'The engine did not load.';
+    setError(e && e.message ? e.message : String(e));
+    return;
+  }
+  try {
+    const v = engine.version();
+    $('version').textContent = `engine ${typeof v === 'string' ? v : (v && v.version) || ''}`;
+  } catch (e) { /* no version */ }
+  ui = new GameUI(engine);
+
+  window.breakshot = {
+    engine,
+    get game() { return ui.g; },
+    state: () => ui.state(),
+    act: (action) => ui.act(action),
+    busy: () => ui.busy(),
+    ui,
+    toClient: (x, y) => ui.view.toClient(x, y),
+    aim: () => ({ ...ui.aim }),
+    link: () => ui.link(),
+  };
+
+  window.addEventListener('hashchange', () => { route(); });
+  const where = route();
+  if (where !== 'game') {
+    if (!where) selectTab('game');
+    startFromForm();  // the game tab always has a game, even when the lab opens first
+  }
+}
+
+main().catch((e) => setError(e && e.message ? e.message : String(e)));

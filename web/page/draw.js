@@ -1,0 +1,656 @@
+// Drawing the pool table and the balls on a canvas, to scale from the
+// engine's table geometry (E.newGame(...).table()). Pure drawing: no
+// physics. Table coordinates: metres, x along the length, y along the
+// width, origin at the lower-left corner of the playing surface at the
+// cushion noses. On screen x runs to the right and y up, so angles
+// counter-clockwise from +x look counter-clockwise.
+
+const FRAME = 0.165;      // cushion nose to the outer edge of the wooden rail (m)
+const CUSHION = 0.048;    // cushion nose to the wood (m)
+const DIAMOND = 0.011;    // half diagonal of a rail diamond (m)
+
+export const BALL_COLOURS = [
+  '#f6f3ea',  // 0 cue ball
+  '#f2bd14',  // 1 yellow
+  '#1d49b0',  // 2 blue
+  '#d2242b',  // 3 red
+  '#54318f',  // 4 purple
+  '#f06a1c',  // 5 orange
+  '#12804a',  // 6 green
+  '#7d1d24',  // 7 maroon
+  '#151515',  // 8 black
+];
+
+export function ballColour(n) {
+  if (n <= 8) return BALL_COLOURS[n];
+  return BALL_COLOURS[n - 8];
+}
+
+/** Draws ball n at (cx, cy) in the current canvas units with radius r. */
+export function drawBall(ctx, n, cx, cy, r, opts = {}) {
+  const alpha = opts.alpha ?? 1;
+  ctx.save();
+  ctx.globalAlpha = alpha;
+  if (opts.shadow !== false) {
+    ctx.fillStyle = 'rgba(0, 0, 0, 0.32)';
+    ctx.beginPath();
+    ctx.ellipse(cx + r * 0.16, cy + r * 0.2, r * 1.02, r * 0.98, 0, 0, Math.PI * 2);
+    ctx.fill();
+  }
+  ctx.beginPath();
+  ctx.arc(cx, cy, r, 0, Math.PI * 2);
+  ctx.save();
+  ctx.clip();
+  const stripe = n >= 9;
+  ctx.fillStyle = stripe ? '#f6f3ea' : (opts.colour || ballColour(n));
+  ctx.fillRect(cx - r, cy - r, 2 * r, 2 * r);
+  if (stripe) {
+    ctx.fillStyle = ballColour(n);
+    ctx.fillRect(cx - r, cy - r * 0.56, 2 * r, r * 1.12);
+  }
+  if (n > 0) {
+    const nr = r * 0.5;
+    ctx.fillStyle = '#fbfaf5';
+    ctx.beginPath();
+    ctx.arc(cx, cy, nr, 0, Math.PI * 2);
+    ctx.fill();
+    if (r >= 5) {
+      ctx.fillStyle = '#111';
+      const size = r * (n >= 10 ? 0.58 : 0.66);
+      ctx.font = `700 ${size.toFixed(2)}px system-ui, -apple-system, "Segoe UI", Arial, sans-serif`;
+      ctx.textAlign = 'center';
+      ctx.textBaseline = 'middle';
+      ctx.fillText(String(n), cx, cy + size * 0.06);
+    }
+  }
+  // shading: a highlight up and to the left, darker toward the lower right
+  const g = ctx.createRadialGradient(cx - r * 0.38, cy - r * 0.42, r * 0.05, cx, cy, r * 1.05);
+  g.addColorStop(0, 'rgba(255, 255, 255, 0.55)');
+  g.addColorStop(0.25, 'rgba(255, 255, 255, 0.08)');
+  g.addColorStop(0.7, 'rgba(0, 0, 0, 0.0)');
+  g.addColorStop(1, 'rgba(0, 0, 0, 0.38)');
+  ctx.fillStyle = g;
+  ctx.fillRect(cx - r, cy - r, 2 * r, 2 * r);
+  ctx.restore();
+  if (opts.ring) {
+    ctx.strokeStyle = opts.ring;
+    ctx.lineWidth = Math.max(1.5, r * 0.16);
+    ctx.beginPath();
+    ctx.arc(cx, cy, r + ctx.lineWidth, 0, Math.PI * 2);
+    ctx.stroke();
+  }
+  ctx.restore();
+}
+
+/**
+ * Where a cue ball at `cue` sent along `phi` degrees first touches a ball
+ * of `balls` ([{n, x, y}], the cue ball excluded) or, failing that, where
+ * its centre reaches a cushion (the noses inset by R). Geometry for
+ * drawing the aim only.
+ */
+export function aimGeometry(table, cue, phi, balls, R) {
+  const rad = (phi * Math.PI) / 180;
+  const dx = Math.cos(rad);
+  const dy = Math.sin(rad);
+  let best = Infinity;
+  let hit = null;
+  for (const b of balls) {
+    const fx = cue.x - b.x;
+    const fy = cue.y - b.y;
+    const B = fx * dx + fy * dy;
+    const C = fx * fx + fy * fy - 4 * R * R;
+    const disc = B * B - C;
+    if (disc < 0) continue;
+    const t = -B - Math.sqrt(disc);
+    if (t > 1e-9 && t < best) {
+      best = t;
+      hit = b;
+    }
+  }
+  // the cushions, as a rectangle inset by R
+  let tw = Infinity;
+  let wallNormal = null;
+  const lo = [R, R];
+  const hi = [table.length - R, table.width - R];
+  if (dx > 1e-12) { const t = (hi[0] - cue.x) / dx; if (t < tw) { tw = t; wallNormal = [-1, 0]; } }
+  if (dx < -1e-12) { const t = (lo[0] - cue.x) / dx; if (t < tw) { tw = t; wallNormal = [1, 0]; } }
+  if (dy > 1e-12) { const t = (hi[1] - cue.y) / dy; if (t < tw) { tw = t; wallNormal = [0, -1]; } }
+  if (dy < -1e-12) { const t = (lo[1] - cue.y) / dy; if (t < tw) { tw = t; wallNormal = [0, 1]; } }
+  tw = Math.max(0, tw);
+  const out = { dir: { x: dx, y: dy }, hit: null };
+  if (hit && best <= tw + 1e-12) {
+    const gx = cue.x + best * dx;
+    const gy = cue.y + best * dy;
+    let nx = hit.x - gx;
+    let ny = hit.y - gy;
+    const nl = Math.hypot(nx, ny) || 1;
+    nx /= nl;
+    ny /= nl;
+    const cosCut = Math.max(0, Math.min(1, dx * nx + dy * ny));
+    // the cue ball leaves along the tangent line (stun shot)
+    let tx = dx - cosCut * nx;
+    let ty = dy - cosCut * ny;
+    const tl = Math.hypot(tx, ty);
+    if (tl > 1e-9) { tx /= tl; ty /= tl; } else { tx = 0; ty = 0; }
+    out.hit = hit;
+    out.ghost = { x: gx, y: gy };
+    out.objectDir = { x: nx, y: ny };
+    out.cueDir = { x: tx, y: ty };
+    out.cosCut = cosCut;
+    out.end = { x: gx, y: gy };
+  } else {
+    out.end = { x: cue.x + tw * dx, y: cue.y + tw * dy };
+    if (wallNormal) {
+      const d = dx * wallNormal[0] + dy * wallNormal[1];
+      out.bounce = { x: dx - 2 * d * wallNormal[0], y: dy - 2 * d * wallNormal[1] };
+    }
+  }
+  return out;
+}
+
+export class TableView {
+  constructor(canvas) {
+    this.canvas = canvas;
+    this.ctx = canvas.getContext('2d');
+    this.table = null;
+    this.cssW = 0;
+    this.cssH = 0;
+    this.dpr = 1;
+    this.scale = 1;
+    this.staticLayer = null;
+  }
+
+  setTable(table) {
+    this.table = table;
+    this.staticLayer = null;
+  }
+
+  /** Width over height of the whole table, rails included. */
+  aspect() {
+    const t = this.table;
+    if (!t) return 2;
+    return (t.length + 2 * FRAME) / (t.width + 2 * FRAME);
+  }
+
+  /** Sizes the canvas to fit in maxW x maxH CSS pixels, high-DPI aware. */
+  fit(maxW, maxH) {
+    const a = this.aspect();
+    let w = Math.max(200, maxW);
+    let h = w / a;
+    if (h > maxH && maxH > 120) {
+      h = maxH;
+      w = h * a;
+    }
+    w = Math.floor(w);
+    h = Math.floor(w / a);
+    const dpr = Math.min(3, window.devicePixelRatio || 1);
+    if (w === this.cssW && h === this.cssH && dpr === this.dpr) return false;
+    this.cssW = w;
+    this.cssH = h;
+    this.dpr = dpr;
+    this.canvas.style.width = `${w}px`;
+    this.canvas.style.height = `${h}px`;
+    this.canvas.width = Math.round(w * dpr);
+    this.canvas.height = Math.round(h * dpr);
+    this.scale = this.table ? w / (this.table.length + 2 * FRAME) : 1;
+    this.staticLayer = null;
+    return true;
+  }
+
+  /** Table coordinates (m) to CSS pixels within the canvas. */
+  sx(x) { return (x + FRAME) * this.scale; }
+  sy(y) { return (this.table.width + FRAME - y) * this.scale; }
+  px(m) { return m * this.scale; }
+
+  /** Client (pointer event) coordinates to table coordinates. */
+  toTable(clientX, clientY) {
+    const r = this.canvas.getBoundingClientRect();
+    // the canvas may be drawn at another size than cssW (CSS zoom, transforms)
+    const kx = r.width > 0 ? this.cssW / r.width : 1;
+    const ky = r.height > 0 ? this.cssH / r.height : 1;
+    const cx = (clientX - r.left) * kx;
+    const cy = (clientY - r.top) * ky;
+    return { x: cx / this.scale - FRAME, y: this.table.width + FRAME - cy / this.scale };
+  }
+
+  /** Table coordinates to client coordinates (for tests and overlays). */
+  toClient(x, y) {
+    const r = this.canvas.getBoundingClientRect();
+    const kx = this.cssW > 0 ? r.width / this.cssW : 1;
+    const ky = this.cssH > 0 ? r.height / this.cssH : 1;
+    return { x: r.left + this.sx(x) * kx, y: r.top + this.sy(y) * ky };
+  }
+
+  pathOutline(ctx) {
+    const o = this.table.outline;
+    ctx.beginPath();
+    for (let i = 0; i < o.length; i++) {
+      const X = this.sx(o[i][0]);
+      const Y = this.sy(o[i][1]);
+      if (i === 0) ctx.moveTo(X, Y); else ctx.lineTo(X, Y);
+    }
+    ctx.closePath();
+  }
+
+  buildStatic() {
+    const t = this.table;
+    const layer = document.createElement('canvas');
+    layer.width = this.canvas.width;
+    layer.height = this.canvas.height;
+    const ctx = layer.getContext('2d');
+    ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
+    const L = t.length;
+    const W = t.width;
+    const s = this.scale;
+
+    // wooden rails
+    const x0 = this.sx(-FRAME);
+    const y0 = this.sy(W + FRAME);
+    const fw = this.px(L + 2 * FRAME);
+    const fh = this.px(W + 2 * FRAME);
+    roundRect(ctx, x0, y0, fw, fh, this.px(0.045));
+    const wood = ctx.createLinearGradient(0, y0, 0, y0 + fh);
+    wood.addColorStop(0, '#7a4424');
+    wood.addColorStop(0.5, '#5e3119');
+    wood.addColorStop(1, '#4a2512');
+    ctx.fillStyle = wood;
+    ctx.fill();
+    // grain
+    ctx.save();
+    ctx.clip();
+    ctx.lineWidth = Math.max(0.5, s * 0.0015);
+    for (let i = 0; i < 26; i++) {
+      const f = (i * 0.6180339887) % 1;
+      ctx.strokeStyle = `rgba(${i % 2 ? '255, 220, 170' : '30, 10, 0'}, ${0.05 + 0.05 * f})`;
+      const yy = this.sy(W + FRAME) + fh * ((i + 0.5) / 26);
+      ctx.beginPath();
+      ctx.moveTo(x0, yy);
+      ctx.bezierCurveTo(x0 + fw * 0.3, yy + s * 0.004 * (f - 0.5), x0 + fw * 0.7, yy - s * 0.006 * (f - 0.5), x0 + fw, yy);
+      ctx.stroke();
+    }
+    ctx.restore();
+    // bevel of the outer edge and of the rail cap
+    ctx.strokeStyle = 'rgba(255, 225, 190, 0.18)';
+    ctx.lineWidth = Math.max(1, s * 0.003);
+    roundRect(ctx, x0 + ctx.lineWidth, y0 + ctx.lineWidth, fw - 2 * ctx.lineWidth, fh - 2 * ctx.lineWidth, this.px(0.04));
+    ctx.stroke();
+
+    // pocket liners on the wood
+    for (const p of t.pockets) {
+      ctx.fillStyle = '#241b16';
+      ctx.beginPath();
+      ctx.arc(this.sx(p.centre[0]), this.sy(p.centre[1]), this.px(p.radius + 0.016), 0, Math.PI * 2);
+      ctx.fill();
+    }
+
+    // cushions: the band out to CUSHION beyond the noses, cut by the cloth
+    ctx.fillStyle = '#15603c';
+    ctx.fillRect(this.sx(-CUSHION), this.sy(W + CUSHION), this.px(L + 2 * CUSHION), this.px(W + 2 * CUSHION));
+    ctx.strokeStyle = 'rgba(0, 0, 0, 0.45)';
+    ctx.lineWidth = Math.max(1, s * 0.003);
+    ctx.strokeRect(this.sx(-CUSHION), this.sy(W + CUSHION), this.px(L + 2 * CUSHION), this.px(W + 2 * CUSHION));
+
+    // the cloth: the playing surface with its pocket mouths (the outline)
+    this.pathOutline(ctx);
+    const cloth = ctx.createRadialGradient(this.sx(L / 2), this.sy(W / 2), this.px(0.1),
+      this.sx(L / 2), this.sy(W / 2), this.px(L * 0.62));
+    cloth.addColorStop(0, '#22925c');
+    cloth.addColorStop(1, '#1a7a4b');
+    ctx.fillStyle = cloth;
+    ctx.fill();
+    // the noses' shadow on the cloth
+    ctx.save();
+    this.pathOutline(ctx);
+    ctx.clip();
+    ctx.strokeStyle = 'rgba(0, 0, 0, 0.28)';
+    ctx.lineWidth = Math.max(2, s * 0.012);
+    this.pathOutline(ctx);
+    ctx.stroke();
+    ctx.restore();
+    // the cushion noses themselves, from the wall pieces
+    ctx.strokeStyle = 'rgba(170, 235, 200, 0.35)';
+    ctx.lineWidth = Math.max(0.75, s * 0.0022);
+    ctx.lineCap = 'round';
+    for (const w of t.walls) {
+      ctx.beginPath();
+      if (w.kind === 'segment') {
+        ctx.moveTo(this.sx(w.a[0]), this.sy(w.a[1]));
+        ctx.lineTo(this.sx(w.b[0]), this.sy(w.b[1]));
+      } else if (w.kind === 'arc' && w.radius > 0) {
+        // from direction b counter-clockwise to normal (table coordinates);
+        // the screen flips y, so angles change sign
+        const a0 = Math.atan2(w.b[1], w.b[0]);
+        const n = w.normal || w.b;
+        const a1 = Math.atan2(n[1], n[0]);
+        ctx.arc(this.sx(w.a[0]), this.sy(w.a[1]), this.px(w.radius), -a0, -a1, true);
+      } else {
+        continue;
+      }
+      ctx.stroke();
+    }
+
+    // pockets: the holes
+    for (const p of t.pockets) {
+      const cx = this.sx(p.centre[0]);
+      const cy = this.sy(p.centre[1]);
+      const r = this.px(p.radius);
+      const g = ctx.createRadialGradient(cx, cy, r * 0.2, cx, cy, r);
+      g.addColorStop(0, '#000');
+      g.addColorStop(0.8, '#070707');
+      g.addColorStop(1, '#1c1c1c');
+      ctx.fillStyle = g;
+      ctx.beginPath();
+      ctx.arc(cx, cy, r, 0, Math.PI * 2);
+      ctx.fill();
+    }
+
+    // diamonds: 1/8 of the length on the long rails, 1/4 of the width on the short
+    const d = CUSHION + (FRAME - CUSHION) * 0.5;
+    const spots = [];
+    for (let k = 1; k <= 7; k++) {
+      if (k === 4) continue;
+      spots.push([(L * k) / 8, -d], [(L * k) / 8, W + d]);
+    }
+    for (let k = 1; k <= 3; k++) spots.push([-d, (W * k) / 4], [L + d, (W * k) / 4]);
+    for (const [x, y] of spots) {
+      const cx = this.sx(x);
+      const cy = this.sy(y);
+      const r = Math.max(2, this.px(DIAMOND));
+      ctx.beginPath();
+      ctx.moveTo(cx, cy - r);
+      ctx.lineTo(cx + r * 0.62, cy);
+      ctx.lineTo(cx, cy + r);
+      ctx.lineTo(cx - r * 0.62, cy);
+      ctx.closePath();
+      ctx.fillStyle = '#efe8d6';
+      ctx.fill();
+      ctx.strokeStyle = 'rgba(0, 0, 0, 0.35)';
+      ctx.lineWidth = 0.75;
+      ctx.stroke();
+    }
+
+    // head string and spots, faint
+    const hs = t.head_string ?? L / 4;
+    ctx.strokeStyle = 'rgba(255, 255, 255, 0.16)';
+    ctx.lineWidth = Math.max(1, s * 0.002);
+    ctx.setLineDash([this.px(0.02), this.px(0.016)]);
+    ctx.beginPath();
+    ctx.moveTo(this.sx(hs), this.sy(0));
+    ctx.lineTo(this.sx(hs), this.sy(W));
+    ctx.stroke();
+    ctx.setLineDash([]);
+    const spot = (p, r) => {
+      ctx.fillStyle = 'rgba(255, 255, 255, 0.32)';
+      ctx.beginPath();
+      ctx.arc(this.sx(p[0]), this.sy(p[1]), Math.max(1.5, this.px(r)), 0, Math.PI * 2);
+      ctx.fill();
+    };
+    if (t.foot_spot) spot(t.foot_spot, 0.006);
+    if (t.head_spot) spot(t.head_spot, 0.004);
+    this.staticLayer = layer;
+  }
+
+  /**
+   * Draws a frame. scene: {
+   *   balls: [{n, x, y, alpha?}], R (ball radius, m),
+   *   kitchen: bool (shade the area behind the head string),
+   *   aim: {cue: {x, y}, phi, geo (aimGeometry), power (0..1), stick: bool} | null,
+   *   call: {ball, pocket, auto} | null, place: {x, y, ok, reason} | null,
+   *   banner: text | null }
+   */
+  render(scene) {
+    if (!this.table || this.cssW === 0) return;
+    if (!this.staticLayer) this.buildStatic();
+    const ctx = this.ctx;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.clearRect(0, 0, this.canvas.width, this.canvas.height);
+    ctx.drawImage(this.staticLayer, 0, 0);
+    ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
+    const t = this.table;
+    const R = scene.R || t.ball_radius || 0.028575;
+    const rpx = this.px(R);
+
+    if (scene.kitchen) {
+      const hs = t.head_string ?? t.length / 4;
+      ctx.fillStyle = 'rgba(255, 255, 255, 0.06)';
+      ctx.fillRect(this.sx(0), this.sy(t.width), this.px(hs), this.px(t.width));
+      ctx.strokeStyle = 'rgba(255, 255, 255, 0.35)';
+      ctx.lineWidth = 1.2;
+      ctx.beginPath();
+      ctx.moveTo(this.sx(hs), this.sy(0));
+      ctx.lineTo(this.sx(hs), this.sy(t.width));
+      ctx.stroke();
+    }
+
+    // called pocket
+    if (scene.call && scene.call.pocket != null && t.pockets[scene.call.pocket]) {
+      const p = t.pockets[scene.call.pocket];
+      ctx.save();
+      ctx.strokeStyle = scene.call.pocketAuto ? 'rgba(255, 214, 90, 0.55)' : '#ffd65a';
+      ctx.lineWidth = scene.call.pocketAuto ? 2 : 3;
+      ctx.setLineDash(scene.call.pocketAuto ? [5, 4] : []);
+      ctx.beginPath();
+      ctx.arc(this.sx(p.centre[0]), this.sy(p.centre[1]), this.px(p.radius) + 4, 0, Math.PI * 2);
+      ctx.stroke();
+      ctx.restore();
+    }
+
+    const aim = scene.aim;
+    if (aim && aim.geo) this.drawAim(aim, rpx);
+
+    // balls
+    const callBall = scene.call ? scene.call.ball : null;
+    for (const b of scene.balls) {
+      if (scene.place && b.n === 0) continue;
+      drawBall(ctx, b.n, this.sx(b.x), this.sy(b.y), rpx * (b.scale ?? 1), {
+        alpha: b.alpha,
+        ring: callBall != null && b.n === callBall ? (scene.call.ballAuto ? 'rgba(255, 214, 90, 0.6)' : '#ffd65a') : null,
+      });
+    }
+
+    if (scene.place) {
+      const p = scene.place;
+      const cx = this.sx(p.x);
+      const cy = this.sy(p.y);
+      drawBall(ctx, 0, cx, cy, rpx, { alpha: p.ok ? 1 : 0.85 });
+      ctx.strokeStyle = p.ok ? 'rgba(255, 255, 255, 0.7)' : '#ff4d4d';
+      ctx.lineWidth = 2;
+      ctx.beginPath();
+      ctx.arc(cx, cy, rpx + 3, 0, Math.PI * 2);
+      ctx.stroke();
+      if (!p.ok) {
+        ctx.fillStyle = 'rgba(255, 60, 60, 0.35)';
+        ctx.beginPath();
+        ctx.arc(cx, cy, rpx, 0, Math.PI * 2);
+        ctx.fill();
+        if (p.reason) this.label(p.reason, cx, cy - rpx - 10, '#ffb3b3');
+      }
+    }
+
+    if (aim && aim.stick) this.drawStick(aim, rpx);
+
+    if (scene.banner) {
+      ctx.save();
+      const fs = Math.max(16, Math.min(36, this.cssW / 28));
+      ctx.font = `700 ${fs}px system-ui, -apple-system, "Segoe UI", Arial, sans-serif`;
+      ctx.textAlign = 'center';
+      ctx.textBaseline = 'middle';
+      const w = ctx.measureText(scene.banner).width + fs * 1.4;
+      const cx = this.cssW / 2;
+      const cy = this.cssH / 2;
+      ctx.fillStyle = 'rgba(10, 14, 18, 0.72)';
+      roundRect(ctx, cx - w / 2, cy - fs * 0.95, w, fs * 1.9, fs * 0.4);
+      ctx.fill();
+      ctx.fillStyle = '#ffe9a8';
+      ctx.fillText(scene.banner, cx, cy + 1);
+      ctx.restore();
+    }
+  }
+
+  label(text, cx, cy, colour) {
+    const ctx = this.ctx;
+    ctx.save();
+    ctx.font = '600 13px system-ui, -apple-system, "Segoe UI", Arial, sans-serif';
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'middle';
+    const w = ctx.measureText(text).width + 12;
+    let x = Math.max(w / 2 + 2, Math.min(this.cssW - w / 2 - 2, cx));
+    let y = Math.max(12, cy);
+    ctx.fillStyle = 'rgba(15, 10, 10, 0.82)';
+    roundRect(ctx, x - w / 2, y - 10, w, 20, 5);
+    ctx.fill();
+    ctx.fillStyle = colour;
+    ctx.fillText(text, x, y + 0.5);
+    ctx.restore();
+  }
+
+  drawAim(aim, rpx) {
+    const ctx = this.ctx;
+    const geo = aim.geo;
+    const c = aim.cue;
+    ctx.save();
+    this.pathOutline(ctx);
+    ctx.clip();
+    ctx.lineCap = 'round';
+    ctx.strokeStyle = 'rgba(255, 255, 255, 0.55)';
+    ctx.lineWidth = 1.4;
+    ctx.setLineDash([6, 5]);
+    ctx.beginPath();
+    ctx.moveTo(this.sx(c.x), this.sy(c.y));
+    ctx.lineTo(this.sx(geo.end.x), this.sy(geo.end.y));
+    ctx.stroke();
+    ctx.setLineDash([]);
+    if (geo.hit) {
+      const gx = this.sx(geo.ghost.x);
+      const gy = this.sy(geo.ghost.y);
+      ctx.strokeStyle = 'rgba(255, 255, 255, 0.8)';
+      ctx.lineWidth = 1.4;
+      ctx.beginPath();
+      ctx.arc(gx, gy, rpx, 0, Math.PI * 2);
+      ctx.stroke();
+      ctx.fillStyle = 'rgba(255, 255, 255, 0.12)';
+      ctx.fill();
+      // object ball's rough direction, longer for a fuller hit
+      const ox = this.sx(geo.hit.x);
+      const oy = this.sy(geo.hit.y);
+      const len = this.px(0.08 + 0.42 * geo.cosCut);
+      ctx.strokeStyle = 'rgba(255, 220, 110, 0.9)';
+      ctx.lineWidth = 2;
+      arrow(ctx, ox, oy, ox + geo.objectDir.x * len, oy - geo.objectDir.y * len, 7);
+      // cue ball's tangent line
+      if (geo.cueDir.x || geo.cueDir.y) {
+        const clen = this.px(0.05 + 0.25 * Math.sqrt(Math.max(0, 1 - geo.cosCut * geo.cosCut)));
+        ctx.strokeStyle = 'rgba(200, 230, 255, 0.55)';
+        ctx.lineWidth = 1.3;
+        ctx.setLineDash([3, 4]);
+        ctx.beginPath();
+        ctx.moveTo(gx, gy);
+        ctx.lineTo(gx + geo.cueDir.x * clen, gy - geo.cueDir.y * clen);
+        ctx.stroke();
+        ctx.setLineDash([]);
+      }
+    } else if (geo.bounce) {
+      const ex = this.sx(geo.end.x);
+      const ey = this.sy(geo.end.y);
+      const len = this.px(0.25);
+      ctx.strokeStyle = 'rgba(255, 255, 255, 0.25)';
+      ctx.lineWidth = 1.2;
+      ctx.setLineDash([4, 5]);
+      ctx.beginPath();
+      ctx.moveTo(ex, ey);
+      ctx.lineTo(ex + geo.bounce.x * len, ey - geo.bounce.y * len);
+      ctx.stroke();
+      ctx.setLineDash([]);
+      ctx.strokeStyle = 'rgba(255, 255, 255, 0.55)';
+      ctx.beginPath();
+      ctx.arc(ex, ey, rpx, 0, Math.PI * 2);
+      ctx.stroke();
+    }
+    ctx.restore();
+  }
+
+  drawStick(aim, rpx) {
+    const ctx = this.ctx;
+    const c = aim.cue;
+    const rad = (aim.phi * Math.PI) / 180;
+    // screen direction of the shot (y flipped)
+    const ux = Math.cos(rad);
+    const uy = -Math.sin(rad);
+    const vx = -uy;
+    const vy = ux;
+    const cx = this.sx(c.x);
+    const cy = this.sy(c.y);
+    const gap = rpx + this.px(0.012 + 0.13 * (aim.power ?? 0.3));
+    const len = this.px(1.45);
+    const tipW = this.px(0.0065);
+    const buttW = this.px(0.015);
+    // the stick lies on the side opposite the shot: p(s) = c - u (gap + s)
+    const at = (s, w) => [cx - ux * (gap + s) + vx * w, cy - uy * (gap + s) + vy * w];
+    const width = (s) => tipW + (buttW - tipW) * (s / len);
+    const quad = (s0, s1, fill) => {
+      const a = at(s0, width(s0));
+      const b = at(s1, width(s1));
+      const c2 = at(s1, -width(s1));
+      const d = at(s0, -width(s0));
+      ctx.beginPath();
+      ctx.moveTo(a[0], a[1]);
+      ctx.lineTo(b[0], b[1]);
+      ctx.lineTo(c2[0], c2[1]);
+      ctx.lineTo(d[0], d[1]);
+      ctx.closePath();
+      ctx.fillStyle = fill;
+      ctx.fill();
+    };
+    ctx.save();
+    // shadow
+    ctx.translate(this.px(0.01), this.px(0.014));
+    quad(0, len, 'rgba(0, 0, 0, 0.28)');
+    ctx.restore();
+    ctx.save();
+    const tip = this.px(0.008);
+    const ferrule = this.px(0.022);
+    const shaftEnd = len * 0.52;
+    const wrapEnd = len * 0.86;
+    quad(0, tip, '#3b78c2');
+    quad(tip, tip + ferrule, '#f3efe6');
+    const sa = at(tip + ferrule, 0);
+    const sb = at(shaftEnd, 0);
+    const maple = ctx.createLinearGradient(sa[0], sa[1], sb[0], sb[1]);
+    maple.addColorStop(0, '#efdcb3');
+    maple.addColorStop(1, '#d9b57a');
+    quad(tip + ferrule, shaftEnd, maple);
+    quad(shaftEnd, shaftEnd + this.px(0.012), '#1d1d1d');
+    quad(shaftEnd + this.px(0.012), wrapEnd, '#5a2d16');
+    quad(wrapEnd, len - this.px(0.03), '#262626');
+    quad(len - this.px(0.03), len, '#111');
+    ctx.restore();
+  }
+}
+
+function roundRect(ctx, x, y, w, h, r) {
+  ctx.beginPath();
+  ctx.moveTo(x + r, y);
+  ctx.lineTo(x + w - r, y);
+  ctx.quadraticCurveTo(x + w, y, x + w, y + r);
+  ctx.lineTo(x + w, y + h - r);
+  ctx.quadraticCurveTo(x + w, y + h, x + w - r, y + h);
+  ctx.lineTo(x + r, y + h);
+  ctx.quadraticCurveTo(x, y + h, x, y + h - r);
+  ctx.lineTo(x, y + r);
+  ctx.quadraticCurveTo(x, y, x + r, y);
+  ctx.closePath();
+}
+
+function arrow(ctx, x0, y0, x1, y1, head) {
+  ctx.beginPath();
+  ctx.moveTo(x0, y0);
+  ctx.lineTo(x1, y1);
+  ctx.stroke();
+  const a = Math.atan2(y1 - y0, x1 - x0);
+  ctx.beginPath();
+  ctx.moveTo(x1, y1);
+  ctx.lineTo(x1 - head * Math.cos(a - 0.45), y1 - head * Math.sin(a - 0.45));
+  ctx.moveTo(x1, y1);
+  ctx.lineTo(x1 - head * Math.cos(a + 0.45), y1 - head * Math.sin(a + 0.45));
+  ctx.stroke();
+}

@@ -1,0 +1,233 @@
+// The engine in JavaScript: the wasm build of the C++ engine, rules and AI
+// (build/web/dist/breakshot.js) behind the API of docs/web.md ("The JS
+// API"). The only file that talks to the wasm module.
+//
+//   import { loadEngine } from './engine.js';
+//   const E = await loadEngine();
+//
+// breakshot.js is built as an ES module (-sEXPORT_ES6=1, -sSINGLE_FILE=1:
+// the wasm is inside it, -sENVIRONMENT=web,worker): the static import
+// below works the same in a page (<script type="module">), in a module
+// worker (new Worker(url, {type: 'module'})) and in node 20 (which has
+// the web globals it needs), and needs no fetch of a second file.
+//
+// Every method parses the facade's JSON reply and throws an Error with
+// the reply's "error" text. Strings go to the wasm heap through malloc
+// (not the stack: a scenario can be megabytes). Numbers go as JSON text:
+// exact both ways (shortest round-trip digits on each side), and -0 is
+// written as -0.0 so that its sign survives (JSON.stringify drops it).
+
+import createBreakshot from './breakshot.js';
+
+const NEG_ZERO = '__breakshot_negative_zero__';
+
+/** JSON text of a value, keeping -0 (a string is passed as it is). */
+export function toJson(value) {
+  if (typeof value === 'string') return value;
+  const text = JSON.stringify(value, (key, v) => (typeof v === 'number' && Object.is(v, -0) ? NEG_ZERO : v));
+  if (text === undefined) throw new Error('cannot write this value as JSON');
+  return text.includes(NEG_ZERO) ? text.split(`"${NEG_ZERO}"`).join('-0.0') : text;
+}
+
+function parse(text) {
+  let reply;
+  try {
+    reply = JSON.parse(text);
+  } catch (e) {
+    throw new Error(`the engine's reply is not JSON: ${String(text).slice(0, 200)}`);
+  }
+  if (reply !== null && typeof reply === 'object' && !Array.isArray(reply) && typeof reply.error === 'string') {
+    const err = new Error(reply.error);
+    err.reply = reply;
+    throw err;
+  }
+  return reply;
+}
+
+/** The raw facade: the C functions with strings in and out, no parsing. */
+function rawApi(M) {
+  const c = (name, ret, args) => M.cwrap(name, ret, args);
+  const fn = {
+    version: c('bs_version', 'number', []),
+    simulate: c('bs_simulate', 'number', ['number']),
+    free: c('bs_free', null, ['number']),
+    playbackNew: c('bs_playback_new', 'number', ['number']),
+    frame: c('bs_playback_frame', 'number', ['number', 'number']),
+    events: c('bs_playback_events', 'number', ['number', 'number']),
+    playbackFree: c('bs_playback_free', null, ['number']),
+    gameNew: c('bs_game_new', 'number', ['number']),
+    gameFromLink: c('bs_game_from_link', 'number', ['number']),
+    table: c('bs_game_table', 'number', ['number']),
+    state: c('bs_game_state', 'number', ['number']),
+    checkPlacement: c('bs_game_check_placement', 'number', ['number', 'number', 'number']),
+    act: c('bs_game_act', 'number', ['number', 'number']),
+    aiAction: c('bs_game_ai_action', 'number', ['number', 'number']),
+    shotPlayback: c('bs_game_shot_playback', 'number', ['number', 'number']),
+    link: c('bs_game_link', 'number', ['number']),
+    record: c('bs_game_record', 'number', ['number']),
+    undoTo: c('bs_game_undo_to', 'number', ['number', 'number']),
+    gameFree: c('bs_game_free', null, ['number']),
+    lastError: c('bs_last_error', 'number', []),
+    malloc: c('malloc', 'number', ['number']),
+    mfree: c('free', null, ['number']),
+  };
+  const str = (ptr) => M.UTF8ToString(ptr);
+  // Calls f with a C copy of each string argument (null stays NULL).
+  const withStrings = (strings, f) => {
+    const ptrs = strings.map((s) => {
+      if (s === null || s === undefined) return 0;
+      const text = String(s);
+      const n = M.lengthBytesUTF8(text) + 1;
+      const p = fn.malloc(n);
+      if (!p) throw new Error('out of memory in the engine');
+      M.stringToUTF8(text, p, n);
+      return p;
+    });
+    try {
+      return f(...ptrs);
+    } finally {
+      for (const p of ptrs) if (p) fn.mfree(p);
+    }
+  };
+  return {
+    version: () => str(fn.version()),
+    simulate: (text) =>
+      withStrings([text], (p) => {
+        const out = fn.simulate(p);
+        if (!out) throw new Error('out of memory in the engine');
+        try {
+          return str(out);
+        } finally {
+          fn.free(out);
+        }
+      }),
+    playbackNew: (text) => withStrings([text], (p) => fn.playbackNew(p)),
+    frame: (h, t) => str(fn.frame(h, t)),
+    events: (h, from) => str(fn.events(h, from)),
+    playbackFree: (h) => fn.playbackFree(h),
+    gameNew: (text) => withStrings([text], (p) => fn.gameNew(p)),
+    gameFromLink: (text) => withStrings([text], (p) => fn.gameFromLink(p)),
+    table: (h) => str(fn.table(h)),
+    state: (h) => str(fn.state(h)),
+    checkPlacement: (h, x, y) => str(fn.checkPlacement(h, x, y)),
+    act: (h, text) => withStrings([text], (p) => str(fn.act(h, p))),
+    aiAction: (h, level) => withStrings([level], (p) => str(fn.aiAction(h, p))),
+    shotPlayback: (h, index) => fn.shotPlayback(h, index),
+    link: (h) => str(fn.link(h)),
+    record: (h) => str(fn.record(h)),
+    undoTo: (h, n) => str(fn.undoTo(h, n)),
+    gameFree: (h) => fn.gameFree(h),
+    lastError: () => str(fn.lastError()),
+  };
+}
+
+function intArg(v, what) {
+  const n = Number(v);
+  if (!Number.isInteger(n) || n < -2147483648 || n > 2147483647) throw new Error(`${what}: expected an integer, not ${v}`);
+  return n;
+}
+
+function numArg(v, what) {
+  const n = Number(v);
+  if (typeof v !== 'number' && typeof v !== 'string') throw new Error(`${what}: expected a number, not ${typeof v}`);
+  return n;
+}
+
+class Playback {
+  constructor(raw, handle) {
+    this._raw = raw;
+    this._h = handle;
+  }
+  _handle() {
+    if (!this._h) throw new Error('this playback has been freed');
+    return this._h;
+  }
+  /** The exact state at time t (never earlier than the previous frame). */
+  frame(t) { return parse(this._raw.frame(this._handle(), numArg(t, 't'))); }
+  /** {from, events: [...]}: the events from index `from` on, in result-file form. */
+  events(from = 0) { return parse(this._raw.events(this._handle(), intArg(from, 'from'))); }
+  free() {
+    if (this._h) this._raw.playbackFree(this._h);
+    this._h = 0;
+  }
+}
+
+function newPlayback(raw, handle) {
+  if (!handle) parse(raw.lastError());
+  return new Playback(raw, handle);
+}
+
+class Game {
+  constructor(raw, handle) {
+    this._raw = raw;
+    this._h = handle;
+  }
+  _handle() {
+    if (!this._h) throw new Error('this game has been freed');
+    return this._h;
+  }
+  table() { return parse(this._raw.table(this._handle())); }
+  state() { return parse(this._raw.state(this._handle())); }
+  /** {ok: true} or {ok: false, reason}. */
+  checkPlacement(x, y) { return parse(this._raw.checkPlacement(this._handle(), numArg(x, 'x'), numArg(y, 'y'))); }
+  /** Plays an action ({place}, {shoot, call?, safety?, push_out?} or {decide}) for the seat to act. */
+  act(action) { return parse(this._raw.act(this._handle(), toJson(action))); }
+  /** {action}: the AI's decision for the seat to act (its own level, or `level` for a hint). */
+  aiAction(level) { return parse(this._raw.aiAction(this._handle(), level === undefined || level === null || level === '' ? null : String(level))); }
+  /** The playback of the shot of action `index`, from the state before it. */
+  shotPlayback(index) { return newPlayback(this._raw, this._raw.shotPlayback(this._handle(), intArg(index, 'index'))); }
+  /** The link text ("v1.…"). */
+  link() { return parse(this._raw.link(this._handle())).link; }
+  /** The game record (the object of write_record's JSON). */
+  record() { return parse(this._raw.record(this._handle())); }
+  /** The game record as text, exactly as `breakshot replay` reads it. */
+  recordText() {
+    const text = this._raw.record(this._handle());
+    parse(text);
+    return text;
+  }
+  /** Keeps the first n actions; returns the state. */
+  undoTo(n) { return parse(this._raw.undoTo(this._handle(), intArg(n, 'n'))); }
+  free() {
+    if (this._h) this._raw.gameFree(this._h);
+    this._h = 0;
+  }
+}
+
+function newGame(raw, handle) {
+  if (!handle) parse(raw.lastError());
+  return new Game(raw, handle);
+}
+
+async function instantiate(options) {
+  const M = await createBreakshot(options || {});
+  const raw = rawApi(M);
+  const info = parse(raw.version());
+  return {
+    raw,
+    levels: info.levels,
+    aiBudgets: info.ai_budgets,
+    version: () => info.version,
+    simulate: (scenario) => parse(raw.simulate(toJson(scenario))),
+    playback: (scenario) => newPlayback(raw, raw.playbackNew(toJson(scenario))),
+    newGame: (config) => newGame(raw, raw.gameNew(toJson(config))),
+    gameFromLink: (link) => newGame(raw, raw.gameFromLink(String(link))),
+  };
+}
+
+let shared = null;
+
+/**
+ * The engine API. One instance per page or worker is shared by all
+ * callers; {fresh: true} makes a new one. Other options go to the
+ * emscripten module factory.
+ */
+export function loadEngine(options = {}) {
+  const { fresh, ...moduleOptions } = options || {};
+  if (fresh) return instantiate(moduleOptions);
+  if (!shared) {
+    shared = instantiate(moduleOptions);
+    shared.catch(() => { shared = null; });
+  }
+  return shared;
+}

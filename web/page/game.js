@@ -1,0 +1,1319 @@
+// The game tab: a game of 8-ball or 9-ball against an AI level or a
+// friend on the same screen. The engine (engine.js over the wasm build)
+// does every bit of physics and every ruling; this file takes input,
+// draws the engine's positions and keeps the log. Nothing here reaches
+// the engine through Math.random: the seed comes from the URL, the form
+// or the clock at new-game time, and the link keeps it.
+
+import { TableView, aimGeometry, drawBall } from './draw.js';
+
+export const AI_LEVELS = ['beginner', 'amateur', 'club', 'expert', 'champion'];
+
+const MIN_SPEED = 0.3;
+const MAX_SPEED = 10;
+const BREAK_SPEED = 8.5;
+const DEFAULT_SPEED = 3;
+const TIP_LIMIT = 0.48;
+const FADE = 0.3;          // seconds a pocketed ball takes to vanish    // largest tip offset the widget allows (miscue limit 0.5)
+
+const POCKET_WORDS = {
+  bottom_left: 'bottom-left corner',
+  side_bottom: 'bottom side',
+  bottom_right: 'bottom-right corner',
+  top_right: 'top-right corner',
+  side_top: 'top side',
+  top_left: 'top-left corner',
+};
+
+const FOUL_WORDS = {
+  scratch: 'scratch (the cue ball fell)',
+  no_contact: 'no ball hit',
+  wrong_ball_first: 'wrong ball hit first',
+  no_rail: 'no rail after contact',
+  illegal_break: 'illegal break',
+  behind_head_string: 'first ball hit was behind the head string',
+};
+
+const CHOICE_WORDS = {
+  shoot: 'Take the table and shoot',
+  pass_back: 'Pass it back: the other player must shoot',
+  accept_table: 'Accept the table and shoot',
+  rerack_and_break: 'Re-rack, and I break',
+  rerack_opponent_breaks: 'Re-rack, and the other player breaks again',
+  respot_eight: 'Spot the 8 and play on',
+};
+
+const PHASE_WORDS = {
+  push_out_choice: 'after the push-out: take the table or pass it back',
+  illegal_break_choice: 'after the illegal break: accept the table or re-rack',
+  eight_on_break_choice: 'the 8 fell on the break: spot it or re-rack',
+};
+
+/** The #power slider's value is the cue speed in m/s. */
+export function speedFromPower(p) {
+  const v = Number(p);
+  if (!Number.isFinite(v)) return DEFAULT_SPEED;
+  return Math.max(MIN_SPEED, Math.min(MAX_SPEED, v));
+}
+
+export function powerFromSpeed(s) {
+  return Math.max(MIN_SPEED, Math.min(MAX_SPEED, s));
+}
+
+function message(e) {
+  if (e && typeof e.message === 'string') return e.message;
+  return String(e);
+}
+
+function linkText(r) {
+  if (typeof r === 'string') return r;
+  return r && typeof r.link === 'string' ? r.link : '';
+}
+
+function normDeg(phi) {
+  let p = phi % 360;
+  if (p < 0) p += 360;
+  return p;
+}
+
+function $(id) { return document.getElementById(id); }
+
+export class GameUI {
+  constructor(E) {
+    this.E = E;
+    this.g = null;
+    this.table = null;
+    this.R = 0.028575;
+    this.st = null;
+    this.players = ['human', 'club'];
+    this.config = null;
+    this.aim = { phi: 0, speed: DEFAULT_SPEED, theta: 0, a: 0, b: 0 };
+    this.override = { ball: null, pocket: null };
+    this.placePos = null;   // where the cue ball will be placed before the shot
+    this.drag = null;       // {kind: 'cue' | 'aim', id, dx, dy, x, y, ok, reason}
+    this.anim = null;
+    this.thinking = false;
+    this.reqId = 0;
+    this.worker = null;
+    this.log = [];
+    this.rafPending = false;
+    this.shareNote = '';
+
+    this.canvas = $('table');
+    this.view = new TableView(this.canvas);
+    this.bindControls();
+    this.bindCanvas();
+    this.bindTip();
+    this.layoutObserver = new ResizeObserver(() => this.layout());
+    this.layoutObserver.observe($('table-area'));
+    window.addEventListener('resize', () => this.layout());
+  }
+
+  // ---- public (app.js and the test hooks) ----
+
+  busy() { return !!this.anim || this.thinking; }
+
+  state() {
+    if (!this.g) return null;
+    try {
+      return this.g.state();
+    } catch (e) {
+      this.showError(message(e));
+      return null;
+    }
+  }
+
+  /** Plays an action for the seat to act; returns the reply or {error}. */
+  act(action) {
+    if (!this.g) return { error: 'no game' };
+    if (this.busy()) return { error: 'the page is busy (a shot is running or the AI is thinking)' };
+    return this.doAct(action);
+  }
+
+  /** Starts a new game; config as E.newGame. Returns true on success. */
+  newGame(config) {
+    let g;
+    try {
+      g = this.E.newGame(config);
+    } catch (e) {
+      this.showError(`Cannot start the game: ${message(e)}`);
+      return false;
+    }
+    this.config = { ...config };
+    this.install(g);
+    return true;
+  }
+
+  /** Opens a game from a link; with shot = k, replays action k's shot.
+   *  Returns true, or the reason the link was refused. */
+  openLink(link, shot) {
+    let g;
+    try {
+      g = this.E.gameFromLink(link);
+    } catch (e) {
+      this.showError(`Cannot open the link: ${message(e)}`);
+      return message(e);
+    }
+    this.config = null;
+    const replay = shot != null && Number.isInteger(shot);
+    this.install(g, { deferAI: replay });
+    if (replay) {
+      const entry = this.log.find((x) => x.index === shot && x.kind === 'shoot');
+      if (entry) {
+        this.replay(entry.index);
+      } else {
+        this.showError(`The link has no shot ${shot}`);
+        this.maybeAI();
+      }
+    }
+    return true;
+  }
+
+  link() {
+    if (!this.g) return '';
+    try {
+      return linkText(this.g.link());
+    } catch (e) {
+      this.showError(message(e));
+      return '';
+    }
+  }
+
+  // ---- game set-up ----
+
+  install(g, opts = {}) {
+    this.cancelAI();
+    this.stopAnimation();
+    if (this.g) {
+      try { this.g.free(); } catch (e) { /* already gone */ }
+    }
+    this.g = g;
+    this.clearError();
+    this.shareNote = '';
+    try {
+      this.table = g.table();
+      this.st = g.state();
+    } catch (e) {
+      this.showError(message(e));
+      return;
+    }
+    this.R = this.table.ball_radius || 0.028575;
+    this.players = this.st.players || this.players;
+    this.view.setTable(this.table);
+    this.rebuildLog();
+    this.newTurn(true);
+    this.layout();
+    this.updatePanel();
+    this.requestRender();
+    if (!opts.deferAI) this.maybeAI();
+  }
+
+  rebuildLog() {
+    this.log = [];
+    let rec = null;
+    try {
+      rec = this.g.record();
+    } catch (e) {
+      this.showError(`Cannot read the game record: ${message(e)}`);
+    }
+    if (rec && Array.isArray(rec.actions)) {
+      let before = rec.start;
+      rec.actions.forEach((a, i) => {
+        const kind = a.action && a.action.type === 'place_cue_ball' ? 'place'
+          : a.action && a.action.type === 'decide' ? 'decide' : 'shoot';
+        const entry = { index: i, player: a.player, kind, ruling: a.ruling || {}, action: a.action };
+        if (kind === 'shoot' && before && before.on_table) {
+          entry.numbers = before.on_table.map((on, n) => (on ? n : -1)).filter((n) => n >= 0);
+        }
+        this.log.push(entry);
+        before = a.after;
+      });
+    }
+    this.renderLog();
+  }
+
+  seatName(seat) {
+    const p = this.players[seat];
+    const human = this.players.filter((x) => x === 'human').length;
+    if (p === 'human') return human === 2 ? `Player ${seat + 1}` : `Player ${seat + 1} (you)`;
+    return `Player ${seat + 1} (${p} AI)`;
+  }
+
+  shortName(seat) {
+    const p = this.players[seat];
+    if (p === 'human') return `Player ${seat + 1}`;
+    return `${p[0].toUpperCase()}${p.slice(1)} AI`;
+  }
+
+  // ---- the turn ----
+
+  legal() { return (this.st && this.st.legal) || {}; }
+
+  /** A shot is due: legal now, or once the cue ball that must be placed is placed. */
+  shotDue() {
+    const legal = this.legal();
+    return !!legal.shoot || (!!legal.must_place && !!legal.place && legal.place !== 'none');
+  }
+
+  /** The coming shot carries a call (8-ball): now, or after the placement. */
+  callDue() {
+    const legal = this.legal();
+    if (legal.call) return true;
+    return !legal.shoot && this.shotDue() && this.st.game === 'eight_ball' && this.st.phase === 'shot';
+  }
+
+  /** The coming shot may be a push-out (9-ball): now, or after the placement. */
+  pushOutDue() {
+    const legal = this.legal();
+    if (legal.push_out) return true;
+    return !legal.shoot && this.shotDue() && this.st.game === 'nine_ball' && !!this.st.push_out_allowed;
+  }
+
+  humanToAct() {
+    return !!this.st && this.st.phase !== 'game_over' && this.players[this.st.player] === 'human';
+  }
+
+  canAct() { return !!this.g && !this.busy() && this.humanToAct(); }
+
+  objectBalls() {
+    const out = [];
+    if (!this.st) return out;
+    this.st.balls.forEach((b, n) => {
+      if (n > 0 && b[2]) out.push({ n, x: b[0], y: b[1] });
+    });
+    return out;
+  }
+
+  cuePos() {
+    if (this.placePos) return this.placePos;
+    const c = this.st && this.st.balls[0];
+    if (c && c[2]) return { x: c[0], y: c[1] };
+    return null;
+  }
+
+  /** Sets up the controls for the turn after an action. */
+  newTurn(fresh) {
+    const legal = this.legal();
+    this.override = { ball: null, pocket: null };
+    $('safety').checked = false;
+    $('push-out').checked = false;
+    this.drag = null;
+    this.placePos = null;
+    if (legal.place && legal.place !== 'none') this.placePos = this.defaultPlacement(legal);
+    if (!this.st) return;
+    if (this.st.phase === 'break_shot') {
+      this.aim.speed = BREAK_SPEED;
+    } else if (fresh || this.aim.speed > 6.5) {
+      this.aim.speed = DEFAULT_SPEED;
+    }
+    this.aim.theta = 0;
+    this.aim.a = 0;
+    this.aim.b = 0;
+    this.aimAtDefault();
+    this.syncControls();
+  }
+
+  defaultPlacement(legal) {
+    const c = this.st.balls[0];
+    const tryAt = (x, y) => {
+      try {
+        return this.g.checkPlacement(x, y).ok;
+      } catch (e) {
+        return false;
+      }
+    };
+    if (c && c[2] && !legal.must_place) return { x: c[0], y: c[1] };
+    const t = this.table;
+    const hs = t.head_spot || [t.length / 4, t.width / 2];
+    if (tryAt(hs[0], hs[1])) return { x: hs[0], y: hs[1] };
+    // a spiral of candidates around the head spot, kitchen first
+    const step = this.R * 1.5;
+    for (let ring = 1; ring < 40; ring++) {
+      for (let k = 0; k < 8 * ring; k++) {
+        const a = (2 * Math.PI * k) / (8 * ring);
+        const x = hs[0] - Math.abs(Math.cos(a)) * ring * step * (legal.place === 'kitchen' ? 1 : Math.sign(Math.cos(a)) || 1);
+        const y = hs[1] + Math.sin(a) * ring * step;
+        if (tryAt(x, y)) return { x, y };
+      }
+    }
+    return { x: hs[0], y: hs[1] };
+  }
+
+  /** Aims at the nearest legal target (the apex ball on the break). */
+  aimAtDefault() {
+    const cue = this.cuePos();
+    if (!cue) return;
+    const legal = this.legal();
+    const targets = new Set(legal.targets || []);
+    let best = null;
+    let bestD = Infinity;
+    for (const b of this.objectBalls()) {
+      if (targets.size && !targets.has(b.n)) continue;
+      const d = Math.hypot(b.x - cue.x, b.y - cue.y);
+      if (d < bestD) { bestD = d; best = b; }
+    }
+    if (best) this.aim.phi = normDeg((Math.atan2(best.y - cue.y, best.x - cue.x) * 180) / Math.PI);
+  }
+
+  setAimToward(p) {
+    const cue = this.cuePos();
+    if (!cue) return;
+    const dx = p.x - cue.x;
+    const dy = p.y - cue.y;
+    if (Math.hypot(dx, dy) < 1e-4) return;
+    this.aim.phi = normDeg((Math.atan2(dy, dx) * 180) / Math.PI);
+    this.syncControls();
+    this.requestRender();
+  }
+
+  geometry() {
+    const cue = this.cuePos();
+    if (!cue) return null;
+    return aimGeometry(this.table, cue, this.aim.phi, this.objectBalls(), this.R);
+  }
+
+  /** The call the shot will carry (8-ball): overrides, else from the aim. */
+  currentCall(geo) {
+    const legal = this.legal();
+    if (!this.callDue()) return null;
+    const targets = legal.targets || [];
+    let ball = this.override.ball;
+    const ballAuto = ball == null;
+    if (ball == null && geo && geo.hit && targets.includes(geo.hit.n)) ball = geo.hit.n;
+    let pocket = this.override.pocket;
+    const pocketAuto = pocket == null;
+    if (ball == null) return { ball: null, pocket, ballAuto, pocketAuto };
+    if (pocket == null) {
+      const b = this.st.balls[ball];
+      let dir;
+      if (geo && geo.hit && geo.hit.n === ball) dir = geo.objectDir;
+      else {
+        const cue = this.cuePos() || { x: b[0], y: b[1] };
+        const l = Math.hypot(b[0] - cue.x, b[1] - cue.y) || 1;
+        dir = { x: (b[0] - cue.x) / l, y: (b[1] - cue.y) / l };
+      }
+      let bestCos = -2;
+      this.table.pockets.forEach((p, i) => {
+        const px = p.centre[0] - b[0];
+        const py = p.centre[1] - b[1];
+        const l = Math.hypot(px, py) || 1;
+        const c = (px * dir.x + py * dir.y) / l;
+        if (c > bestCos) { bestCos = c; pocket = i; }
+      });
+    }
+    return { ball, pocket, ballAuto, pocketAuto };
+  }
+
+  shotAction() {
+    const legal = this.legal();
+    const s = this.aim;
+    const action = { shoot: { speed: s.speed, phi: s.phi, theta: s.theta, a: s.a, b: s.b } };
+    if (legal.call) {
+      const call = this.currentCall(this.geometry());
+      if (call && call.ball != null && call.pocket != null) action.call = { ball: call.ball, pocket: call.pocket };
+      if ($('safety').checked) action.safety = true;
+    }
+    if (legal.push_out && $('push-out').checked) action.push_out = true;
+    return action;
+  }
+
+  shoot() {
+    if (!this.canAct()) return;
+    let legal = this.legal();
+    if (!this.shotDue()) {
+      this.showError(legal.choices && legal.choices.length ? 'Choose one of the options first.' : 'No shot is due now.');
+      return;
+    }
+    if (this.placePos && legal.place && legal.place !== 'none') {
+      const c = this.st.balls[0];
+      const moved = !c || !c[2] || c[0] !== this.placePos.x || c[1] !== this.placePos.y;
+      if (legal.must_place || moved) {
+        const keepAim = { ...this.aim };
+        const r = this.doAct({ place: [this.placePos.x, this.placePos.y] }, { keepAim: true });
+        if (r.error) return;
+        this.aim = keepAim;
+        legal = this.legal();
+      }
+    }
+    if (!legal.shoot) {
+      this.showError('No shot is due now.');
+      return;
+    }
+    this.doAct(this.shotAction());
+  }
+
+  decide(choice) {
+    if (!this.canAct()) return;
+    this.doAct({ decide: choice });
+  }
+
+  /** g.act with logging, animation and the AI's turn after it. */
+  doAct(action, opts = {}) {
+    let reply;
+    try {
+      reply = this.g.act(action);
+    } catch (e) {
+      this.showError(message(e));
+      this.updatePanel();
+      this.requestRender();
+      return { error: message(e) };
+    }
+    if (!reply || typeof reply !== 'object') return { error: 'no reply' };
+    if (reply.error) {
+      this.showError(reply.error);
+      return reply;
+    }
+    this.clearError();
+    this.shareNote = '';
+    const entry = {
+      index: reply.index,
+      player: reply.player,
+      kind: reply.kind,
+      ruling: reply.ruling || {},
+      numbers: reply.numbers,
+      action: reply.executed,
+    };
+    const prevPhase = this.st ? this.st.phase : '';
+    this.st = reply.state;
+    const addLog = () => {
+      this.log.push(entry);
+      this.renderLog();
+    };
+    // a shot's ruling is shown once its balls have stopped
+    if (reply.kind !== 'shoot') addLog();
+    const settle = () => {
+      if (reply.kind === 'shoot') addLog();
+      if (opts.keepAim && reply.kind === 'place') {
+        const legal = this.legal();
+        this.placePos = null;
+        if (legal.place && legal.place !== 'none') this.placePos = this.defaultPlacement(legal);
+        this.syncControls();
+      } else {
+        this.newTurn(prevPhase === 'break_shot' && this.st.phase !== 'break_shot');
+      }
+      this.updatePanel();
+      this.requestRender();
+      this.maybeAI();
+    };
+    if (reply.kind === 'shoot') {
+      this.animate(reply.index, reply.numbers, settle);
+    } else {
+      settle();
+    }
+    this.updatePanel();
+    return reply;
+  }
+
+  undo() {
+    if (!this.g || this.anim) return;
+    // back to before the last shot taken by a human (the AI's replies go too)
+    let target = -1;
+    for (let i = this.log.length - 1; i >= 0; i--) {
+      const e = this.log[i];
+      if (e.kind === 'shoot' && this.players[e.player] === 'human') { target = e.index; break; }
+    }
+    if (target < 0) {
+      this.showError('There is no shot of yours to undo.');
+      return;
+    }
+    this.cancelAI();
+    try {
+      this.g.undoTo(target);
+      this.st = this.g.state();
+    } catch (e) {
+      this.showError(message(e));
+      return;
+    }
+    this.clearError();
+    this.rebuildLog();
+    this.newTurn(false);
+    this.updatePanel();
+    this.requestRender();
+    this.maybeAI();
+  }
+
+  // ---- the AI ----
+
+  ensureWorker() {
+    if (this.worker) return this.worker;
+    const w = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    w.addEventListener('message', (ev) => this.onWorker(ev.data));
+    w.addEventListener('error', (ev) => {
+      if (ev && ev.preventDefault) ev.preventDefault();
+      this.thinking = false;
+      this.worker = null;
+      try { w.terminate(); } catch (e) { /* gone */ }
+      this.showError(`The AI worker failed${ev && ev.message ? `: ${ev.message}` : ''}`);
+      this.updatePanel();
+    });
+    w.addEventListener('messageerror', () => {
+      this.thinking = false;
+      this.showError('The AI worker sent a message that could not be read');
+      this.updatePanel();
+    });
+    this.worker = w;
+    return w;
+  }
+
+  maybeAI() {
+    if (!this.g || !this.st || this.anim || this.thinking) return;
+    if (this.st.phase === 'game_over') return;
+    const level = this.players[this.st.player];
+    if (!level || level === 'human') return;
+    let link;
+    try {
+      link = linkText(this.g.link());
+    } catch (e) {
+      this.showError(message(e));
+      return;
+    }
+    const id = ++this.reqId;
+    this.thinking = true;
+    this.updatePanel();
+    try {
+      this.ensureWorker().postMessage({ id, link, level });
+    } catch (e) {
+      this.thinking = false;
+      this.showError(`Cannot start the AI: ${message(e)}`);
+      this.updatePanel();
+    }
+  }
+
+  onWorker(data) {
+    if (!data || data.id !== this.reqId || !this.thinking) return;
+    this.thinking = false;
+    if (data.error) {
+      this.showError(`The AI failed: ${data.error}`);
+      this.updatePanel();
+      return;
+    }
+    this.doAct(data.action);
+  }
+
+  cancelAI() {
+    this.reqId++;
+    if (this.thinking && this.worker) {
+      // a long search cannot be interrupted: start a fresh worker next time
+      try { this.worker.terminate(); } catch (e) { /* gone */ }
+      this.worker = null;
+    }
+    this.thinking = false;
+  }
+
+  // ---- animation ----
+
+  animate(index, numbers, done, replay = false) {
+    let pb;
+    try {
+      pb = this.g.shotPlayback(index);
+    } catch (e) {
+      this.showError(`Cannot play the shot back: ${message(e)}`);
+      done();
+      return;
+    }
+    this.anim = { pb, numbers: numbers || [], t: 0, last: null, frame: null, done, index, gone: new Map(), replay: !!replay };
+    try {
+      this.anim.frame = pb.frame(0);
+    } catch (e) {
+      this.finishAnimation(e);
+      return;
+    }
+    this.updatePanel();
+    this.requestRender();
+  }
+
+  stepAnimation(now) {
+    const a = this.anim;
+    if (!a) return;
+    if (a.last != null) {
+      const dt = Math.min(0.1, Math.max(0, (now - a.last) / 1000));
+      a.t += dt * Number($('playback-speed').value || 1);
+    }
+    a.last = now;
+    const prev = a.frame;
+    try {
+      a.frame = a.pb.frame(a.t);
+    } catch (e) {
+      this.finishAnimation(e);
+      return;
+    }
+    // balls that just dropped: fade them into their pocket
+    if (prev) {
+      a.frame.balls.forEach((b, i) => {
+        if (!b[2] && prev.balls[i] && prev.balls[i][2] && !a.gone.has(i)) {
+          const p = this.nearestPocket(b[0], b[1]);
+          a.gone.set(i, { x: b[0], y: b[1], t: a.t, px: p ? p.centre[0] : b[0], py: p ? p.centre[1] : b[1] });
+        }
+      });
+    }
+    const fading = [...a.gone.values()].some((g) => a.t - g.t < FADE);
+    if (a.frame.at_rest && !fading) this.finishAnimation(null);
+  }
+
+  nearestPocket(x, y) {
+    let best = null;
+    let bestD = Infinity;
+    for (const p of this.table.pockets) {
+      const d = Math.hypot(p.centre[0] - x, p.centre[1] - y);
+      if (d < bestD) { bestD = d; best = p; }
+    }
+    return best;
+  }
+
+  finishAnimation(err) {
+    const a = this.anim;
+    if (!a) return;
+    this.anim = null;
+    try { a.pb.free(); } catch (e) { /* gone */ }
+    if (err) this.showError(`Playback: ${message(err)}`);
+    a.done();
+    this.updatePanel();
+    this.requestRender();
+  }
+
+  stopAnimation() {
+    const a = this.anim;
+    if (!a) return;
+    this.anim = null;
+    try { a.pb.free(); } catch (e) { /* gone */ }
+  }
+
+  replay(index) {
+    if (!this.g || this.busy()) return;
+    const entry = this.log.find((e) => e.index === index && e.kind === 'shoot');
+    if (!entry) return;
+    this.clearError();
+    this.animate(index, entry.numbers, () => {
+      this.updatePanel();
+      this.requestRender();
+      this.maybeAI();
+    }, true);
+  }
+
+  // ---- drawing ----
+
+  layout() {
+    if (!this.table) return;
+    const area = $('table-area');
+    if (!area || area.offsetParent === null) return;  // hidden tab
+    const top = this.canvas.getBoundingClientRect().top + window.scrollY;
+    const maxW = area.clientWidth;
+    const maxH = Math.max(240, window.innerHeight - Math.max(0, top - window.scrollY) - 80);
+    if (this.view.fit(maxW, maxH)) this.requestRender();
+  }
+
+  requestRender() {
+    if (this.rafPending) return;
+    this.rafPending = true;
+    requestAnimationFrame((now) => {
+      this.rafPending = false;
+      try {
+        this.frame(now);
+      } catch (e) {
+        this.anim = null;
+        this.showError(`Drawing failed: ${message(e)}`);
+      }
+    });
+  }
+
+  frame(now) {
+    if (this.anim) this.stepAnimation(now);
+    const scene = this.scene();
+    this.view.render(scene);
+    if (scene.call) this.autoCallLabels(scene.call);
+    if (this.anim) this.requestRender();
+  }
+
+  /** The "auto" entries of the call selects name what the aim picks. */
+  autoCallLabels(call) {
+    const bs = $('call-ball');
+    const ps = $('call-pocket');
+    if (bs.options.length) {
+      const t = call.ballAuto ? (call.ball != null ? `auto: ball ${call.ball}` : 'auto: none') : 'auto (aim)';
+      if (bs.options[0].text !== t) bs.options[0].text = t;
+    }
+    if (ps.options.length) {
+      const p = call.pocket != null ? this.table.pockets[call.pocket] : null;
+      const t = call.pocketAuto ? (p ? `auto: ${POCKET_WORDS[p.name] || p.name}` : 'auto: none') : 'auto';
+      if (ps.options[0].text !== t) ps.options[0].text = t;
+    }
+  }
+
+  scene() {
+    const scene = { balls: [], R: this.R, kitchen: false, aim: null, call: null, place: null, banner: null };
+    if (!this.st) return scene;
+    if (this.anim && this.anim.frame) {
+      const { frame, numbers, gone, t } = this.anim;
+      frame.balls.forEach((b, i) => {
+        if (b[2]) {
+          scene.balls.push({ n: numbers[i] ?? i, x: b[0], y: b[1] });
+        } else if (gone.has(i)) {
+          const g = gone.get(i);
+          const f = (t - g.t) / FADE;
+          if (f < 1) {
+            const k = Math.min(1, f * 1.5);
+            scene.balls.push({ n: numbers[i] ?? i, x: g.x + (g.px - g.x) * k, y: g.y + (g.py - g.y) * k, alpha: 1 - f, scale: 1 - 0.35 * f });
+          }
+        }
+      });
+      scene.balls.sort((p, q) => (p.n === 0) - (q.n === 0));
+      return scene;
+    }
+    this.st.balls.forEach((b, n) => {
+      if (b[2]) scene.balls.push({ n, x: b[0], y: b[1] });
+    });
+    const legal = this.legal();
+    const canAct = this.canAct();
+    const placing = canAct && legal.place && legal.place !== 'none';
+    if (placing) {
+      scene.kitchen = legal.place === 'kitchen';
+      if (this.drag && this.drag.kind === 'cue') {
+        scene.place = { x: this.drag.x, y: this.drag.y, ok: this.drag.ok, reason: this.drag.reason };
+      } else if (this.placePos) {
+        scene.place = { x: this.placePos.x, y: this.placePos.y, ok: true };
+      }
+    }
+    if (canAct && this.shotDue() && this.cuePos() && !(this.drag && this.drag.kind === 'cue')) {
+      const geo = this.geometry();
+      scene.aim = {
+        cue: this.cuePos(),
+        phi: this.aim.phi,
+        geo,
+        power: (this.aim.speed - MIN_SPEED) / (MAX_SPEED - MIN_SPEED),
+        stick: true,
+      };
+      scene.call = this.currentCall(geo);
+    }
+    if (this.st.phase === 'game_over') {
+      scene.banner = this.st.winner >= 0 ? `${this.shortName(this.st.winner)} wins` : 'Draw';
+    }
+    return scene;
+  }
+
+  // ---- the panel ----
+
+  syncControls() {
+    const a = this.aim;
+    $('power').value = String(powerFromSpeed(a.speed));
+    $('power-out').textContent = `${a.speed.toFixed(2)} m/s`;
+    $('elevation').value = String(a.theta);
+    $('elevation-out').textContent = `${Math.round(a.theta)}°`;
+    const phiInput = $('phi');
+    if (document.activeElement !== phiInput) phiInput.value = a.phi.toFixed(2);
+    $('tip-out').textContent = this.tipWords();
+    this.drawTip();
+  }
+
+  tipWords() {
+    const { a, b } = this.aim;
+    if (Math.abs(a) < 0.005 && Math.abs(b) < 0.005) return 'centre';
+    const parts = [];
+    if (Math.abs(b) >= 0.005) parts.push(`${b > 0 ? 'follow' : 'draw'} ${Math.abs(b).toFixed(2)}`);
+    if (Math.abs(a) >= 0.005) parts.push(`${a > 0 ? 'right' : 'left'} ${Math.abs(a).toFixed(2)}`);
+    return parts.join(', ');
+  }
+
+  updatePanel() {
+    const st = this.st;
+    const legal = this.legal();
+    const canAct = this.canAct();
+    $('thinking').hidden = !this.thinking;
+    this.canvas.classList.toggle('waiting', this.busy());
+    this.canvas.classList.toggle('placing', canAct && !!legal.place && legal.place !== 'none');
+    $('shoot').disabled = !(canAct && this.shotDue());
+    $('undo').disabled = !this.g || this.busy() || !this.log.some((e) => e.kind === 'shoot' && this.players[e.player] === 'human');
+    $('share').disabled = !this.g;
+
+    // call, safety and push-out
+    const callBox = $('call-box');
+    callBox.hidden = !(canAct && this.shotDue() && this.callDue());
+    if (!callBox.hidden) this.fillCallSelects();
+    $('push-out-box').hidden = !(canAct && this.shotDue() && this.pushOutDue());
+
+    // decisions
+    const choices = $('choices');
+    const list = canAct ? legal.choices || [] : [];
+    choices.hidden = list.length === 0;
+    const key = list.join(',');
+    if (choices.dataset.key !== key) {
+      choices.dataset.key = key;
+      choices.textContent = '';
+      if (list.length) {
+        const p = document.createElement('p');
+        p.textContent = PHASE_WORDS[st.phase] || 'Your decision:';
+        choices.appendChild(p);
+      }
+      for (const c of list) {
+        const b = document.createElement('button');
+        b.type = 'button';
+        b.id = `choice-${c}`;
+        b.dataset.choice = c;
+        b.textContent = CHOICE_WORDS[c] || c.replace(/_/g, ' ');
+        b.addEventListener('click', () => this.decide(c));
+        choices.appendChild(b);
+      }
+    }
+
+    // status
+    const turn = $('status-turn');
+    const info = $('status-info');
+    if (!st) {
+      turn.textContent = 'No game';
+      info.textContent = '';
+      return;
+    }
+    const gameName = st.game === 'nine_ball' ? '9-ball' : '8-ball';
+    if (this.anim) {
+      // the state is already the one after the shot: keep it for the end
+      turn.textContent = `${gameName}: ${this.anim.replay ? 'replaying a shot…' : 'the balls are rolling…'}`;
+      return;
+    }
+    this.drawTray();
+    if (st.phase === 'game_over') {
+      const who = st.winner >= 0 ? `${this.seatName(st.winner)} wins` : 'Draw';
+      turn.textContent = `Game over: ${who}.${st.result ? ` ${capital(st.result)}.` : ''}`;
+    } else {
+      const who = this.seatName(st.player);
+      let what;
+      if (this.thinking) what = `${gameName}: ${who} is thinking…`;
+      else if (st.phase === 'break_shot') what = `${gameName}: ${who} to break`;
+      else if (legal.choices && legal.choices.length) what = `${gameName}: ${who} to decide (${PHASE_WORDS[st.phase] || st.phase})`;
+      else what = `${gameName}: ${who} to shoot`;
+      if (!this.thinking) {
+        if (legal.place === 'kitchen') what += ' — cue ball in hand behind the head string';
+        else if (legal.place === 'anywhere') what += ' — cue ball in hand anywhere';
+      }
+      turn.textContent = what;
+    }
+    const bits = [];
+    if (st.game === 'eight_ball') {
+      const g = st.group || ['none', 'none'];
+      if (g[0] === 'none' && g[1] === 'none') bits.push('table open');
+      else bits.push(`${this.shortName(0)}: ${g[0]}, ${this.shortName(1)}: ${g[1]}`);
+    } else {
+      const lowest = (legal.targets && legal.targets.length) ? legal.targets[0] : null;
+      if (lowest != null && st.phase !== 'game_over') bits.push(`ball on: ${lowest}`);
+      if (st.push_out_allowed && st.phase !== 'game_over') bits.push('push-out allowed');
+    }
+    const f = st.fouls_in_a_row || [0, 0];
+    bits.push(`fouls in a row: ${f[0]} – ${f[1]}`);
+    bits.push(`shots: ${st.shots}`);
+    if (this.shareNote) bits.push(this.shareNote);
+    info.textContent = bits.join(' · ');
+  }
+
+  /** The balls still to play: by group in 8-ball, 1-9 in 9-ball. */
+  drawTray() {
+    const c = $('tray');
+    if (!c || !this.st) return;
+    const dpr = Math.min(3, window.devicePixelRatio || 1);
+    const W = 320;
+    const H = 60;
+    if (c.width !== Math.round(W * dpr)) {
+      c.width = Math.round(W * dpr);
+      c.height = Math.round(H * dpr);
+    }
+    const ctx = c.getContext('2d');
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.clearRect(0, 0, W, H);
+    const st = this.st;
+    const on = (n) => st.balls[n] && st.balls[n][2];
+    const r = 10;
+    const row = (y, label, balls, colour) => {
+      ctx.fillStyle = colour;
+      ctx.font = '600 12px system-ui, -apple-system, "Segoe UI", Arial, sans-serif';
+      ctx.textBaseline = 'middle';
+      ctx.textAlign = 'left';
+      ctx.fillText(label, 0, y);
+      balls.forEach((n, i) => {
+        drawBall(ctx, n, 78 + i * (2 * r + 3), y, r, { alpha: on(n) ? 1 : 0.18, shadow: false });
+      });
+    };
+    const solids = [1, 2, 3, 4, 5, 6, 7];
+    const stripes = [9, 10, 11, 12, 13, 14, 15];
+    if (st.game === 'eight_ball') {
+      const g = st.group || ['none', 'none'];
+      if (g[0] === 'none' || g[1] === 'none') {
+        row(16, 'solids', [...solids, 8], '#9aa5b1');
+        row(44, 'stripes', [...stripes, 8], '#9aa5b1');
+      } else {
+        for (const seat of [0, 1]) {
+          const set = g[seat] === 'solids' ? solids : stripes;
+          row(16 + 28 * seat, `${this.shortName(seat)}`, [...set, 8], seat === 0 ? '#f2d16b' : '#8cc3ff');
+        }
+      }
+    } else {
+      const nine = [1, 2, 3, 4, 5, 6, 7, 8, 9];
+      ctx.fillStyle = '#9aa5b1';
+      ctx.font = '600 12px system-ui, -apple-system, "Segoe UI", Arial, sans-serif';
+      ctx.textBaseline = 'middle';
+      ctx.fillText('on the table', 0, 30);
+      nine.forEach((n, i) => drawBall(ctx, n, 106 + i * (2 * r + 2), 30, r, { alpha: on(n) ? 1 : 0.18, shadow: false }));
+    }
+  }
+
+  fillCallSelects() {
+    const legal = this.legal();
+    const bs = $('call-ball');
+    const ps = $('call-pocket');
+    const targets = legal.targets || [];
+    const key = targets.join(',');
+    if (bs.dataset.key !== key) {
+      bs.dataset.key = key;
+      bs.textContent = '';
+      bs.appendChild(new Option('auto (aim)', ''));
+      for (const n of targets) bs.appendChild(new Option(`ball ${n}`, String(n)));
+    }
+    if (ps.options.length === 0) {
+      ps.appendChild(new Option('auto', ''));
+      this.table.pockets.forEach((p, i) => ps.appendChild(new Option(POCKET_WORDS[p.name] || p.name, String(i))));
+    }
+    bs.value = this.override.ball == null ? '' : String(this.override.ball);
+    ps.value = this.override.pocket == null ? '' : String(this.override.pocket);
+  }
+
+  renderLog() {
+    const ol = $('ruling-log');
+    ol.textContent = '';
+    for (const e of this.log) ol.appendChild(this.logItem(e));
+    ol.scrollTop = ol.scrollHeight;
+  }
+
+  logItem(e) {
+    const li = document.createElement('li');
+    li.className = `p${e.player}`;
+    li.dataset.index = String(e.index);
+    if (e.kind === 'shoot') {
+      const b = document.createElement('button');
+      b.type = 'button';
+      b.className = 'small replay';
+      b.textContent = 'replay';
+      b.title = `replay shot ${e.index}`;
+      b.dataset.index = String(e.index);
+      b.addEventListener('click', () => this.replay(e.index));
+      li.appendChild(b);
+    }
+    const who = document.createElement('span');
+    who.className = 'who';
+    who.textContent = `${e.index + 1}. ${this.players[e.player] === 'human' ? `Player ${e.player + 1}` : `Player ${e.player + 1} (${this.players[e.player]})`}: `;
+    li.appendChild(who);
+    const r = e.ruling || {};
+    let text = r.text || (e.kind === 'place' ? 'places the cue ball' : e.kind === 'decide' ? 'decides' : 'shoots');
+    if (e.kind === 'decide' && e.action && e.action.choice && !r.text) text = `chooses: ${e.action.choice.replace(/_/g, ' ')}`;
+    li.appendChild(document.createTextNode(`${capital(text)} `));
+    if (r.fouls && r.fouls.length) {
+      const f = document.createElement('span');
+      f.className = 'foul';
+      f.textContent = `Foul: ${r.fouls.map((x) => FOUL_WORDS[x] || x).join(', ')}. `;
+      li.appendChild(f);
+    }
+    if (r.winner != null && r.winner >= 0) {
+      const w = document.createElement('span');
+      w.className = 'win';
+      w.textContent = `${this.shortName(r.winner)} wins. `;
+      li.appendChild(w);
+    } else if (e.kind === 'shoot' && !/(shoots again|plays on|to shoot|to break|breaks|cue ball in hand|wins|drawn|passes|decides|chooses|may push out|shoots from here)/.test(text)) {
+      // the ruling's words usually say whose turn it is; if not, say it
+      const m = document.createElement('span');
+      m.className = 'meta';
+      m.textContent = r.turn_continues ? 'Turn continues.' : `Player ${2 - e.player} to play.`;
+      li.appendChild(m);
+    }
+    return li;
+  }
+
+  showError(text) {
+    const el = $('status-error');
+    el.textContent = text;
+    el.hidden = false;
+  }
+
+  clearError() {
+    const el = $('status-error');
+    el.textContent = '';
+    el.hidden = true;
+  }
+
+  async share() {
+    if (!this.g) return;
+    const link = this.link();
+    if (!link) return;
+    const frag = `#game=${link}`;
+    try {
+      history.replaceState(null, '', frag);
+    } catch (e) {
+      location.hash = frag;
+    }
+    const url = location.href;
+    const out = $('share-out');
+    out.hidden = false;
+    out.textContent = 'The link is in the address bar.';
+    try {
+      if (navigator.clipboard && window.isSecureContext) {
+        await navigator.clipboard.writeText(url);
+        out.textContent = 'Link copied (and in the address bar).';
+      }
+    } catch (e) {
+      out.textContent = 'The link is in the address bar (copying was not allowed).';
+    }
+  }
+
+  // ---- input ----
+
+  bindControls() {
+    $('power').addEventListener('input', () => {
+      this.aim.speed = speedFromPower(Number($('power').value));
+      $('power-out').textContent = `${this.aim.speed.toFixed(2)} m/s`;
+      this.requestRender();
+    });
+    $('elevation').addEventListener('input', () => {
+      this.aim.theta = Number($('elevation').value);
+      $('elevation-out').textContent = `${Math.round(this.aim.theta)}°`;
+    });
+    $('phi').addEventListener('input', () => {
+      const v = Number($('phi').value);
+      if (Number.isFinite(v)) {
+        this.aim.phi = normDeg(v);
+        this.requestRender();
+      }
+    });
+    $('phi').addEventListener('change', () => { $('phi').value = this.aim.phi.toFixed(2); });
+    $('tip-reset').addEventListener('click', () => {
+      this.aim.a = 0;
+      this.aim.b = 0;
+      this.syncControls();
+    });
+    $('shoot').addEventListener('click', () => this.shoot());
+    $('undo').addEventListener('click', () => this.undo());
+    $('share').addEventListener('click', () => { this.share(); });
+    $('call-ball').addEventListener('change', () => {
+      const v = $('call-ball').value;
+      this.override.ball = v === '' ? null : Number(v);
+      this.requestRender();
+    });
+    $('call-pocket').addEventListener('change', () => {
+      const v = $('call-pocket').value;
+      this.override.pocket = v === '' ? null : Number(v);
+      this.requestRender();
+    });
+    $('playback-speed').addEventListener('change', () => $('table').focus({ preventScroll: true }));
+    document.addEventListener('keydown', (ev) => this.onKey(ev));
+    document.addEventListener('keyup', (ev) => {
+      if ((ev.key === ' ' || ev.code === 'Space') && ev.target && ev.target.tagName === 'BUTTON' && !$('game').hidden) {
+        ev.preventDefault();
+      }
+    });
+  }
+
+  onKey(ev) {
+    if ($('game').hidden) return;
+    const t = ev.target;
+    const tag = t && t.tagName;
+    if (tag === 'INPUT' && t.type !== 'range') return;
+    if (tag === 'SELECT' || tag === 'TEXTAREA') return;
+    if (ev.ctrlKey || ev.metaKey || ev.altKey) return;
+    if (ev.key === ' ' || ev.code === 'Space') {
+      // space shoots, even with a button focused (its keyup is cancelled too)
+      ev.preventDefault();
+      if (!ev.repeat) this.shoot();
+    } else if ((ev.key === 'ArrowLeft' || ev.key === 'ArrowRight') && tag !== 'INPUT') {
+      ev.preventDefault();
+      const step = ev.shiftKey ? 1 : 0.1;
+      this.aim.phi = normDeg(this.aim.phi + (ev.key === 'ArrowLeft' ? step : -step));
+      this.syncControls();
+      this.requestRender();
+    } else if ((ev.key === 'ArrowUp' || ev.key === 'ArrowDown') && tag !== 'INPUT') {
+      ev.preventDefault();
+      const step = ev.shiftKey ? 0.5 : 0.1;
+      const v = this.aim.speed + (ev.key === 'ArrowUp' ? step : -step);
+      this.aim.speed = speedFromPower(Math.round(v * 100) / 100);
+      this.syncControls();
+      this.requestRender();
+    }
+  }
+
+  bindCanvas() {
+    const c = this.canvas;
+    c.addEventListener('pointerdown', (ev) => this.onDown(ev));
+    c.addEventListener('pointermove', (ev) => this.onMove(ev));
+    c.addEventListener('pointerup', (ev) => this.onUp(ev, false));
+    c.addEventListener('pointercancel', (ev) => this.onUp(ev, true));
+    c.addEventListener('contextmenu', (ev) => ev.preventDefault());
+  }
+
+  onDown(ev) {
+    if (!this.table || (ev.pointerType === 'mouse' && ev.button !== 0)) return;
+    if (!this.canAct()) return;
+    ev.preventDefault();
+    this.canvas.focus({ preventScroll: true });
+    const p = this.view.toTable(ev.clientX, ev.clientY);
+    const legal = this.legal();
+    const cue = this.cuePos();
+    const grab = Math.max(this.R * 1.6, 14 / this.view.scale);
+    if (legal.place && legal.place !== 'none' && cue && Math.hypot(p.x - cue.x, p.y - cue.y) <= grab) {
+      this.drag = { kind: 'cue', id: ev.pointerId, dx: cue.x - p.x, dy: cue.y - p.y, x: cue.x, y: cue.y, ok: true, reason: '' };
+      this.canvas.classList.add('dragging');
+      try { this.canvas.setPointerCapture(ev.pointerId); } catch (e) { /* synthetic */ }
+      this.requestRender();
+      return;
+    }
+    if (!this.shotDue()) return;
+    // 8-ball calls: a click on a pocket calls that pocket
+    if (this.callDue()) {
+      const onBall = this.objectBalls().some((b) => Math.hypot(b.x - p.x, b.y - p.y) <= this.R * 1.1);
+      if (!onBall) {
+        const i = this.table.pockets.findIndex((k) => Math.hypot(k.centre[0] - p.x, k.centre[1] - p.y) <= k.radius + this.R);
+        if (i >= 0) {
+          this.override.pocket = this.override.pocket === i ? null : i;
+          this.updatePanel();
+          this.requestRender();
+          return;
+        }
+      }
+    }
+    this.drag = { kind: 'aim', id: ev.pointerId };
+    try { this.canvas.setPointerCapture(ev.pointerId); } catch (e) { /* synthetic */ }
+    this.setAimToward(p);
+  }
+
+  onMove(ev) {
+    const d = this.drag;
+    if (!d || d.id !== ev.pointerId) return;
+    ev.preventDefault();
+    const p = this.view.toTable(ev.clientX, ev.clientY);
+    if (d.kind === 'aim') {
+      this.setAimToward(p);
+      return;
+    }
+    const t = this.table;
+    d.x = Math.max(-0.05, Math.min(t.length + 0.05, p.x + d.dx));
+    d.y = Math.max(-0.05, Math.min(t.width + 0.05, p.y + d.dy));
+    this.checkDrag(d);
+    this.requestRender();
+  }
+
+  checkDrag(d) {
+    try {
+      const r = this.g.checkPlacement(d.x, d.y);
+      d.ok = !!r.ok;
+      d.reason = r.ok ? '' : r.reason || 'not allowed';
+    } catch (e) {
+      d.ok = false;
+      d.reason = message(e);
+    }
+  }
+
+  onUp(ev, cancelled) {
+    const d = this.drag;
+    if (!d || d.id !== ev.pointerId) return;
+    this.drag = null;
+    this.canvas.classList.remove('dragging');
+    try { this.canvas.releasePointerCapture(ev.pointerId); } catch (e) { /* not captured */ }
+    if (d.kind === 'cue' && !cancelled) {
+      const p = this.view.toTable(ev.clientX, ev.clientY);
+      const t = this.table;
+      d.x = Math.max(-0.05, Math.min(t.length + 0.05, p.x + d.dx));
+      d.y = Math.max(-0.05, Math.min(t.width + 0.05, p.y + d.dy));
+      this.checkDrag(d);
+      if (d.ok) {
+        this.placePos = { x: d.x, y: d.y };
+        this.clearError();
+      } else {
+        this.showError(`The cue ball cannot go there: ${d.reason}`);
+      }
+    }
+    this.updatePanel();
+    this.requestRender();
+  }
+
+  // ---- the cue tip widget ----
+
+  bindTip() {
+    const c = $('tip');
+    this.tipCanvas = c;
+    let down = null;
+    const set = (ev) => {
+      const r = c.getBoundingClientRect();
+      const cx = r.left + r.width / 2;
+      const cy = r.top + r.height / 2;
+      const rad = (Math.min(r.width, r.height) / 2) * 0.9;
+      let a = (ev.clientX - cx) / rad;
+      let b = -(ev.clientY - cy) / rad;
+      const m = Math.hypot(a, b);
+      if (m > TIP_LIMIT) {
+        a *= TIP_LIMIT / m;
+        b *= TIP_LIMIT / m;
+      }
+      this.aim.a = Math.round(a * 100) / 100;
+      this.aim.b = Math.round(b * 100) / 100;
+      this.syncControls();
+    };
+    c.addEventListener('pointerdown', (ev) => {
+      if (ev.pointerType === 'mouse' && ev.button !== 0) return;
+      ev.preventDefault();
+      down = ev.pointerId;
+      try { c.setPointerCapture(ev.pointerId); } catch (e) { /* synthetic */ }
+      set(ev);
+    });
+    c.addEventListener('pointermove', (ev) => { if (down === ev.pointerId) set(ev); });
+    const up = (ev) => {
+      if (down !== ev.pointerId) return;
+      down = null;
+      try { c.releasePointerCapture(ev.pointerId); } catch (e) { /* not captured */ }
+    };
+    c.addEventListener('pointerup', up);
+    c.addEventListener('pointercancel', up);
+    c.addEventListener('dblclick', () => {
+      this.aim.a = 0;
+      this.aim.b = 0;
+      this.syncControls();
+    });
+    this.drawTip();
+  }
+
+  drawTip() {
+    const c = this.tipCanvas;
+    if (!c) return;
+    const dpr = Math.min(3, window.devicePixelRatio || 1);
+    const size = 96;
+    if (c.width !== Math.round(size * dpr)) {
+      c.width = Math.round(size * dpr);
+      c.height = Math.round(size * dpr);
+    }
+    const ctx = c.getContext('2d');
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.clearRect(0, 0, size, size);
+    const cx = size / 2;
+    const cy = size / 2;
+    const r = (size / 2) * 0.9;
+    drawBall(ctx, 0, cx, cy, r, { shadow: false });
+    ctx.strokeStyle = 'rgba(0, 0, 0, 0.35)';
+    ctx.lineWidth = 1;
+    ctx.beginPath();
+    ctx.moveTo(cx - r, cy);
+    ctx.lineTo(cx + r, cy);
+    ctx.moveTo(cx, cy - r);
+    ctx.lineTo(cx, cy + r);
+    ctx.stroke();
+    ctx.setLineDash([3, 3]);
+    ctx.strokeStyle = 'rgba(200, 40, 40, 0.55)';
+    ctx.beginPath();
+    ctx.arc(cx, cy, r * 0.5, 0, Math.PI * 2);
+    ctx.stroke();
+    ctx.setLineDash([]);
+    const tx = cx + this.aim.a * r;
+    const ty = cy - this.aim.b * r;
+    ctx.fillStyle = '#2f6fc0';
+    ctx.strokeStyle = '#0d2748';
+    ctx.lineWidth = 1.5;
+    ctx.beginPath();
+    ctx.arc(tx, ty, r * 0.13, 0, Math.PI * 2);
+    ctx.fill();
+    ctx.stroke();
+  }
+}
+
+function capital(s) {
+  if (!s) return s;
+  return s[0].toUpperCase() + s.slice(1);
+}
