@@ -1,13 +1,14 @@
 #!/usr/bin/env node
 // Bundles the lab examples (examples/lab/*.json) into an ES module for the
-// browser lab: web/page/lab-examples.js exports
+// browser lab; the wasm build (web/CMakeLists.txt) writes it to
+// build/web/dist/lab-examples.js, next to the page. The module exports
 //   export const EXAMPLES = [{name: "fast_ball", scenario: {...}}, ...];
 // in file-name order. Deterministic: the same files give the same bytes.
 //
 //   node web/tools/bundle-examples.mjs [EXAMPLES_DIR] [OUT_FILE]
 //
 // Defaults (relative to the repository root, found from this file):
-// examples/lab and web/page/lab-examples.js. Each file is parsed (a file
+// examples/lab and build/web/dist/lab-examples.js. Each file is parsed (a file
 // that is not valid JSON stops the script with its name) and written back
 // with JSON.stringify, one example per line.
 import { readdirSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
@@ -16,7 +17,7 @@ import { fileURLToPath } from 'node:url';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const dir = resolve(process.argv[2] ?? join(root, 'examples', 'lab'));
-const out = resolve(process.argv[3] ?? join(root, 'web', 'page', 'lab-examples.js'));
+const out = resolve(process.argv[3] ?? join(root, 'build', 'web', 'dist', 'lab-examples.js'));
 
 const files = readdirSync(dir)
   .filter((f) => f.endsWith('.json'))
