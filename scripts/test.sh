@@ -4,17 +4,17 @@
 #   (a) release build, warnings as errors, and its tests      (preset release)
 #   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
 #   (c) install the release build and build and run the example consumer
-#       against it (find_package(breakshot)); run scripts/run.sh
-#   (e) the browser version: native and wasm give the same replies byte
+#       against it (find_package(breakshot)); run scripts/run.sh --check
+#   (d) the browser version: native and wasm give the same replies byte
 #       for byte (web/tests/identity.mjs), and playwright-core drives
 #       Chromium through the served page (web/tests/browser.mjs)
-#   (d) the libFuzzer targets, built with clang: seed corpus replays (tests),
+#   (e) the libFuzzer targets, built with clang: seed corpus replays (tests),
 #       then fuzzing scenarios for BREAKSHOT_FUZZ_SECONDS (default 60)
 #       seconds, seeded with fuzz/corpus and examples/lab, and game records
 #       for BREAKSHOT_RECORD_FUZZ_SECONDS (default 30), seeded with
 #       fuzz/record_corpus
 #
-# The last line is the sum over every ctest run: "N passed, 0 failed".
+# The last line is the sum over every ctest run and node test script: "N passed, 0 failed".
 #
 #   scripts/test.sh            everything
 #   scripts/test.sh --quick    only (a)
@@ -69,7 +69,7 @@ trap on_error ERR
 
 # Runs one ctest preset, shows its output and adds its counts to the totals.
 run_ctest() {
-  local preset=$1 log=$logs/ctest-$1.log line total nfail
+  local preset=$1 log=$logs/ctest-$1.log line total nfail nskip
   ctest --preset "$preset" 2>&1 | tee "$log"
   line=$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1)
   if [ -z "$line" ]; then
@@ -78,7 +78,9 @@ run_ctest() {
   fi
   nfail=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")
   total=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<<"$line")
-  passed=$((passed + total - nfail))
+  # Skipped tests (web_identity before the wasm build exists) are not passes.
+  nskip=$(grep -cE '^\s*[0-9]+ - .* \(Skipped\)$' "$log" || true)
+  passed=$((passed + total - nfail - nskip))
   failed=$((failed + nfail))
 }
 
@@ -134,20 +136,20 @@ if [ "$quick" -eq 0 ]; then
   tail -n 6 "$logs/run.log"
 
   # scripts/run.sh built the wasm engine and the page (scripts/web.sh).
-  stage "(e) web: native and wasm replies, byte for byte"
+  stage "(d) web: native and wasm replies, byte for byte"
   run_node_tests identity node web/tests/identity.mjs --probe build/release/web_api_probe \
     --engine build/web/dist/breakshot.js
-  stage "(e) web: browser tests (playwright-core + /usr/bin/chromium)"
+  stage "(d) web: browser tests (playwright-core + /usr/bin/chromium)"
   (cd web/tests && npm ci --no-audit --no-fund --loglevel=error)
   run_node_tests browser node web/tests/browser.mjs --cli build/release/breakshot \
     --root build/web/dist --shots build/web/screenshots
 
-  stage "(d) fuzz: configure + build (clang)"
+  stage "(e) fuzz: configure + build (clang)"
   cmake --preset fuzz
   cmake --build --preset fuzz
-  stage "(d) fuzz: corpus replay (ctest)"
+  stage "(e) fuzz: corpus replay (ctest)"
   run_ctest fuzz
-  stage "(d) fuzz: libFuzzer for ${fuzz_seconds}s"
+  stage "(e) fuzz: libFuzzer for ${fuzz_seconds}s"
   mkdir -p build/fuzz/corpus-work build/fuzz/artifacts
   fuzz_log=$logs/fuzz.log
   if ! build/fuzz/fuzz/breakshot_fuzz \
@@ -162,7 +164,7 @@ if [ "$quick" -eq 0 ]; then
   fi
   grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
     "$fuzz_log" || true
-  stage "(d) fuzz: game records for ${record_fuzz_seconds}s"
+  stage "(e) fuzz: game records for ${record_fuzz_seconds}s"
   mkdir -p build/fuzz/record-corpus-work
   fuzz_log=$logs/fuzz-record.log
   if ! build/fuzz/fuzz/breakshot_fuzz_record \

@@ -924,7 +924,7 @@ export class GameUI {
       ctx.font = '600 12px system-ui, -apple-system, "Segoe UI", Arial, sans-serif';
       ctx.textBaseline = 'middle';
       ctx.textAlign = 'left';
-      ctx.fillText(label, 0, y);
+      ctx.fillText(label, 0, y, 64);  // squeezed to fit before the balls
       balls.forEach((n, i) => {
         drawBall(ctx, n, 78 + i * (2 * r + 3), y, r, { alpha: on(n) ? 1 : 0.18, shadow: false });
       });
