@@ -992,6 +992,14 @@ export class GameUI {
       b.dataset.index = String(e.index);
       b.addEventListener('click', () => this.replay(e.index));
       li.appendChild(b);
+      const l = document.createElement('button');
+      l.type = 'button';
+      l.className = 'small replay shot-link';
+      l.textContent = 'link';
+      l.title = `a link that opens this game and replays shot ${e.index + 1}`;
+      l.dataset.index = String(e.index);
+      l.addEventListener('click', () => this.share(e.index));
+      li.appendChild(l);
     }
     const who = document.createElement('span');
     who.className = 'who';
@@ -1034,11 +1042,28 @@ export class GameUI {
     el.hidden = true;
   }
 
-  async share() {
+  /** Puts the game's link in the address bar (and the clipboard); with
+   *  `shot`, the link also replays that action's shot when opened. */
+  async share(shot) {
     if (!this.g) return;
-    const link = this.link();
+    let link = this.link();
     if (!link) return;
-    const frag = `#game=${link}`;
+    if (Number.isInteger(shot)) {
+      // The game up to and including that shot: the link opens on the
+      // table the shot left, after replaying it.
+      let g2 = null;
+      try {
+        g2 = this.E.gameFromLink(link);
+        g2.undoTo(shot + 1);
+        link = linkText(g2.link());
+      } catch (e) {
+        this.showError(message(e));
+        return;
+      } finally {
+        if (g2) { try { g2.free(); } catch (e) { /* gone */ } }
+      }
+    }
+    const frag = Number.isInteger(shot) ? `#game=${link}&shot=${shot}` : `#game=${link}`;
     try {
       history.replaceState(null, '', frag);
     } catch (e) {
@@ -1085,7 +1110,7 @@ export class GameUI {
     });
     $('shoot').addEventListener('click', () => this.shoot());
     $('undo').addEventListener('click', () => this.undo());
-    $('share').addEventListener('click', () => { this.share(); });
+    $('share').addEventListener('click', () => { this.share(); });  // the whole game
     $('call-ball').addEventListener('change', () => {
       const v = $('call-ball').value;
       this.override.ball = v === '' ? null : Number(v);

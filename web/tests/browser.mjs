@@ -193,9 +193,20 @@ test('a shared link reproduces the shot', async ({ browser, url }) => {
   const got = await two.page.evaluate(() => window.breakshot.state());
   check(JSON.stringify(got.balls) === JSON.stringify(want.balls), 'the balls differ after the link');
   check(got.actions === want.actions && got.player === want.player, 'the game differs after the link');
-  check(one.problems.length === 0 && two.problems.length === 0, one.problems.concat(two.problems).join('\n'));
+  // The shot's own link (its log entry's "link" button) replays it when opened.
+  await one.page.click('#ruling-log .shot-link');
+  const shotHash = await one.page.evaluate(() => location.hash);
+  check(/^#game=[^&]+&shot=0$/.test(shotHash), 'the shot link is ' + shotHash);
+  const three = await openPage(browser, url + shotHash);
+  await three.page.waitForFunction(() => window.breakshot.busy(), null, { timeout: 10000 });  // the replay runs
+  await idle(three.page);
+  const again = await three.page.evaluate(() => window.breakshot.state());
+  check(JSON.stringify(again.balls) === JSON.stringify(want.balls), 'the balls differ after the shot link');
+  const problems = one.problems.concat(two.problems, three.problems);
+  check(problems.length === 0, problems.join('\n'));
   await one.context.close();
   await two.context.close();
+  await three.context.close();
 });
 
 test('the lab runs the two-ball example and draws its energy graph', async ({ browser, url }) => {
