@@ -19,6 +19,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -307,6 +308,91 @@ TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
       EXPECT_EQ(after["t"].get<double>(), result.final_time);
     }
   }
+}
+
+/// Whether two doubles have the same bits (-0 is not +0).
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+/// Checks that bs_playback_frame_data's doubles `d` are the numbers of the
+/// JSON frame `f`, bit for bit.
+void expect_frame_data_is(const double* d, const json& f, const std::string& what) {
+  ASSERT_NE(d, nullptr) << what << ": " << bs_last_error();
+  ASSERT_EQ(error_of(f.dump().c_str()), "") << what;
+  EXPECT_TRUE(same_bits(d[0], f["t"].get<double>())) << what;
+  EXPECT_EQ(d[1], static_cast<double>(f["events"].get<std::size_t>())) << what;
+  EXPECT_EQ(d[2], f["at_rest"].get<bool>() ? 1.0 : 0.0) << what;
+  EXPECT_EQ(d[3], f["complete"].get<bool>() ? 1.0 : 0.0) << what;
+  EXPECT_TRUE(same_bits(d[4], f["energy"].get<double>())) << what;
+  EXPECT_TRUE(same_bits(d[5], f["momentum"][0].get<double>())) << what;
+  EXPECT_TRUE(same_bits(d[6], f["momentum"][1].get<double>())) << what;
+  ASSERT_EQ(d[7], static_cast<double>(f["balls"].size())) << what;
+  for (std::size_t i = 0; i < f["balls"].size(); ++i) {
+    const json& b = f["balls"][i];
+    const double* db = d + 8 + 8 * i;
+    ASSERT_EQ(b.size(), 8U);
+    EXPECT_EQ(db[2], static_cast<double>(b[2].get<int>())) << what << " ball " << i;
+    for (const std::size_t k : {0U, 1U, 3U, 4U, 5U, 6U, 7U}) {
+      EXPECT_TRUE(same_bits(db[k], b[k].get<double>())) << what << " ball " << i << " [" << k << "]";
+    }
+  }
+}
+
+TEST(WebApi, FrameDataIsTheJsonFramesNumbers) {
+  // The 8-ball break, the 1000-ball gas, and a run that max_events stops
+  // (complete turns false): two playbacks, one asked for doubles and one
+  // for JSON at the same times, and the same playback asked for both.
+  json capped = json::parse(read_example("examples/lab/newtons_cradle.json"));
+  capped["max_events"] = 3;
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"break_8ball", read_example("examples/pool/break_8ball.json")},
+      {"gas_1000", read_example("examples/lab/gas_1000.json")},
+      {"newtons_cradle, max_events 3", capped.dump()}};
+  for (const auto& [name, text] : runs) {
+    PlaybackPtr a(bs_playback_new(text.c_str()));
+    PlaybackPtr b(bs_playback_new(text.c_str()));
+    ASSERT_NE(a, nullptr) << bs_last_error();
+    ASSERT_NE(b, nullptr) << bs_last_error();
+    bool saw_incomplete = false;
+    for (const double t : {0.0, 0.0, 0.01, 1.0 / 60.0, 0.25, 0.5, 1.0, 1.5, 2.0, 2.75, 4.0, 10.0, 1000.0}) {
+      const std::string what = name + " t=" + std::to_string(t);
+      const double* d = bs_playback_frame_data(a.get(), t);
+      expect_frame_data_is(d, J(bs_playback_frame(b.get(), t)), what + " (two playbacks)");
+      if (d != nullptr && d[3] == 0.0) saw_incomplete = true;
+      // The same handle at the same t: the JSON is written from the same doubles.
+      const json f = J(bs_playback_frame(a.get(), t));
+      expect_frame_data_is(bs_playback_frame_data(a.get(), t), f, what + " (one playback)");
+    }
+    EXPECT_EQ(saw_incomplete, name.find("max_events") != std::string::npos) << name;
+  }
+}
+
+TEST(WebApi, FrameDataErrorsAreThoseOfTheJsonFrame) {
+  const std::string scenario = read_example("examples/pool/break_8ball.json");
+  PlaybackPtr pb(bs_playback_new(scenario.c_str()));
+  ASSERT_NE(pb, nullptr) << bs_last_error();
+  const double* d = bs_playback_frame_data(pb.get(), 0.5);
+  ASSERT_NE(d, nullptr) << bs_last_error();
+  const std::vector<double> before(d, d + 8 + 8 * static_cast<std::size_t>(d[7]));
+  // Time going backwards: NULL, bs_last_error as the JSON frame's error,
+  // and the playback unchanged.
+  EXPECT_EQ(bs_playback_frame_data(pb.get(), 0.25), nullptr);
+  const std::string err = bs_last_error();
+  EXPECT_TRUE(starts_with(error_of(err.c_str()), "t: the frame time goes backwards")) << err;
+  EXPECT_EQ(std::string(bs_playback_frame(pb.get(), 0.25)), err);
+  EXPECT_EQ(bs_playback_frame_data(pb.get(), std::nan("")), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "t:")) << bs_last_error();
+  EXPECT_EQ(bs_playback_frame_data(pb.get(), std::numeric_limits<double>::infinity()), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "t:")) << bs_last_error();
+  d = bs_playback_frame_data(pb.get(), 0.5);
+  ASSERT_NE(d, nullptr) << bs_last_error();
+  for (std::size_t k = 0; k < before.size(); ++k) EXPECT_TRUE(same_bits(d[k], before[k])) << k;
+  // A null handle.
+  EXPECT_EQ(bs_playback_frame_data(nullptr, 0.0), nullptr);
+  EXPECT_EQ(error_of(bs_last_error()), "handle: a null handle");
+  // The buffer belongs to the playback: a later frame overwrites it.
+  const double* later = bs_playback_frame_data(pb.get(), 1.0);
+  ASSERT_NE(later, nullptr) << bs_last_error();
+  EXPECT_EQ(later[0], 1.0);
 }
 
 TEST(WebApi, ShotPlaybackIsTheShotAsTheRulesPlayedIt) {

@@ -4,10 +4,11 @@
  * (web/CMakeLists.txt); both give the same bytes for the same calls
  * (web/tests/identity.mjs).
  *
- * Every function takes and returns UTF-8 JSON text. A returned
+ * Every function takes and returns UTF-8 JSON text (but
+ * bs_playback_frame_data, which returns doubles). A returned
  * `const char*` is owned by the handle and stays valid until the next
  * call on the same handle (bs_version's forever; bs_last_error's until
- * the next failing *_new call). bs_simulate's `char*` belongs to the
+ * the next call that fails with NULL). bs_simulate's `char*` belongs to the
  * caller, who releases it with bs_free. Nothing throws across this
  * boundary: a bad input or a failure is answered with
  * {"error": "<what is wrong, naming the field>"}. Handles are not
@@ -37,6 +38,17 @@ void bs_free(char* p);
  * (see bs_last_error). */
 BsPlayback* bs_playback_new(const char* scenario_json);
 const char* bs_playback_frame(BsPlayback* pb, double t);
+/* The frame of bs_playback_frame (the same rules for t, the same
+ * numbers: its JSON is written from this) as doubles, without text:
+ *   [0] t  [1] events  [2] at_rest (1|0)  [3] complete (1|0)
+ *   [4] energy  [5] px  [6] py  [7] n, the number of balls
+ * then 8 per ball, in scenario order, from [8 + 8 i]:
+ *   x, y, on_table (1|0), vx, vy, energy, px, py.
+ * The buffer belongs to the playback and stays valid until the next call
+ * on it (bs_playback_frame included) or bs_playback_free. NULL on error
+ * (a null handle, t not finite or earlier than the last frame's): see
+ * bs_last_error. */
+const double* bs_playback_frame_data(BsPlayback* pb, double t);
 const char* bs_playback_events(BsPlayback* pb, int from);
 void bs_playback_free(BsPlayback* pb);
 
@@ -55,7 +67,7 @@ const char* bs_game_undo_to(BsGame* g, int n);
 void bs_game_free(BsGame* g);
 
 /* {"error": "..."} of the last *_new call (or bs_game_from_link,
- * bs_game_shot_playback) that returned NULL. */
+ * bs_game_shot_playback, bs_playback_frame_data) that returned NULL. */
 const char* bs_last_error(void);
 
 #ifdef __cplusplus

@@ -12,14 +12,45 @@
 // the web globals it needs), and needs no fetch of a second file.
 //
 // Every method parses the facade's JSON reply and throws an Error with
-// the reply's "error" text. Strings go to the wasm heap through malloc
-// (not the stack: a scenario can be megabytes). Numbers go as JSON text:
+// the reply's "error" text. Playback frames are the exception: pb.frame(t)
+// reads bs_playback_frame_data's doubles from the wasm heap (a 1000-ball
+// frame as JSON text costs ~10 ms to write in wasm, as doubles nothing
+// but the physics) and builds the object JSON.parse would give of
+// bs_playback_frame's reply, which is written from the same doubles.
+// Strings go to the wasm heap through malloc (not the stack: a scenario
+// can be megabytes). Numbers go as JSON text:
 // exact both ways (shortest round-trip digits on each side), and -0 is
 // written as -0.0 so that its sign survives (JSON.stringify drops it).
 
 import createBreakshot from './breakshot.js';
 
 const NEG_ZERO = '__breakshot_negative_zero__';
+
+// bs_playback_frame_data's layout: [t, events, at_rest, complete, energy,
+// px, py, n], then [x, y, on_table, vx, vy, energy, px, py] per ball.
+const FRAME_HEADER = 8;
+const FRAME_STRIDE = 8;
+
+/**
+ * The frame object of bs_playback_frame_data's doubles (an array-like):
+ * what JSON.parse gives of bs_playback_frame's reply for the same frame.
+ */
+export function frameObject(d) {
+  const n = d[7];
+  const balls = new Array(n);
+  for (let i = 0, o = FRAME_HEADER; i < n; i++, o += FRAME_STRIDE) {
+    balls[i] = [d[o], d[o + 1], d[o + 2], d[o + 3], d[o + 4], d[o + 5], d[o + 6], d[o + 7]];
+  }
+  return {
+    t: d[0],
+    balls,
+    energy: d[4],
+    momentum: [d[5], d[6]],
+    events: d[1],
+    at_rest: d[2] !== 0,
+    complete: d[3] !== 0,
+  };
+}
 
 /** JSON text of a value, keeping -0 (a string is passed as it is). */
 export function toJson(value) {
@@ -53,6 +84,7 @@ function rawApi(M) {
     free: c('bs_free', null, ['number']),
     playbackNew: c('bs_playback_new', 'number', ['number']),
     frame: c('bs_playback_frame', 'number', ['number', 'number']),
+    frameData: c('bs_playback_frame_data', 'number', ['number', 'number']),
     events: c('bs_playback_events', 'number', ['number', 'number']),
     playbackFree: c('bs_playback_free', null, ['number']),
     gameNew: c('bs_game_new', 'number', ['number']),
@@ -103,6 +135,20 @@ function rawApi(M) {
       }),
     playbackNew: (text) => withStrings([text], (p) => fn.playbackNew(p)),
     frame: (h, t) => str(fn.frame(h, t)),
+    // The frame's doubles (web_api.hpp, bs_playback_frame_data): a
+    // Float64Array view of the wasm heap, valid until the next call on the
+    // handle; null on error (then lastError()). The view is taken after the
+    // call: the call may grow the memory (ALLOW_MEMORY_GROWTH), which
+    // detaches the views taken before it.
+    frameData: (h, t) => {
+      const p = fn.frameData(h, t);
+      if (!p) return null;
+      if (p % 8 !== 0) throw new Error('bs_playback_frame_data: a misaligned buffer');
+      const heap = M.HEAPF64;
+      const at = p / 8;
+      const n = heap[at + FRAME_HEADER - 1];
+      return heap.subarray(at, at + FRAME_HEADER + FRAME_STRIDE * n);
+    },
     events: (h, from) => str(fn.events(h, from)),
     playbackFree: (h) => fn.playbackFree(h),
     gameNew: (text) => withStrings([text], (p) => fn.gameNew(p)),
@@ -142,8 +188,22 @@ class Playback {
     if (!this._h) throw new Error('this playback has been freed');
     return this._h;
   }
-  /** The exact state at time t (never earlier than the previous frame). */
-  frame(t) { return parse(this._raw.frame(this._handle(), numArg(t, 't'))); }
+  /**
+   * The exact state at time t (never earlier than the previous frame):
+   * {t, balls: [[x, y, on_table, vx, vy, energy, px, py], ...], energy,
+   * momentum: [px, py], events, at_rest, complete}, from the frame's
+   * doubles (no JSON text); the same object as frameJson(t).
+   */
+  frame(t) {
+    const d = this._raw.frameData(this._handle(), numArg(t, 't'));
+    if (!d) {
+      parse(this._raw.lastError());  // throws the error
+      throw new Error('bs_playback_frame_data failed');
+    }
+    return frameObject(d);
+  }
+  /** The same frame from bs_playback_frame's JSON text (for tests). */
+  frameJson(t) { return parse(this._raw.frame(this._handle(), numArg(t, 't'))); }
   /** {from, events: [...]}: the events from index `from` on, in result-file form. */
   events(from = 0) { return parse(this._raw.events(this._handle(), intArg(from, 'from'))); }
   free() {

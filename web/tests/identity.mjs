@@ -122,7 +122,7 @@ if (nativeLines.length && nativeLines[nativeLines.length - 1] === '') nativeLine
 
 const engineJs = path.join(path.dirname(opts.engine), 'engine.js');
 if (!fs.existsSync(engineJs)) usage(`${engineJs} does not exist (scripts/web.sh copies web/page/ next to breakshot.js)`);
-const { loadEngine } = await import(pathToFileURL(engineJs).href);
+const { loadEngine, frameObject } = await import(pathToFileURL(engineJs).href);
 t0 = performance.now();
 const E = await loadEngine({ fresh: true });
 const loadMs = performance.now() - t0;
@@ -140,6 +140,48 @@ function need(map, name, what) {
 }
 const pbOf = (step) => need(playbacks, step.pb, 'playback');
 const gameOf = (step) => need(games, step.game, 'game');
+
+// bs_playback_frame_data's doubles as web_api_probe prints them: the hex
+// of their bits, 16 digits each, separated by spaces; null (an error) as
+// bs_last_error.
+function frameDataText(d) {
+  if (!d) return raw.lastError();
+  const bits = new BigUint64Array(Float64Array.from(d).buffer);
+  let out = '';
+  for (let i = 0; i < bits.length; ++i) out += (i ? ' ' : '') + bits[i].toString(16).padStart(16, '0');
+  return out;
+}
+
+// The same numbers with the same sign of zero, the same keys in the same order.
+function sameValue(a, b) {
+  if (typeof a === 'number') return typeof b === 'number' && Object.is(a, b);
+  if (Array.isArray(a)) return Array.isArray(b) && a.length === b.length && a.every((x, i) => sameValue(x, b[i]));
+  if (a !== null && typeof a === 'object') {
+    if (b === null || typeof b !== 'object' || Array.isArray(b)) return false;
+    const ka = Object.keys(a);
+    return ka.join(',') === Object.keys(b).join(',') && ka.every((k) => sameValue(a[k], b[k]));
+  }
+  return a === b;
+}
+
+// frames_data: bs_playback_frame_data then bs_playback_frame at the same t.
+// The wasm side also checks that engine.js's frame object (pb.frame's, built
+// from the doubles) is JSON.parse of the JSON frame; if not, it prints that
+// instead of the JSON frame, so the line differs from the native one.
+function framesData(h, count, dt) {
+  for (let k = 0; k < count; ++k) {
+    const t = k * dt;
+    const d = raw.frameData(h, t);
+    const object = d ? frameObject(d) : null;
+    print(`frame_data ${k}`, frameDataText(d));
+    const json = raw.frame(h, t);
+    if (object && !sameValue(object, JSON.parse(json))) {
+      print(`frame ${k}`, `engine.js frame object differs from the JSON frame: ${JSON.stringify(object).slice(0, 300)}`);
+    } else {
+      print(`frame ${k}`, json);
+    }
+  }
+}
 
 function frames(h, count, dt) {
   for (let k = 0; k < count; ++k) print(`frame ${k}`, raw.frame(h, k * dt));
@@ -201,6 +243,12 @@ for (const step of script.steps) {
       break;
     case 'frame':
       print('frame', raw.frame(pbOf(step), step.t));
+      break;
+    case 'frames_data':
+      framesData(pbOf(step), step.count, step.dt);
+      break;
+    case 'frame_data':
+      print('frame_data', frameDataText(raw.frameData(step.pb === null ? 0 : pbOf(step), step.t)));
       break;
     case 'events':
       print(`events ${step.from}`, raw.events(pbOf(step), step.from));

@@ -1,5 +1,6 @@
 // Times the wasm engine in node (the figures of docs/web.md, "Speed"):
-// an 8-ball break simulated, and AI decisions at each level.
+// an 8-ball break simulated, the lab's 1000-ball gas played back frame by
+// frame (JSON frames and binary frames), and AI decisions at each level.
 //
 //   node web/tests/timing.mjs [--engine build/web/dist/breakshot.js]
 //                             [--decisions N] [--levels a,b,...] [--budget N]
@@ -63,6 +64,34 @@ for (let k = 0; k < 200; ++k) {
 }
 console.log(`8-ball break: simulate (with the result text) median ${quantile(sim, 0.5).toFixed(3)} ms; ` +
             `playback to rest median ${quantile(phys, 0.5).toFixed(3)} ms`);
+
+// examples/lab/gas_1000.json frame by frame, a sixtieth of a second apart
+// over its two seconds, as the lab plays it at speed 1: the JSON frame
+// (bs_playback_frame, then JSON.parse: pb.frameJson) against the binary
+// frame (bs_playback_frame_data read from the heap: pb.frame); each
+// includes the physics of the step. Twice each, the second timed.
+{
+  const gas = fs.readFileSync(path.join(root, 'examples', 'lab', 'gas_1000.json'), 'utf8');
+  const run = (frame) => {
+    const pb = E.playback(gas);
+    const times = [];
+    for (let k = 0; k <= 120; ++k) {
+      t0 = performance.now();
+      frame(pb, k / 60);
+      times.push(performance.now() - t0);
+    }
+    pb.free();
+    return times;
+  };
+  const mean = (v) => v.reduce((a, b) => a + b, 0) / v.length;
+  for (const [label, frame] of [['JSON frame (call + JSON.parse)', (pb, t) => pb.frameJson(t)],
+                                ['binary frame (pb.frame)', (pb, t) => pb.frame(t)]]) {
+    run(frame);
+    const times = run(frame);
+    console.log(`gas_1000, ${label}: median ${quantile(times, 0.5).toFixed(2)} ms, ` +
+                `p90 ${quantile(times, 0.9).toFixed(2)} ms, mean ${mean(times).toFixed(2)} ms a frame`);
+  }
+}
 
 // The first decisions after loading run partly unoptimized (V8 compiles
 // wasm in tiers): time one apart, then warm up before the figures.

@@ -20,6 +20,12 @@
 //   playback_new_text {as, text}
 //   frames {pb, count, dt}           bs_playback_frame at k * dt, k = 0..count-1
 //   frame {pb, t}
+//   frames_data {pb, count, dt}      at k * dt, k = 0..count-1: bs_playback_frame_data
+//                                    ("frame_data k") then bs_playback_frame at the same t
+//                                    ("frame k")
+//   frame_data {pb, t}               bs_playback_frame_data; "pb": null for a NULL handle
+//   The doubles of bs_playback_frame_data are printed as the hexadecimal of
+//   their bits, 16 digits each, separated by spaces; NULL as bs_last_error.
 //   events {pb, from}
 //   playback_free {pb}               (prints nothing)
 //   game_new {as, config}            bs_game_new(config as JSON text); the state or bs_last_error
@@ -40,7 +46,9 @@
 //   game_free {game}                 (prints nothing)
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -117,6 +125,18 @@ class Probe {
       frames(playback(step), step.at("count").get<int>(), step.at("dt").get<double>());
     } else if (kind == "frame") {
       print("frame", bs_playback_frame(playback(step), step.at("t").get<double>()));
+    } else if (kind == "frames_data") {
+      BsPlayback* pb = playback(step);
+      const int count = step.at("count").get<int>();
+      const double dt = step.at("dt").get<double>();
+      for (int k = 0; k < count; ++k) {
+        const double t = static_cast<double>(k) * dt;
+        print("frame_data " + std::to_string(k), frame_data(bs_playback_frame_data(pb, t)));
+        print("frame " + std::to_string(k), bs_playback_frame(pb, t));
+      }
+    } else if (kind == "frame_data") {
+      BsPlayback* pb = step.at("pb").is_null() ? nullptr : playback(step);
+      print("frame_data", frame_data(bs_playback_frame_data(pb, step.at("t").get<double>())));
     } else if (kind == "events") {
       const int from = step.at("from").get<int>();
       print("events " + std::to_string(from), bs_playback_events(playback(step), from));
@@ -217,6 +237,23 @@ class Probe {
       if (games_.count(name)) bs_game_free(games_[name]);
       games_[name] = g;
     }
+  }
+
+  /// bs_playback_frame_data's doubles as the hex of their bits, or bs_last_error.
+  static std::string frame_data(const double* d) {
+    if (d == nullptr) return bs_last_error();
+    const std::size_t n = 8 + 8 * static_cast<std::size_t>(d[7]);
+    std::string out;
+    out.reserve(17 * n);
+    char buf[17];
+    for (std::size_t i = 0; i < n; ++i) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &d[i], sizeof bits);
+      std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(bits));
+      if (i > 0) out += ' ';
+      out += buf;
+    }
+    return out;
   }
 
   static void frames(BsPlayback* pb, int count, double dt) {
