@@ -26,7 +26,7 @@ while [ $# -gt 0 ]; do
       shift 2
       ;;
     --check) check=1; shift ;;
-    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
     -*) echo "run.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) scenario=$1; shift ;;
   esac
