@@ -21,6 +21,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "physics/error_free.hpp"
+
 namespace breakshot::dm {
 
 namespace {
@@ -30,32 +32,12 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // --- Double-double arithmetic ----------------------------------------------
 
-struct DD {
-  double hi, lo;  // the value hi + lo
-};
-
-// a + b = s + e exactly (Knuth), whatever the magnitudes.
-inline DD two_sum(double a, double b) {
-  const double s = a + b;
-  const double bv = s - a;
-  const double av = s - bv;
-  return {s, (a - av) + (b - bv)};
-}
-
-// Veltkamp's split: a = hi + lo with both halves of 26 bits (|a| < 2^995).
-inline DD split(double a) {
-  const double c = 134217729.0 * a;  // 2^27 + 1
-  const double hi = c - (c - a);
-  return {hi, a - hi};
-}
-
-// a * b = p + e exactly (Dekker), barring under- and overflow.
-inline DD two_prod(double a, double b) {
-  const double p = a * b;
-  const DD x = split(a);
-  const DD y = split(b);
-  return {p, ((x.hi * y.hi - p) + x.hi * y.lo + x.lo * y.hi) + x.lo * y.lo};
-}
+// The value hi + lo; the error-free transformations are in
+// src/physics/error_free.hpp, shared with the root finders.
+using DD = eft::Pair;
+using eft::split;
+using eft::two_prod;
+using eft::two_sum;
 
 // --- Constants -------------------------------------------------------------
 

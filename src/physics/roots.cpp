@@ -48,6 +48,7 @@
 #include <limits>
 
 #include "breakshot/detmath.hpp"
+#include "physics/error_free.hpp"
 
 namespace breakshot {
 namespace {
@@ -62,35 +63,12 @@ constexpr double kGamma = 32.0 * kUnit;
 // pathological input.
 constexpr int kMaxIter = 200;
 
-// --- Error-free transformations (Knuth, Dekker). They need strict IEEE
-// --- evaluation, which the build guarantees with -ffp-contract=off.
+// --- Error-free transformations (src/physics/error_free.hpp).
 
-struct Pair {
-  double hi, lo;  // the exact result is hi + lo
-};
-
-inline Pair two_sum(double a, double b) {
-  const double s = a + b;
-  const double bv = s - a;
-  const double av = s - bv;
-  return {s, (a - av) + (b - bv)};
-}
-
-// Veltkamp's split: a = hi + lo with both halves of 26 bits.
-inline Pair split(double a) {
-  const double c = 134217729.0 * a;  // 2^27 + 1
-  const double hi = c - (c - a);
-  return {hi, a - hi};
-}
-
-// Dekker's product. We use it rather than std::fma because without
-// -mfma the latter is a library call, and this is just as exact.
-inline Pair two_prod(double a, double b) {
-  const double p = a * b;
-  const Pair x = split(a);
-  const Pair y = split(b);
-  return {p, ((x.hi * y.hi - p) + x.hi * y.lo + x.lo * y.hi) + x.lo * y.lo};
-}
+using eft::Pair;
+using eft::split;
+using eft::two_prod;
+using eft::two_sum;
 
 // --- Stepping through doubles. Times are never negative here, and for
 // --- non-negative doubles the bit pattern is monotone in the value.
