@@ -66,15 +66,13 @@ namespace breakshot {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Estimates of the motion use the pool model's defaults (docs/scenario.md).
-constexpr double kGravity = 9.81;
-constexpr double kSlidingFriction = 0.2;
-constexpr double kRollingFriction = 0.01;
-constexpr double kBallBallRestitution = 0.95;
+using ai::kBallBallRestitution;
+using ai::kDeg;
+using ai::kGravity;
+using ai::kInf;
+using ai::kPi;
+using ai::kRollingFriction;
+using ai::kSlidingFriction;
 
 // Cosines of the largest cut angles, correctly rounded (literals, so that
 // no maths library is involved).

@@ -52,16 +52,13 @@ namespace breakshot {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// The pool model's defaults (docs/physics.md), for speed estimates only:
-// the simulations use the scenario's own values.
-constexpr double kGravity = 9.81;
-constexpr double kSlidingFriction = 0.2;
-constexpr double kRollingFriction = 0.01;
-constexpr double kBallBallRestitution = 0.95;
+using ai::kBallBallRestitution;
+using ai::kDeg;
+using ai::kGravity;
+using ai::kInf;
+using ai::kPi;
+using ai::kRollingFriction;
+using ai::kSlidingFriction;
 constexpr double kRailRetention = 0.7;  // speed kept through a cushion, roughly
 
 // The largest cut angles, as their cosines correctly rounded (literals, so
