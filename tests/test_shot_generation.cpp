@@ -17,6 +17,7 @@
 
 #include "breakshot/ai.hpp"
 #include "breakshot/game.hpp"
+#include "ai/evaluate.hpp"
 #include "rules_fixtures.hpp"
 
 namespace {
@@ -230,6 +231,7 @@ TEST(ShotGenCombination, NineBallOneIntoTheNine) {
   const Outcome o = rules.apply(s, Action{c->shot});
   EXPECT_EQ(o.state.phase, Phase::game_over);
   EXPECT_EQ(o.state.winner, 0);
+  EXPECT_EQ(c->leave, 1.0);  // the pot that wins leaves nothing better
 }
 
 TEST(ShotGenEight, CallsMatchTargetAndPocketAndPotsContinueTheTurn) {
@@ -253,6 +255,52 @@ TEST(ShotGenEight, CallsMatchTargetAndPocketAndPotsContinueTheTurn) {
     EXPECT_TRUE(on(o.state, 8)) << what(c);
   }
   EXPECT_GT(pots, 0);
+}
+
+// Each pot carries the rating of its leave: the geometric estimate of the
+// shooter's best next pot on the very table its noiseless play leaves
+// (Rules::apply with the same strike), 1 for the pot that wins, -1 for
+// safeties. Side-spin variants are planned when asked for and pot too.
+TEST(ShotGenEight, LeaveIsTheNextPotOnTheTableThePotLeaves) {
+  const Rules rules = eight_ball_rules();
+  GameState s = bare_table(rules, {0.7, 0.5});
+  s.group = {Group::stripes, Group::solids};
+  put(s, 10, {1.5, 0.8});
+  put(s, 13, {1.9, 0.3});
+  put(s, 2, {1.2, 0.7});
+  put(s, 8, {1.0, 0.25});
+  ShotGenOptions opt;
+  opt.sides = {-0.35, 0.35};
+  opt.leave_sigma_deg = 0.125;
+  const std::vector<CandidateShot> cands = generate_shots(rules, s, opt);
+  expect_well_formed(rules, s, cands);
+  int pots = 0;
+  int sided = 0;
+  bool leaves_differ = false;
+  double first_leave = -2.0;
+  for (const CandidateShot& c : cands) {
+    if (c.target < 0) {
+      EXPECT_EQ(c.leave, -1.0) << what(c);
+      continue;
+    }
+    ++pots;
+    if (c.shot.strike.a != 0.0) {
+      ++sided;
+      EXPECT_EQ(c.shot.strike.b, 0.0) << what(c);
+      expect_pots(rules, s, c);
+    }
+    const Outcome o = rules.apply(s, Action{c.shot});
+    ASSERT_TRUE(o.ruling.turn_continues) << what(c) << ": " << describe(o);
+    EXPECT_EQ(c.leave, ai_detail::best_pot_estimate(rules, o.state, 0.125)) << what(c);
+    EXPECT_GE(c.leave, 0.0);
+    EXPECT_LE(c.leave, 1.0);
+    if (first_leave < -1.0) first_leave = c.leave;
+    leaves_differ = leaves_differ || c.leave != first_leave;
+  }
+  EXPECT_GT(pots, 0);
+  EXPECT_GT(sided, 0);
+  // Speeds and spins send the cue ball to different places.
+  EXPECT_TRUE(leaves_differ);
 }
 
 TEST(ShotGenSafety, FoulFreeSafetiesWhenNothingCanBePotted) {

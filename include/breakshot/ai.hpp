@@ -37,6 +37,11 @@ struct CandidateShot {
   /// A cheap a-priori estimate in [0, 1] of how likely the shot succeeds
   /// (from the geometry), used to rank candidates before any sampling.
   double prior = 0.0;
+  /// Pots: the geometric estimate in [0, 1] of the shooter's best next pot
+  /// on the table the noiseless play leaves (1 when that pot wins the
+  /// game), so that candidates can be ranked by position before any
+  /// sampling. -1 for shots that end the turn (safeties).
+  double leave = -1.0;
 };
 
 struct ShotGenOptions {
@@ -50,10 +55,16 @@ struct ShotGenOptions {
   /// Vertical tip offsets tried (fractions of R: negative draw, positive
   /// follow).
   std::vector<double> spins{-0.4, 0.0, 0.4};
+  /// Side (horizontal) tip offsets tried, as fractions of R, each with a
+  /// centre-height tip at every speed factor (none by default).
+  std::vector<double> sides{};
   /// Secant iterations that correct the aim on noiseless simulations.
   int refine_iterations = 4;
   /// At most this many candidates are returned, best priors first.
   int max_candidates = 120;
+  /// Aim noise (degrees) with which the leave of each pot is rated
+  /// (CandidateShot::leave): the player's own.
+  double leave_sigma_deg = 0.125;
 };
 
 /// Candidate shots for the player to act in `state` (phase shot, cue ball

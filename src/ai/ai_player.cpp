@@ -116,6 +116,9 @@ constexpr double kAcceptThreshold = 0.1;
 constexpr double kStayMargin = 0.02;
 // What a pot's value loses per unit of its sampled miss rate (above).
 constexpr double kMissPenalty = 0.25;
+// What a missed pot is taken to cost when candidates are ranked before
+// sampling: the opponent at an average table (shooter_value(0.5)).
+constexpr double kMissCost = 0.325;
 // Without sampling, a pot is preferred to a safety from this prior up.
 constexpr double kFairPot = 0.2;
 
@@ -186,17 +189,29 @@ ShotGenOptions lookahead_generation(const ShotGenOptions& base) {
   o.kicks = false;
   o.combinations = false;
   o.safeties = false;
-  o.speed_factors = {1.3};
-  o.spins = {0.0};
+  o.speed_factors = {1.0, 1.7};
+  o.spins = {-0.3, 0.0, 0.3};
+  o.sides = {};
   o.refine_iterations = std::min(base.refine_iterations, 2);
-  o.max_candidates = 4;
+  o.max_candidates = 24;
   return o;
+}
+
+/// What a pot's noiseless play promises, for ranking candidates before
+/// they are sampled: the chance that it drops times the value of its
+/// leave, against a miss that hands over an average table. Other shots:
+/// their prior.
+double promise(const CandidateShot& c) {
+  if (c.target < 0 || c.leave < 0.0) return c.prior;
+  return c.prior * shooter_value(c.leave) - (1.0 - c.prior) * kMissCost;
 }
 
 class AiPlayer final : public Player {
  public:
   explicit AiPlayer(AiLevel level)
-      : level_(std::move(level)), sigma_(ai_detail::estimate_sigma(level_.noise)) {}
+      : level_(std::move(level)), sigma_(ai_detail::estimate_sigma(level_.noise)) {
+    level_.generation.leave_sigma_deg = sigma_;
+  }
 
   std::string name() const override { return level_.name; }
   std::optional<NoiseModel> noise() const override { return level_.noise; }
@@ -371,9 +386,10 @@ class AiPlayer final : public Player {
   /// speed and spin variants with nearly equal priors, so a plain cut by
   /// prior could hold only safeties, or one line. So three quarters of the
   /// places go to pots and a quarter to safeties (either filling in for
-  /// the other when short), and the first pass takes the best variant of
-  /// each line (kind, balls, pocket) before any second variant. The
-  /// result keeps the prior order within each part.
+  /// the other when short). Pots are ranked by their promise (the prior
+  /// times the value of the leave of their noiseless play), safeties by
+  /// prior, and the first pass takes the best variant of each line (kind,
+  /// balls, pocket) before any second variant.
   static std::vector<CandidateShot> shortlist(std::vector<CandidateShot> cands, std::size_t n) {
     if (cands.size() <= n) return cands;
     std::vector<std::size_t> pots;
@@ -398,6 +414,13 @@ class AiPlayer final : public Player {
       firsts.insert(firsts.end(), rest.begin(), rest.end());
       return firsts;
     };
+    // Pots by what their noiseless play promises: the chance that they
+    // drop times the value of the leave, against a miss that hands over
+    // an average table. So the variants of a line that leave the cue ball
+    // well are the ones sampled.
+    std::stable_sort(pots.begin(), pots.end(), [&](std::size_t a, std::size_t b) {
+      return promise(cands[a]) > promise(cands[b]);
+    });
     pots = spread(pots);
     safes = spread(safes);
     std::size_t n_safe = std::min(safes.size(), std::max<std::size_t>(1, n / 4));
@@ -459,10 +482,26 @@ class AiPlayer final : public Player {
       // Playing safe: the static value without the pot.
       const double safe =
           stat - ai_detail::kShooterGain * best_pot_estimate(rules, g, sigma_);
-      std::vector<CandidateShot> next = generate_shots(rules, g, gen);
-      std::stable_sort(next.begin(), next.end(),
-                       [](const CandidateShot& a, const CandidateShot& b) { return a.prior > b.prior; });
-      if (next.size() > kNext) next.resize(kNext);
+      // The shooter's best pots there by promise (speed and spin variants
+      // ranked by the leave they play for), one variant per line first.
+      std::vector<CandidateShot> all = generate_shots(rules, g, gen);
+      std::stable_sort(all.begin(), all.end(), [](const CandidateShot& a, const CandidateShot& b) {
+        return promise(a) > promise(b);
+      });
+      std::vector<CandidateShot> next;
+      for (int pass = 0; pass < 2 && next.size() < kNext; ++pass) {
+        for (const CandidateShot& c : all) {
+          if (next.size() >= kNext) break;
+          const bool seen = std::any_of(next.begin(), next.end(), [&](const CandidateShot& x) {
+            return x.kind == c.kind && x.target == c.target && x.pocket == c.pocket;
+          });
+          const bool same = std::any_of(next.begin(), next.end(), [&](const CandidateShot& x) {
+            return x.shot == c.shot;
+          });
+          if (same || (pass == 0 && seen)) continue;
+          next.push_back(c);
+        }
+      }
       double q = kNoValue;
       for (const CandidateShot& c : next) {
         double s = 0.0;
@@ -833,9 +872,14 @@ AiLevel make_level(std::string_view name) {
   } else if (name == "champion") {
     l.noise = parse_noise("tournament");
     // Twice the samples of the first version and twice the candidates
-    // read a shot deeper: 0.1-0.3 s a decision (median), inside the budget.
-    // (More speed and spin variants, and 90 candidates, were tried and
-    // did no better in 40-game matches.)
+    // read a shot deeper. Five speeds, five tip heights and two side
+    // offsets per line: the shortlist ranks them by the leave of their
+    // noiseless play, so the variants sampled are the ones that play
+    // position (docs/ai.md).
+    l.generation.speed_factors = {1.0, 1.35, 1.8, 2.4, 3.2};
+    l.generation.spins = {-0.45, -0.25, 0.0, 0.25, 0.45};
+    l.generation.sides = {-0.35, 0.35};
+    l.generation.max_candidates = 400;
     l.candidates = 60;
     l.samples = 128;
     l.lookahead = true;

@@ -52,7 +52,8 @@ double best_pot_estimate(const Rules& rules, const GameState& state, double sigm
 /// The same with the cue ball at `cue` instead (for choosing placements):
 /// `kitchen_shot` as the rules would set it after the placement.
 double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
-                              bool kitchen_shot, double sigma_phi_deg);
+                              bool kitchen_shot, double sigma_phi_deg, int* best_ball = nullptr,
+                              int* best_pocket = nullptr);
 
 /// What `after` (the table after an action, any phase) is worth to player
 /// `me`: 1 or -1 for a decided game (0 a draw), else the shooter's value

@@ -2,6 +2,7 @@
 #include "geometry.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace breakshot::ai {
 
@@ -30,6 +31,59 @@ double wall_distance(const Wall& w, Vec2 a, Vec2 b) {
       return std::max(segment_distance(w.a, a, b) - w.radius, 0.0);
   }
   return 0.0;
+}
+
+bool balls_clear(const Layout& lay, double R, Vec2 a, Vec2 b, int skip1, int skip2) {
+  for (std::size_t n = 1; n < lay.on.size(); ++n) {
+    const int num = static_cast<int>(n);
+    if (!lay.on[n] || num == skip1 || num == skip2) continue;
+    const Vec2 p = lay.pos[n];
+    if (dot(p - a, b - a) <= 0.0 && norm(p - a) >= 2.0 * R) continue;
+    if (segment_distance(p, a, b) < 2.0 * R + kBallMargin) return false;
+  }
+  return true;
+}
+
+bool walls_clear(const Table& table, double R, Vec2 a, Vec2 b) {
+  for (const Wall& w : table.walls) {
+    const double need = std::min({R + kWallMargin, wall_distance(w, a, a), wall_distance(w, b, b)});
+    if (wall_distance(w, a, b) < need - 1e-9) return false;
+  }
+  return true;
+}
+
+std::optional<Approach> pocket_approach(const Table& table, double R, const Layout& lay,
+                                        Vec2 from, int pocket, int skip1, int skip2) {
+  const Pocket& pk = table.pockets[static_cast<std::size_t>(pocket)];
+  const double dist = norm(pk.centre - from);
+  if (dist <= pk.radius) return std::nullopt;
+  const Vec2 toward = (pk.centre - from) / dist;
+  const Vec2 across = perp(toward);
+  std::optional<Approach> best;
+  for (double off : {0.0, 0.4, -0.4}) {
+    const Vec2 aim = pk.centre + across * (off * pk.radius);
+    const Vec2 d = (aim - from) / norm(aim - from);
+    const Vec2 f = from - pk.centre;
+    const double half_b = dot(f, d);
+    const double disc = half_b * half_b - (norm2(f) - pk.radius * pk.radius);
+    if (disc <= 0.0) continue;
+    const double s = -half_b - std::sqrt(disc);
+    if (s <= 0.0) continue;
+    const Vec2 end = from + d * s;
+    if (!balls_clear(lay, R, from, end, skip1, skip2)) continue;
+    if (!walls_clear(table, R, from, end)) continue;
+    // Room: how far the path may shift sideways before it meets the jaws
+    // (walls near the pocket only; the rails along the way were checked
+    // above).
+    double room = kInf;
+    for (const Wall& w : table.walls) {
+      if (wall_distance(w, pk.centre, pk.centre) > 0.2) continue;
+      room = std::min(room, wall_distance(w, from, end) - R);
+    }
+    room = std::clamp(room, 0.002, 0.04);
+    if (!best || room > best->room) best = Approach{aim, d, s, room};
+  }
+  return best;
 }
 
 }  // namespace breakshot::ai

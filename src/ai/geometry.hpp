@@ -3,7 +3,10 @@
 // constants both players estimate with.
 #pragma once
 
+#include <cstdint>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "breakshot/table.hpp"
 #include "breakshot/vec.hpp"
@@ -30,5 +33,42 @@ double segments_distance(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1);
 /// Distance from the segment a-b to a wall piece; an arc counts as its
 /// whole circle, which errs on the side of caution.
 double wall_distance(const Wall& w, Vec2 a, Vec2 b);
+
+/// Clearances a planned path keeps: beyond 2R from a ball, beyond R from a
+/// cushion or jaw.
+inline constexpr double kBallMargin = 0.001;  // m
+inline constexpr double kWallMargin = 0.001;  // m
+
+/// Where the balls are: a state's, or a layout left by a simulated shot
+/// (by ball number; the cue ball is number 0 and is never an obstacle).
+struct Layout {
+  std::vector<Vec2> pos;
+  std::vector<std::uint8_t> on;
+};
+
+/// True if a ball moving from a to b stays 2R (and kBallMargin) clear of
+/// every object ball on `lay` except skip1 and skip2 (a ball behind a's
+/// start is none).
+bool balls_clear(const Layout& lay, double R, Vec2 a, Vec2 b, int skip1, int skip2 = -1);
+
+/// True if a ball centre moving from a to b stays R (and kWallMargin)
+/// clear of every cushion and jaw; an end already closer (a ball on a
+/// rail, a bounce point) may keep its distance but not come closer.
+bool walls_clear(const Table& table, double R, Vec2 a, Vec2 b);
+
+/// A ball's path into a pocket: the point aimed at and its room.
+struct Approach {
+  Vec2 aim;             ///< aim point near the pocket centre
+  Vec2 dir;             ///< unit direction of the final leg
+  double length = 0.0;  ///< from the leg's start to the capture circle
+  double room = 0.0;    ///< m the leg may move sideways before a jaw
+};
+
+/// The open path of a ball from `from` into pocket `pocket` with the most
+/// room, among the line to the pocket centre and lines a little to either
+/// side; `skip1` and `skip2` are balls not in the way (the moving ball).
+/// nullopt when every such line meets a ball, a cushion or a jaw.
+std::optional<Approach> pocket_approach(const Table& table, double R, const Layout& lay,
+                                        Vec2 from, int pocket, int skip1, int skip2 = -1);
 
 }  // namespace breakshot::ai

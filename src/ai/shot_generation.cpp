@@ -46,6 +46,7 @@
 #include "breakshot/pool.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
+#include "evaluate.hpp"
 #include "geometry.hpp"
 
 namespace breakshot {
@@ -68,8 +69,6 @@ constexpr double kRailRetention = 0.7;  // speed kept through a cushion, roughly
 constexpr double kMaxCutCos = 0.17364817766693041;
 constexpr double kMaxBankCutCos = 0.34202014332566882;
 constexpr double kMaxComboCutCos = 0.50000000000000011;
-constexpr double kBallMargin = 0.001;         // m beyond 2R between a path and a ball
-constexpr double kWallMargin = 0.001;         // m beyond R between a path and a cushion
 constexpr double kArrival = 0.5;              // m/s the target keeps at the pocket
 constexpr double kMinCueSpeed = 0.8;          // m/s
 constexpr double kMaxPotSpeed = 9.0;          // m/s: faster least speeds are not tried
@@ -90,24 +89,12 @@ Vec2 rotate(Vec2 v, double angle) {
 
 double phi_of(Vec2 v) { return dm::atan2(v.y, v.x) / kDeg; }
 
+using ai::Approach;
+using ai::Layout;
 using ai::segments_distance;
 using ai::wall_distance;
 
 double standard_normal_within(double x) { return dm::erf(x / std::sqrt(2.0)); }
-
-/// Where the balls are: the state's, or a layout left by a simulated shot.
-struct Layout {
-  std::vector<Vec2> pos;
-  std::vector<std::uint8_t> on;
-};
-
-/// A ball's path into a pocket: the point aimed at and its room.
-struct Approach {
-  Vec2 aim;             ///< aim point near the pocket centre
-  Vec2 dir;             ///< unit direction of the final leg
-  double length = 0.0;  ///< from the leg's start to the capture circle
-  double room = 0.0;    ///< m the leg may move sideways before a jaw
-};
 
 /// What a probe of a shot measured on the engine.
 struct Probe {
@@ -241,67 +228,16 @@ class Generator {
   Vec2 pos(int b) const { return state_.position[static_cast<std::size_t>(b)]; }
   bool on(int b) const { return state_.on_table[static_cast<std::size_t>(b)] != 0; }
 
-  /// True if a ball moving from a to b stays 2R (and a margin) clear of
-  /// every object ball on `lay` except skip1 and skip2 (the cue ball's
-  /// own position is never an obstacle; a ball behind a's start is none).
   bool balls_clear(const Layout& lay, Vec2 a, Vec2 b, int skip1, int skip2 = -1) const {
-    for (std::size_t n = 1; n < lay.on.size(); ++n) {
-      const int num = static_cast<int>(n);
-      if (!lay.on[n] || num == skip1 || num == skip2) continue;
-      const Vec2 p = lay.pos[n];
-      if (dot(p - a, b - a) <= 0.0 && norm(p - a) >= 2.0 * R_) continue;
-      if (segment_distance(p, a, b) < 2.0 * R_ + kBallMargin) return false;
-    }
-    return true;
+    return ai::balls_clear(lay, R_, a, b, skip1, skip2);
   }
-
-  /// True if a ball centre moving from a to b stays R (and a margin) clear
-  /// of every cushion and jaw; an end already closer (a ball on a rail, a
-  /// bounce point) may keep its distance but not come closer.
-  bool walls_clear(Vec2 a, Vec2 b) const {
-    for (const Wall& w : table_.walls) {
-      const double need =
-          std::min({R_ + kWallMargin, wall_distance(w, a, a), wall_distance(w, b, b)});
-      if (wall_distance(w, a, b) < need - 1e-9) return false;
-    }
-    return true;
-  }
+  bool walls_clear(Vec2 a, Vec2 b) const { return ai::walls_clear(table_, R_, a, b); }
 
   bool fits(Vec2 p) const { return wall_clearance(table_, p, R_) >= 0.0; }
 
-  /// The open path of a ball from `from` into pocket k with the most room
-  /// among the centre and a little to either side; `skip` are the balls
-  /// not in the way (the moving ball itself).
   std::optional<Approach> approach(const Layout& lay, Vec2 from, int pocket, int skip1,
                                    int skip2 = -1) const {
-    const Pocket& pk = table_.pockets[static_cast<std::size_t>(pocket)];
-    if (norm(pk.centre - from) <= pk.radius) return std::nullopt;
-    const Vec2 across = perp(unit(pk.centre - from));
-    std::optional<Approach> best;
-    for (double off : {0.0, 0.4, -0.4}) {
-      const Vec2 aim = pk.centre + across * (off * pk.radius);
-      const Vec2 d = unit(aim - from);
-      const Vec2 f = from - pk.centre;
-      const double half_b = dot(f, d);
-      const double disc = half_b * half_b - (norm2(f) - pk.radius * pk.radius);
-      if (disc <= 0.0) continue;
-      const double s = -half_b - std::sqrt(disc);
-      if (s <= 0.0) continue;
-      const Vec2 end = from + d * s;
-      if (!balls_clear(lay, from, end, skip1, skip2)) continue;
-      if (!walls_clear(from, end)) continue;
-      // Room: how far the path may shift sideways before it meets the
-      // jaws (walls near the pocket only; the rails along the way were
-      // checked above).
-      double room = kInf;
-      for (const Wall& w : table_.walls) {
-        if (wall_distance(w, pk.centre, pk.centre) > 0.2) continue;
-        room = std::min(room, wall_distance(w, from, end) - R_);
-      }
-      room = std::clamp(room, 0.002, 0.04);
-      if (!best || room > best->room) best = Approach{aim, d, s, room};
-    }
-    return best;
+    return ai::pocket_approach(table_, R_, lay, from, pocket, skip1, skip2);
   }
 
   /// Lateral miss at the pocket per degree of cue aim (m/deg) of a cut
@@ -557,11 +493,12 @@ class Generator {
   // -------------------------------------------------------------------------
   // Simulation
 
-  Simulation start(double phi, double speed, double b) const {
+  Simulation start(double phi, double speed, double b, double a = 0.0) const {
     Scenario sc = base_;
     sc.cue->strike.speed = speed;
     sc.cue->strike.phi = phi;
     sc.cue->strike.b = b;
+    sc.cue->strike.a = a;
     ++simulations_;
     return Simulation(sc);
   }
@@ -690,7 +627,7 @@ class Generator {
   /// run ends some other way) is backed off halfway toward the best aim.
   /// At most `iterations` + 2 simulations.
   std::optional<Refined> refine(double phi0, double speed, double b, const Watch& w,
-                                double slope, int iterations) const {
+                                double slope, int iterations, double a = 0.0) const {
     Refined best;
     bool have = false;
     double best_abs = kInf;
@@ -698,7 +635,7 @@ class Generator {
     std::optional<double> below, above;             // phi with miss < 0, > 0
     double phi = phi0;
     for (int it = 0; it < iterations + 2; ++it) {
-      Simulation sim = start(phi, speed, b);
+      Simulation sim = start(phi, speed, b, a);
       const Probe p = follow(sim, w);
       if (!p.ok) {
         if (!have) return std::nullopt;
@@ -737,7 +674,7 @@ class Generator {
     if (slope == 0.0) {
       // Right on the first try: one more run for the slope, which the
       // variants and the prior need.
-      Simulation sim = start(best.phi + 0.05, speed, b);
+      Simulation sim = start(best.phi + 0.05, speed, b, a);
       const Probe p = follow(sim, w);
       if (p.ok) slope = (p.miss - best.probe.miss) / 0.05;
     }
@@ -771,18 +708,26 @@ class Generator {
     if (slope == 0.0) return;
     const double prior = std::clamp(l.prior_scale * prior_from(l.room, slope), 0.0, 1.0);
 
+    // Tip offsets: every height (b) on the centre line, then each side
+    // offset (a) at centre height.
+    std::vector<std::pair<double, double>> tips;
+    for (double b : opt_.spins) tips.emplace_back(0.0, b);
+    for (double a : opt_.sides) {
+      if (a != 0.0) tips.emplace_back(a, 0.0);
+    }
     for (double factor : opt_.speed_factors) {
-      for (double b : opt_.spins) {
-        // The same ball speed with follow or draw: the tip offset takes
-        // some of the cue's energy into spin.
-        const double spin_comp = (1.0 + m_ / CueParams{}.mass + 2.5 * b * b) /
+      for (const auto& [a, b] : tips) {
+        // The same ball speed with spin: the tip offset takes some of the
+        // cue's energy into spin.
+        const double off2 = a * a + b * b;
+        const double spin_comp = (1.0 + m_ / CueParams{}.mass + 2.5 * off2) /
                                  (1.0 + m_ / CueParams{}.mass);
         const double v = std::clamp(speed * factor * spin_comp, 0.1, kMaxCueSpeed);
         std::optional<Refined> r;
-        if (factor == 1.0 && b == 0.0) {
+        if (factor == 1.0 && b == 0.0 && a == 0.0) {
           r = base;
         } else {
-          r = refine(base->phi, v, b, l.watch, slope, l.kind == ShotKind::direct ? 2 : 4);
+          r = refine(base->phi, v, b, l.watch, slope, l.kind == ShotKind::direct ? 2 : 4, a);
         }
         if (!r || !r->sim) continue;
         const Judged j = judge(*r->sim);
@@ -792,9 +737,10 @@ class Generator {
         c.first = l.first;
         c.target = l.target;
         c.pocket = l.pocket;
-        c.shot.strike.speed = factor == 1.0 && b == 0.0 ? speed : v;
+        c.shot.strike.speed = factor == 1.0 && b == 0.0 && a == 0.0 ? speed : v;
         c.shot.strike.phi = r->phi;
         c.shot.strike.b = b;
+        c.shot.strike.a = a;
         // 8-ball: the call the rules need. 9-ball: the same call, which
         // the rules ignore but the match counts as a pot attempt (dropped
         // if the rules refuse it).
@@ -802,11 +748,32 @@ class Generator {
         if (!la_.call && rules_.check(state_, Action{c.shot})) c.shot.call.reset();
         // A little less for the harder strokes, so that ties go to the
         // simpler one.
-        c.prior = prior * (1.0 - 0.03 * std::abs(b)) * (factor > 2.0 ? 0.97 : 1.0);
+        c.prior = prior * (1.0 - 0.03 * (std::abs(b) + std::abs(a))) * (factor > 2.0 ? 0.97 : 1.0);
         if (rules_.check(state_, Action{c.shot})) continue;
+        c.leave = leave(j, l);
         out.push_back(c);
       }
     }
+  }
+
+  /// The shooter's best next pot on the table a pot's noiseless play
+  /// left (CandidateShot::leave): 1 when the pot wins the game.
+  double leave(const Judged& j, const Line& l) const {
+    const bool wins = eight_ ? l.target == 8 : pocket_of(j, 9) >= 0;
+    if (wins) return 1.0;
+    GameState next = state_;
+    next.position = j.after.pos;
+    next.on_table = j.after.on;
+    next.ball_in_hand = BallInHand::none;
+    next.kitchen_shot = false;
+    const auto me = static_cast<std::size_t>(state_.player);
+    if (eight_ && next.group[me] == Group::none && l.target != 8) {
+      // An open table: the pot gives the shooter the target's group.
+      const Group g = l.target < 8 ? Group::solids : Group::stripes;
+      next.group[me] = g;
+      next.group[1 - me] = g == Group::solids ? Group::stripes : Group::solids;
+    }
+    return ai_detail::best_pot_estimate(rules_, next, opt_.leave_sigma_deg);
   }
 
   // -------------------------------------------------------------------------
