@@ -115,7 +115,7 @@ constexpr double kAcceptThreshold = 0.1;
 // that the placement decision settles.
 constexpr double kStayMargin = 0.02;
 // What a pot's value loses per unit of its sampled miss rate (above).
-constexpr double kMissPenalty = 0.25;
+constexpr double kMissPenalty = 0.4;
 // What a missed pot is taken to cost when candidates are ranked before
 // sampling: the opponent at an average table (shooter_value(0.5)).
 constexpr double kMissCost = 0.325;
