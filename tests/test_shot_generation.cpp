@@ -234,8 +234,8 @@ TEST(ShotGenCombination, NineBallOneIntoTheNine) {
   EXPECT_EQ(c->leave, 1.0);  // the pot that wins leaves nothing better
 }
 
-TEST(ShotGenEight, CallsMatchTargetAndPocketAndPotsContinueTheTurn) {
-  const Rules rules = eight_ball_rules();
+/// An 8-ball table with stripes (10 and 13) to shoot, two solids and the 8.
+GameState stripes_to_shoot(const Rules& rules) {
   GameState s = bare_table(rules, {0.7, 0.5});
   s.group = {Group::stripes, Group::solids};
   put(s, 10, {1.5, 0.8});
@@ -243,6 +243,12 @@ TEST(ShotGenEight, CallsMatchTargetAndPocketAndPotsContinueTheTurn) {
   put(s, 2, {1.2, 0.7});
   put(s, 5, {2.1, 0.9});
   put(s, 8, {1.0, 0.25});
+  return s;
+}
+
+TEST(ShotGenEight, CallsMatchTargetAndPocketAndPotsContinueTheTurn) {
+  const Rules rules = eight_ball_rules();
+  const GameState s = stripes_to_shoot(rules);
   const std::vector<CandidateShot> cands = generate_shots(rules, s, ShotGenOptions{});
   expect_well_formed(rules, s, cands);
   int pots = 0;
@@ -263,12 +269,7 @@ TEST(ShotGenEight, CallsMatchTargetAndPocketAndPotsContinueTheTurn) {
 // safeties. Side-spin variants are planned when asked for and pot too.
 TEST(ShotGenEight, LeaveIsTheNextPotOnTheTableThePotLeaves) {
   const Rules rules = eight_ball_rules();
-  GameState s = bare_table(rules, {0.7, 0.5});
-  s.group = {Group::stripes, Group::solids};
-  put(s, 10, {1.5, 0.8});
-  put(s, 13, {1.9, 0.3});
-  put(s, 2, {1.2, 0.7});
-  put(s, 8, {1.0, 0.25});
+  const GameState s = stripes_to_shoot(rules);
   ShotGenOptions opt;
   opt.sides = {-0.35, 0.35};
   opt.leave_sigma_deg = 0.125;
