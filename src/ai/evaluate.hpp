@@ -42,15 +42,18 @@ inline double shooter_value(double p) { return kShooterBase + kShooterGain * p; 
 
 /// Geometric estimate in [0, 1] of the best pot the player to act in
 /// `state` (phase shot, cue ball on the table) has: ghost-ball aim at
-/// each legal ball and pocket with open paths, succeeding when the aim
-/// error (sigma `sigma_phi_deg`, carried through the cut to the object
-/// ball) keeps the object ball within the pocket's tolerance. A few
-/// microseconds; it sees no throw, kisses or speed, which is what the
-/// sampling is for.
+/// each legal ball and pocket with open paths (the object ball's line
+/// past the cushions and jaws checked as shot generation plans it),
+/// succeeding when the aim error (sigma `sigma_phi_deg`, carried through
+/// the cut to the object ball) keeps the object ball within the pocket's
+/// tolerance; fitted to sampled play (docs/ai.md). Tens of microseconds;
+/// it sees no throw, kisses or speed, which is what the sampling is for.
 double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg);
 
 /// The same with the cue ball at `cue` instead (for choosing placements):
-/// `kitchen_shot` as the rules would set it after the placement.
+/// `kitchen_shot` as the rules would set it after the placement. The pot
+/// it rates is stored in *best_ball and *best_pocket when given (left
+/// alone when there is none).
 double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
                               bool kitchen_shot, double sigma_phi_deg, int* best_ball = nullptr,
                               int* best_pocket = nullptr);
