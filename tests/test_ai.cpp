@@ -313,6 +313,47 @@ TEST(AiPlayer, SameSeedAndBudgetSameActionOnOneAndTwoThreads) {
   }
 }
 
+// The 9-ball lookahead depth applies to 9-ball alone: on an 8-ball table
+// whose decision does depend on the depth (seeds 4 and 7), setting it
+// changes nothing; on a 9-ball table it stands for the 8-ball depth.
+TEST(AiPlayer, NineBallLookaheadDepthAppliesToNineBallOnly) {
+  AiLevel shallow = small_level("champion");
+  shallow.candidates = 5;
+  shallow.samples = 6;
+  shallow.lookahead_candidates = 1;
+  shallow.lookahead_states = 1;
+  AiLevel wide = shallow;
+  wide.lookahead_candidates = 5;
+  wide.lookahead_states = 6;
+  AiLevel deep_nine = shallow;
+  deep_nine.lookahead_candidates_nine = 5;
+  deep_nine.lookahead_states_nine = 6;
+
+  const Rules eight = eight_ball_rules();
+  GameState e = bare_table(eight, {0.7, 0.5});
+  put(e, 1, {1.5, 0.4});
+  put(e, 3, {1.9, 1.0});
+  put(e, 9, {1.2, 0.9});
+  put(e, 8, {2.2, 0.3});
+  for (std::uint64_t seed : {4u, 7u}) {
+    const Action a = make_ai_player(shallow)->decide(eight, e, seed);
+    ASSERT_FALSE(a == make_ai_player(wide)->decide(eight, e, seed)) << "seed " << seed;
+    EXPECT_TRUE(a == make_ai_player(deep_nine)->decide(eight, e, seed)) << "seed " << seed;
+  }
+  const Rules nine = nine_ball_rules();
+  GameState n = bare_table(nine, {0.7, 0.5});
+  put(n, 1, {1.5, 0.4});
+  put(n, 3, {1.9, 1.0});
+  put(n, 9, {2.2, 0.3});
+  for (std::uint64_t seed : {1u, 2u}) {
+    EXPECT_TRUE(make_ai_player(wide)->decide(nine, n, seed) ==
+                make_ai_player(deep_nine)->decide(nine, n, seed))
+        << "seed " << seed;
+  }
+  EXPECT_GT(ai_level("champion").lookahead_candidates_nine,
+            ai_level("champion").lookahead_candidates);
+}
+
 TEST(AiPlayer, WholeGamesAreLegal) {
   // play_game throws if any action is refused.
   for (const GameType g : {GameType::eight_ball, GameType::nine_ball}) {

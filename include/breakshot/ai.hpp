@@ -90,6 +90,14 @@ struct AiLevel {
   /// (a second ply), for the best `lookahead_candidates` candidates.
   bool lookahead = false;
   int lookahead_candidates = 3;
+  /// Tables each of those candidates' samples left that are read a shot
+  /// deeper (0: 8 with 48 samples or more, else 4).
+  int lookahead_states = 0;
+  /// The same two for 9-ball (0: as above). The rotation fixes the next
+  /// ball, so the position for it decides more than in 8-ball, where some
+  /// ball of the group is usually on.
+  int lookahead_candidates_nine = 0;
+  int lookahead_states_nine = 0;
   /// Budget per decision in simulations (0: no limit but the above); the
   /// decision is deterministic for a given seed and this budget.
   std::int64_t simulation_budget = 0;

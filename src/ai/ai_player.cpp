@@ -20,7 +20,10 @@
 //    next shot, or the opponent's after a miss or a safety) are searched
 //    one shot deeper (the shooter's best pots, sampled, with playing safe
 //    as a floor), and the difference between that and the static value of
-//    those tables corrects the candidate's value.
+//    those tables corrects the candidate's value. 9-ball reads more
+//    candidates and more of their tables (lookahead_candidates_nine,
+//    lookahead_states_nine): the rotation fixes the next ball, so the
+//    leave for it decides more there.
 //
 // The decisions the rules ask for get their own small searches: the break
 // (placements in the kitchen, aims and speeds, sampled), cue ball in hand
@@ -367,8 +370,12 @@ class AiPlayer final : public Player {
     // Round 3 (lookahead): read the best few candidates' tables a shot
     // deeper and choose among them only, their values being corrected
     // alike.
-    if (level_.lookahead && level_.lookahead_candidates > 0 && !budget.past(0.6)) {
-      const std::size_t nl = std::min<std::size_t>(n, static_cast<std::size_t>(level_.lookahead_candidates));
+    const bool nine = state.game == GameType::nine_ball;
+    const int look_cands = nine && level_.lookahead_candidates_nine > 0
+                               ? level_.lookahead_candidates_nine
+                               : level_.lookahead_candidates;
+    if (level_.lookahead && look_cands > 0 && !budget.past(0.6)) {
+      const std::size_t nl = std::min<std::size_t>(n, static_cast<std::size_t>(look_cands));
       order.resize(nl);
       lookahead(rules, state, seed, order, left, count, value, budget);
     }
@@ -447,7 +454,11 @@ class AiPlayer final : public Player {
                  const std::vector<std::size_t>& top,
                  const std::vector<std::vector<GameState>>& left, const std::vector<int>& count,
                  std::vector<double>& value, Budget& budget) const {
-    const std::size_t kStates = level_.samples >= 48 ? 8 : 4;
+    const int states = state.game == GameType::nine_ball && level_.lookahead_states_nine > 0
+                           ? level_.lookahead_states_nine
+                           : level_.lookahead_states;
+    const std::size_t kStates = states > 0 ? static_cast<std::size_t>(states)
+                                           : (level_.samples >= 48 ? 8 : 4);
     constexpr std::size_t kNext = 3;
     const int next_samples = std::max(4, level_.samples / 6);
     const int me = state.player;
@@ -884,6 +895,8 @@ AiLevel make_level(std::string_view name) {
     l.samples = 128;
     l.lookahead = true;
     l.lookahead_candidates = 10;
+    l.lookahead_candidates_nine = 16;
+    l.lookahead_states_nine = 12;
   }
   return l;
 }
