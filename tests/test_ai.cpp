@@ -293,13 +293,19 @@ TEST(AiPlayer, PlacesTheCueBallBehindTheHeadString) {
   }
 }
 
-TEST(AiPlayer, SameSeedAndBudgetSameActionOnOneAndTwoThreads) {
-  const Rules rules = eight_ball_rules();
+/// An open 8-ball table in play: two solids, a stripe and the 8.
+GameState four_balls(const Rules& rules) {
   GameState s = bare_table(rules, {0.7, 0.5});
   put(s, 1, {1.5, 0.4});
   put(s, 3, {1.9, 1.0});
   put(s, 9, {1.2, 0.9});
   put(s, 8, {2.2, 0.3});
+  return s;
+}
+
+TEST(AiPlayer, SameSeedAndBudgetSameActionOnOneAndTwoThreads) {
+  const Rules rules = eight_ball_rules();
+  const GameState s = four_balls(rules);
   AiLevel l = small_level("champion");
   l.candidates = 5;
   l.samples = 6;
@@ -330,11 +336,7 @@ TEST(AiPlayer, NineBallLookaheadDepthAppliesToNineBallOnly) {
   deep_nine.lookahead_states_nine = 6;
 
   const Rules eight = eight_ball_rules();
-  GameState e = bare_table(eight, {0.7, 0.5});
-  put(e, 1, {1.5, 0.4});
-  put(e, 3, {1.9, 1.0});
-  put(e, 9, {1.2, 0.9});
-  put(e, 8, {2.2, 0.3});
+  const GameState e = four_balls(eight);
   for (std::uint64_t seed : {4u, 7u}) {
     const Action a = make_ai_player(shallow)->decide(eight, e, seed);
     ASSERT_FALSE(a == make_ai_player(wide)->decide(eight, e, seed)) << "seed " << seed;
