@@ -114,6 +114,17 @@ struct AiLevel {
 AiLevel ai_level(std::string_view name);
 std::vector<std::string> ai_level_names();
 
+/// How deep a level's lookahead reads in a game: how many candidates, and
+/// how many of the tables each one's samples left.
+struct LookaheadDepth {
+  int candidates = 0;
+  int states = 0;
+};
+/// `level`'s depth in `game`: in 9-ball its 9-ball fields where set (> 0),
+/// otherwise the 8-ball ones; states unset (0) is 8 with 48 samples or
+/// more, else 4.
+LookaheadDepth lookahead_depth(const AiLevel& level, GameType game);
+
 /// The AI player of `level`. Its noise() is level.noise.
 std::unique_ptr<Player> make_ai_player(const AiLevel& level);
 

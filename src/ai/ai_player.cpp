@@ -370,7 +370,7 @@ class AiPlayer final : public Player {
     // Round 3 (lookahead): read the best few candidates' tables a shot
     // deeper and choose among them only, their values being corrected
     // alike.
-    const int look_cands = look_depth(state.game).candidates;
+    const int look_cands = lookahead_depth(level_, state.game).candidates;
     if (level_.lookahead && look_cands > 0 && !budget.past(0.6)) {
       const std::size_t nl = std::min<std::size_t>(n, static_cast<std::size_t>(look_cands));
       order.resize(nl);
@@ -438,23 +438,6 @@ class AiPlayer final : public Player {
     return out;
   }
 
-  /// How deep the lookahead reads in `game`: how many candidates, and how
-  /// many of the tables each one's samples left (AiLevel; 9-ball's own
-  /// values when set).
-  struct LookDepth {
-    int candidates;
-    int states;
-  };
-  LookDepth look_depth(GameType game) const {
-    const bool nine = game == GameType::nine_ball;
-    const int c = nine && level_.lookahead_candidates_nine > 0 ? level_.lookahead_candidates_nine
-                                                               : level_.lookahead_candidates;
-    int s = nine && level_.lookahead_states_nine > 0 ? level_.lookahead_states_nine
-                                                     : level_.lookahead_states;
-    if (s <= 0) s = level_.samples >= 48 ? 8 : 4;
-    return LookDepth{c, s};
-  }
-
   /// Corrects value[c] for each c in `top`: for up to kStates of the
   /// tables its samples left with a shot to play from where the cue ball
   /// lies (the player's own next shot, or the opponent's after a miss or
@@ -468,7 +451,7 @@ class AiPlayer final : public Player {
                  const std::vector<std::size_t>& top,
                  const std::vector<std::vector<GameState>>& left, const std::vector<int>& count,
                  std::vector<double>& value, Budget& budget) const {
-    const std::size_t kStates = static_cast<std::size_t>(look_depth(state.game).states);
+    const std::size_t kStates = static_cast<std::size_t>(lookahead_depth(level_, state.game).states);
     constexpr std::size_t kNext = 3;
     const int next_samples = std::max(4, level_.samples / 6);
     const int me = state.player;
@@ -915,6 +898,17 @@ constexpr std::array<std::string_view, 5> kLevelNames{"beginner", "amateur", "cl
                                                       "champion"};
 
 }  // namespace
+
+LookaheadDepth lookahead_depth(const AiLevel& level, GameType game) {
+  const bool nine = game == GameType::nine_ball;
+  LookaheadDepth d;
+  d.candidates = nine && level.lookahead_candidates_nine > 0 ? level.lookahead_candidates_nine
+                                                             : level.lookahead_candidates;
+  d.states = nine && level.lookahead_states_nine > 0 ? level.lookahead_states_nine
+                                                     : level.lookahead_states;
+  if (d.states <= 0) d.states = level.samples >= 48 ? 8 : 4;
+  return d;
+}
 
 AiLevel ai_level(std::string_view name) {
   if (std::find(kLevelNames.begin(), kLevelNames.end(), name) == kLevelNames.end()) {
