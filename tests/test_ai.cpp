@@ -154,6 +154,22 @@ TEST(AiPlayer, NineBallPotsCarryAnInformationalCall) {
   EXPECT_TRUE(out.ruling.call_made) << out.ruling.text;
 }
 
+TEST(AiExpectedPot, HalfTheSamplesMustPotTheSameBallInTheSamePocket) {
+  using ai_detail::expected_pot;
+  const Call a{1, 2};
+  const Call b{1, 3};
+  const Call c{4, 2};
+  // 5 of 10 plays pot the 1 in pocket 2: that is the pot expected.
+  EXPECT_EQ(expected_pot({b, a, a, c, a, a, a}, 10), a);
+  // 4 of 10: not enough, though it is the most common.
+  EXPECT_EQ(expected_pot({a, a, a, a, b, c}, 10), std::nullopt);
+  // The same ball in different pockets does not add up.
+  EXPECT_EQ(expected_pot({a, a, a, b, b, b}, 10), std::nullopt);
+  EXPECT_EQ(expected_pot({}, 10), std::nullopt);
+  EXPECT_EQ(expected_pot({a}, 0), std::nullopt);
+  EXPECT_EQ(expected_pot({c, c, c}, 3), c);
+}
+
 TEST(AiPlayer, FindsTheBankWhenEveryDirectPotIsBlocked) {
   // 9-ball: the 1 with a blocker on its line to every pocket (hitting a
   // blocker first is a foul, so no combination either); the way out is

@@ -328,6 +328,47 @@ TEST(ShotGenSafety, FoulFreeSafetiesWhenNothingCanBePotted) {
   }
 }
 
+TEST(ShotGenSafety, VariantsFollowTheOptions) {
+  // The same table as above: safeties on the 3 only. The default tries a
+  // centre ball; the champion's options add tip heights and speeds, and
+  // every safety is one of them.
+  const Rules rules = eight_ball_rules();
+  GameState s = bare_table(rules, {1.5, 0.15});
+  s.group = {Group::solids, Group::stripes};
+  blocked_in_the_middle(rules, s, 3, {9, 10, 11, 12, 13, 14});
+  put(s, 8, {2.2, 1.0});
+  ShotGenOptions opt;
+  opt.banks = false;
+  opt.kicks = false;
+  opt.combinations = false;
+  for (const CandidateShot& c : generate_shots(rules, s, opt)) {
+    EXPECT_EQ(c.shot.strike.b, 0.0) << what(c);
+  }
+  opt.safety_turns = {0.0, 30.0};
+  opt.safety_speeds = {0.9, 2.0};
+  opt.safety_spins = {-0.4, 0.4};
+  const std::vector<CandidateShot> cands = generate_shots(rules, s, opt);
+  expect_well_formed(rules, s, cands);
+  ASSERT_FALSE(cands.empty());
+  bool draw = false;
+  bool follow = false;
+  bool soft = false;
+  bool firm = false;
+  for (const CandidateShot& c : cands) {
+    ASSERT_EQ(c.kind, ShotKind::safety) << what(c);
+    const double b = c.shot.strike.b;
+    EXPECT_TRUE(b == -0.4 || b == 0.4) << what(c);
+    EXPECT_TRUE(c.shot.strike.speed == 0.9 || c.shot.strike.speed == 2.0) << what(c);
+    draw = draw || b < 0.0;
+    follow = follow || b > 0.0;
+    soft = soft || c.shot.strike.speed < 1.0;
+    firm = firm || c.shot.strike.speed > 1.0;
+  }
+  EXPECT_TRUE(draw && follow && soft && firm);
+  // At most 3 lines (full, 30 degrees either way) x 2 speeds x 2 tips.
+  EXPECT_LE(cands.size(), 12u);
+}
+
 /// A post-break table: a noiseless break, then whatever the break left if
 /// the cue ball is on the table and a shot is due (from the breaker's or
 /// the incoming player's side).

@@ -58,6 +58,12 @@ struct ShotGenOptions {
   /// Side (horizontal) tip offsets tried, as fractions of R, each with a
   /// centre-height tip at every speed factor (none by default).
   std::vector<double> sides{};
+  /// Safeties: the cut angles (degrees off a full hit, the line of centres
+  /// turned both ways), cue speeds (m/s) and tip heights (fractions of R)
+  /// tried on every legal ball that can be hit directly.
+  std::vector<double> safety_turns{0.0, 25.0, 50.0};
+  std::vector<double> safety_speeds{1.2, 2.2, 3.4};
+  std::vector<double> safety_spins{0.0};
   /// Secant iterations that correct the aim on noiseless simulations.
   int refine_iterations = 4;
   /// At most this many candidates are returned, best priors first.

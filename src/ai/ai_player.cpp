@@ -88,6 +88,7 @@ namespace {
 
 using ai_detail::best_pot_estimate;
 using ai_detail::best_pot_estimate_from;
+using ai_detail::expected_pot;
 using ai_detail::parallel_map;
 using ai_detail::position_value;
 using ai_detail::sample_shot;
@@ -292,6 +293,7 @@ class AiPlayer final : public Player {
     std::vector<int> count(n, 0);
     std::vector<int> kept(n, 0);
     std::vector<std::vector<GameState>> left(n);
+    std::vector<std::vector<Call>> potted(n);  // the ball and pocket of each sample that potted
     const bool keep = level_.lookahead;
 
     // Samples [from, to) of the candidates in `which`: one unit each.
@@ -302,6 +304,7 @@ class AiPlayer final : public Player {
         double value = 0.0;
         bool kept = false;  ///< the shooter still at the table, or won
         GameState after;
+        Call potted;
       };
       const std::vector<Result> res = parallel_map<Result>(
           which.size() * per, level_.threads, [&](std::size_t u) {
@@ -310,7 +313,7 @@ class AiPlayer final : public Player {
             Result r;
             r.value = sample_shot(rules, state, cands[c].shot, level_.noise,
                                   mix_seed(sample_seed, static_cast<std::uint64_t>(s)), sigma_,
-                                  &r.after);
+                                  &r.after, &r.potted);
             r.kept = r.after.phase == Phase::game_over ? r.after.winner == state.player
                                                        : r.after.player == state.player;
             if (!keep) r.after = GameState{};
@@ -322,6 +325,7 @@ class AiPlayer final : public Player {
         count[c] += 1;
         kept[c] += res[u].kept ? 1 : 0;
         if (keep) left[c].push_back(res[u].after);
+        if (res[u].potted.ball > 0) potted[c].push_back(res[u].potted);
       }
     };
 
@@ -381,7 +385,15 @@ class AiPlayer final : public Player {
     for (std::size_t c : order) {
       if (value[c] > value[best] || (value[c] == value[best] && c < best)) best = c;
     }
-    return Evaluated{cands[best].shot, value[best]};
+    // 9-ball: the call is information only (it marks a pot attempt for
+    // the statistics), so a safety or kick whose samples mostly pocket
+    // one ball in one pocket is called for it, as the pot it is expected
+    // to be.
+    Shoot chosen = cands[best].shot;
+    if (state.game == GameType::nine_ball && !chosen.call) {
+      chosen.call = expected_pot(potted[best], count[best]);
+    }
+    return Evaluated{chosen, value[best]};
   }
 
   /// The candidates worth sampling, from `cands` sorted by prior: the
@@ -884,6 +896,9 @@ AiLevel make_level(std::string_view name) {
     l.generation.spins = {-0.45, -0.25, 0.0, 0.25, 0.45};
     l.generation.sides = {-0.35, 0.35};
     l.generation.max_candidates = 400;
+    l.generation.safety_turns = {0.0, 12.0, 25.0, 38.0, 50.0, 62.0};
+    l.generation.safety_speeds = {0.8, 1.2, 1.7, 2.4, 3.4};
+    l.generation.safety_spins = {-0.4, 0.0, 0.4};
     l.candidates = 60;
     l.samples = 128;
     l.lookahead = true;

@@ -85,6 +85,20 @@ double shooter_side_value(const Rules& rules, const GameState& s, double sigma) 
 
 }  // namespace
 
+std::optional<Call> expected_pot(const std::vector<Call>& potted, int samples) {
+  std::optional<Call> best;
+  std::ptrdiff_t best_n = 0;
+  for (const Call& c : potted) {
+    const std::ptrdiff_t k = std::count(potted.begin(), potted.end(), c);
+    if (k > best_n) {
+      best_n = k;
+      best = c;
+    }
+  }
+  if (samples <= 0 || 2 * best_n < samples) return std::nullopt;
+  return best;
+}
+
 double estimate_sigma(const NoiseModel& noise) { return std::max(noise.phi, kMinSigmaDeg); }
 
 int worker_count(int requested, std::size_t units) {
@@ -197,11 +211,22 @@ double position_value(const Rules& rules, const GameState& after, int me, double
 
 double sample_shot(const Rules& rules, const GameState& state, const Shoot& shot,
                    const NoiseModel& noise, std::uint64_t seed, double sigma,
-                   GameState* after) {
+                   GameState* after, Call* potted) {
   Shoot played = shot;
   played.strike = perturb(shot.strike, noise, rules.config().ball_radius, seed);
   Outcome out = rules.apply(state, played);
   const double v = position_value(rules, out.state, state.player, sigma);
+  if (potted) {
+    *potted = Call{};
+    if (out.ruling.fouls.empty()) {
+      for (std::size_t i = 0; i < out.facts.pocketed.size(); ++i) {
+        if (out.facts.pocketed[i] > 0) {
+          *potted = Call{out.facts.pocketed[i], out.facts.pocket_of[i]};
+          break;
+        }
+      }
+    }
+  }
   if (after) *after = std::move(out.state);
   return v;
 }

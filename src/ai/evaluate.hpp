@@ -12,6 +12,7 @@
 #include <atomic>
 #include <cstdint>
 #include <exception>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -68,10 +69,18 @@ double position_value(const Rules& rules, const GameState& after, int me,
 
 /// Plays `shot` from `state` with the strike perturbed by `noise` under
 /// `seed`, and returns position_value of the result for the shooter. The
-/// resulting state is stored in *after when given.
+/// resulting state is stored in *after when given, and in *potted the
+/// first object ball pocketed and its pocket when the shot was no foul
+/// (ball -1 otherwise).
 double sample_shot(const Rules& rules, const GameState& state, const Shoot& shot,
                    const NoiseModel& noise, std::uint64_t seed, double sigma_phi_deg,
-                   GameState* after = nullptr);
+                   GameState* after = nullptr, Call* potted = nullptr);
+
+/// The ball and pocket that at least half of `samples` noisy plays of a
+/// shot pocketed (`potted`: one entry per play that pocketed an object
+/// ball without a foul, its first such ball), if any: the pot the player
+/// can be said to expect from the shot. Ties go to the first seen.
+std::optional<Call> expected_pot(const std::vector<Call>& potted, int samples);
 
 /// The aim noise (degrees) used for geometric estimates: the model's phi
 /// noise, with a floor so that even a noiseless player ranks easy shots

@@ -847,7 +847,12 @@ class Generator {
       const Vec2 b = pos(t);
       if (norm(b - cue) < 1e-9) continue;
       const Vec2 straight = unit(b - cue);
-      for (double turn : {0.0, 25.0, -25.0, 50.0, -50.0}) {
+      std::vector<double> turns;
+      for (double tu : opt_.safety_turns) {
+        turns.push_back(tu);
+        if (tu != 0.0) turns.push_back(-tu);
+      }
+      for (double turn : turns) {
         const Vec2 n = rotate(straight, turn * kDeg);  // line of centres at contact
         const Vec2 ghost = b - n * (2.0 * R_);
         const double d1 = norm(ghost - cue);
@@ -856,11 +861,14 @@ class Generator {
         if (dot(u, n) < kMaxCutCos) continue;
         if (!balls_clear(layout_, cue, ghost, t) || !walls_clear(cue, ghost)) continue;
         any_open = true;
-        for (double speed : {1.2, 2.2, 3.4}) {
-          CueStrike s;
-          s.speed = speed;
-          s.phi = phi_of(u);
-          add_safety(s, t, false, found);
+        for (double speed : opt_.safety_speeds) {
+          for (double tip : opt_.safety_spins) {
+            CueStrike s;
+            s.speed = speed;
+            s.phi = phi_of(u);
+            s.b = tip;
+            add_safety(s, t, false, found);
+          }
         }
       }
     }
