@@ -304,17 +304,29 @@ TEST(ShotGenEight, LeaveIsTheNextPotOnTheTableThePotLeaves) {
   EXPECT_TRUE(leaves_differ);
 }
 
-TEST(ShotGenSafety, FoulFreeSafetiesWhenNothingCanBePotted) {
-  const Rules rules = eight_ball_rules();
+/// 8-ball, solids to shoot: the 3 in the middle with a stripe on its line
+/// to every pocket, so nothing can be potted, and the options with pots
+/// only (no banks, kicks or combinations): only safeties are left.
+GameState nothing_to_pot(const Rules& rules) {
   GameState s = bare_table(rules, {1.5, 0.15});
   s.group = {Group::solids, Group::stripes};
   blocked_in_the_middle(rules, s, 3, {9, 10, 11, 12, 13, 14});
   put(s, 8, {2.2, 1.0});
+  return s;
+}
+
+ShotGenOptions direct_only() {
   ShotGenOptions opt;
   opt.banks = false;
   opt.kicks = false;
   opt.combinations = false;
-  const std::vector<CandidateShot> cands = generate_shots(rules, s, opt);
+  return opt;
+}
+
+TEST(ShotGenSafety, FoulFreeSafetiesWhenNothingCanBePotted) {
+  const Rules rules = eight_ball_rules();
+  const GameState s = nothing_to_pot(rules);
+  const std::vector<CandidateShot> cands = generate_shots(rules, s, direct_only());
   expect_well_formed(rules, s, cands);
   ASSERT_FALSE(cands.empty());
   for (const CandidateShot& c : cands) {
@@ -329,18 +341,12 @@ TEST(ShotGenSafety, FoulFreeSafetiesWhenNothingCanBePotted) {
 }
 
 TEST(ShotGenSafety, VariantsFollowTheOptions) {
-  // The same table as above: safeties on the 3 only. The default tries a
-  // centre ball; the champion's options add tip heights and speeds, and
-  // every safety is one of them.
+  // Safeties on the 3 only. The default tries a centre ball; the
+  // champion's options add tip heights and speeds, and every safety is
+  // one of them.
   const Rules rules = eight_ball_rules();
-  GameState s = bare_table(rules, {1.5, 0.15});
-  s.group = {Group::solids, Group::stripes};
-  blocked_in_the_middle(rules, s, 3, {9, 10, 11, 12, 13, 14});
-  put(s, 8, {2.2, 1.0});
-  ShotGenOptions opt;
-  opt.banks = false;
-  opt.kicks = false;
-  opt.combinations = false;
+  const GameState s = nothing_to_pot(rules);
+  ShotGenOptions opt = direct_only();
   for (const CandidateShot& c : generate_shots(rules, s, opt)) {
     EXPECT_EQ(c.shot.strike.b, 0.0) << what(c);
   }
