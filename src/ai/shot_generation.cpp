@@ -843,15 +843,15 @@ class Generator {
     std::vector<CandidateShot> found;
     const Vec2 cue = pos(0);
     bool any_open = false;
+    std::vector<double> turns;  // each cut both ways
+    for (double tu : opt_.safety_turns) {
+      turns.push_back(tu);
+      if (tu != 0.0) turns.push_back(-tu);
+    }
     for (int t : targets_) {
       const Vec2 b = pos(t);
       if (norm(b - cue) < 1e-9) continue;
       const Vec2 straight = unit(b - cue);
-      std::vector<double> turns;
-      for (double tu : opt_.safety_turns) {
-        turns.push_back(tu);
-        if (tu != 0.0) turns.push_back(-tu);
-      }
       for (double turn : turns) {
         const Vec2 n = rotate(straight, turn * kDeg);  // line of centres at contact
         const Vec2 ghost = b - n * (2.0 * R_);
