@@ -293,7 +293,9 @@ class AiPlayer final : public Player {
     std::vector<int> count(n, 0);
     std::vector<int> kept(n, 0);
     std::vector<std::vector<GameState>> left(n);
-    std::vector<std::vector<Call>> potted(n);  // the ball and pocket of each sample that potted
+    // 9-ball: the ball and pocket of each sample that potted (below).
+    std::vector<std::vector<Call>> potted(n);
+    const bool nine = state.game == GameType::nine_ball;
     const bool keep = level_.lookahead;
 
     // Samples [from, to) of the candidates in `which`: one unit each.
@@ -313,7 +315,7 @@ class AiPlayer final : public Player {
             Result r;
             r.value = sample_shot(rules, state, cands[c].shot, level_.noise,
                                   mix_seed(sample_seed, static_cast<std::uint64_t>(s)), sigma_,
-                                  &r.after, &r.potted);
+                                  &r.after, nine ? &r.potted : nullptr);
             r.kept = r.after.phase == Phase::game_over ? r.after.winner == state.player
                                                        : r.after.player == state.player;
             if (!keep) r.after = GameState{};
@@ -390,7 +392,7 @@ class AiPlayer final : public Player {
     // one ball in one pocket is called for it, as the pot it is expected
     // to be.
     Shoot chosen = cands[best].shot;
-    if (state.game == GameType::nine_ball && !chosen.call) {
+    if (nine && !chosen.call) {
       chosen.call = expected_pot(potted[best], count[best]);
     }
     return Evaluated{chosen, value[best]};
