@@ -14,7 +14,10 @@
 //    The strongest level also charges a pot for its sampled miss rate
 //    (kMissPenalty), so that a doubtful pot loses to a safety that is
 //    nearly as good; in 8-ball each declared safety is also tried
-//    unannounced (a first ball that drops then keeps the turn).
+//    unannounced (a first ball that drops then keeps the turn). In
+//    9-ball a chosen safety or kick whose samples mostly pot one ball in
+//    one pocket is called for it (expected_pot), so that the statistics
+//    count it as a pot attempt.
 // 3. Lookahead (champion): for the best `lookahead_candidates`, a few of
 //    the tables their samples leave with a shot to play (the player's
 //    next shot, or the opponent's after a miss or a safety) are searched
