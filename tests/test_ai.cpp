@@ -170,6 +170,41 @@ TEST(AiExpectedPot, HalfTheSamplesMustPotTheSameBallInTheSamePocket) {
   EXPECT_EQ(expected_pot({c, c, c}, 3), c);
 }
 
+TEST(AiCentreAim, AStraightInPotAlongTheBisectorIsAimedStraight) {
+  // A corner pot straight down the pocket's bisector, centre ball: the
+  // corner is its own mirror image about that line, so the aims that pot
+  // the ball lie symmetrically about the straight aim. An aim a quarter
+  // of a degree off it that still pots is brought back to it.
+  const Rules rules = eight_ball_rules();
+  const int pocket = pocket_index(rules, "bottom_right");
+  const Vec2 c = pocket_centre(rules, pocket);
+  const StraightIn si = straight_in(rules, pocket, c + Vec2{-1.0, 1.0}, 0.5, 0.4);
+  GameState s = bare_table(rules, si.cue);
+  put(s, 3, si.object);
+  put(s, 12, {0.4, 0.9});
+  const double straight = std::atan2(si.object.y - si.cue.y, si.object.x - si.cue.x) * 180.0 / kPi;
+  Shoot shot;
+  shot.strike.speed = 2.0;
+  shot.strike.phi = straight + 0.25;
+  shot.call = Call{3, pocket};
+  ASSERT_TRUE(rules.apply(s, Action{shot}).ruling.call_made);
+  const Shoot centred = ai_detail::centre_aim(rules, s, shot);
+  EXPECT_NEAR(centred.strike.phi, straight, 0.03);
+  EXPECT_TRUE(rules.apply(s, Action{centred}).ruling.call_made);
+  // Only the aim moves.
+  Shoot same = centred;
+  same.strike.phi = shot.strike.phi;
+  EXPECT_EQ(same, shot);
+  // A shot that does not pot, or has no call, is left alone.
+  Shoot wide = shot;
+  wide.strike.phi = straight + 20.0;
+  ASSERT_FALSE(rules.apply(s, Action{wide}).ruling.call_made);
+  EXPECT_EQ(ai_detail::centre_aim(rules, s, wide), wide);
+  Shoot uncalled = shot;
+  uncalled.call.reset();
+  EXPECT_EQ(ai_detail::centre_aim(rules, s, uncalled), uncalled);
+}
+
 TEST(AiPlayer, FindsTheBankWhenEveryDirectPotIsBlocked) {
   // 9-ball: the 1 with a blocker on its line to every pocket (hitting a
   // blocker first is a foul, so no combination either); the way out is
@@ -348,6 +383,7 @@ TEST(AiPlayer, NineBallLookaheadDepthAppliesToNineBallOnly) {
   shallow.lookahead_states = 1;
   shallow.lookahead_candidates_nine = 0;  // unset (the champion sets them)
   shallow.lookahead_states_nine = 0;
+  shallow.centre_aim = false;  // the seeds below were found without it
   AiLevel wide = shallow;
   wide.lookahead_candidates = 5;
   wide.lookahead_states = 6;

@@ -104,6 +104,13 @@ struct AiLevel {
   /// ball of the group is usually on.
   int lookahead_candidates_nine = 0;
   int lookahead_states_nine = 0;
+  /// Sample each shortlisted pot also with its aim moved to the middle of
+  /// the range of aims that pot it when played without noise (shot
+  /// generation aims at a point in the pocket, which may sit near one
+  /// edge of that range once jaws, throw and the cushions are counted).
+  /// Both aims are sampled: the move also turns the cue ball's path, so
+  /// the first may leave the better position.
+  bool centre_aim = false;
   /// Budget per decision in simulations (0: no limit but the above); the
   /// decision is deterministic for a given seed and this budget.
   std::int64_t simulation_budget = 0;

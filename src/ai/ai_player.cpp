@@ -11,7 +11,9 @@
 //    foul minus the opponent's ball in hand. The evaluation runs in two
 //    rounds: half the samples for every candidate, then the rest for the
 //    best third, so that samples go where the decision is close.
-//    The strongest level also charges a pot for its sampled miss rate
+//    The strongest level also samples each pot a second time with its
+//    aim in the middle of the aims that make it (centre_aim), and
+//    charges a pot for its sampled miss rate
 //    (kMissPenalty), so that a doubtful pot loses to a safety that is
 //    nearly as good; in 8-ball each declared safety is also tried
 //    unannounced (a first ball that drops then keeps the turn). In
@@ -283,6 +285,24 @@ class AiPlayer final : public Player {
         CandidateShot open = cands[i];
         open.shot.safety = false;
         if (!rules.check(state, open.shot)) cands.push_back(open);
+      }
+    }
+    if (level_.centre_aim) {
+      // Each pot also aimed at the middle of the aims that make it
+      // (evaluate.hpp), as a second candidate: the move turns the cue
+      // ball's path after the contact, so the original aim may leave the
+      // better position; the samples decide.
+      const std::size_t n0 = cands.size();
+      const std::vector<Shoot> centred =
+          parallel_map<Shoot>(n0, level_.threads, [&](std::size_t i) {
+            return cands[i].target >= 0 ? ai_detail::centre_aim(rules, state, cands[i].shot)
+                                        : cands[i].shot;
+          });
+      for (std::size_t i = 0; i < n0; ++i) {
+        if (centred[i] == cands[i].shot) continue;
+        CandidateShot c = cands[i];
+        c.shot = centred[i];
+        cands.push_back(c);
       }
     }
     const std::size_t n = cands.size();
@@ -910,6 +930,7 @@ AiLevel make_level(std::string_view name) {
     l.lookahead_candidates = 10;
     l.lookahead_candidates_nine = 16;
     l.lookahead_states_nine = 12;
+    l.centre_aim = true;
   }
   return l;
 }

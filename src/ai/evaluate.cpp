@@ -99,6 +99,51 @@ std::optional<Call> expected_pot(const std::vector<Call>& potted, int samples) {
   return best;
 }
 
+Shoot centre_aim(const Rules& rules, const GameState& state, const Shoot& shot) {
+  if (!shot.call) return shot;
+  const auto makes = [&](double phi) {
+    Shoot s = shot;
+    s.strike.phi = phi;
+    const Outcome o = rules.apply(state, Action{s});
+    if (!o.ruling.call_made) return false;
+    if (o.state.phase == Phase::game_over) return o.state.winner == state.player;
+    return o.state.player == state.player;
+  };
+  const double phi0 = shot.strike.phi;
+  if (!makes(phi0)) return shot;
+  // The last aim that makes the pot on one side (dir +1 or -1).
+  const auto edge = [&](double dir) {
+    constexpr double kFirstStep = 0.04;  // degrees
+    constexpr double kLastStep = 1.28;
+    constexpr int kHalvings = 6;
+    double good = phi0;
+    double bad = phi0;
+    bool found = false;
+    for (double step = kFirstStep; step <= kLastStep + 1e-12; step *= 2.0) {
+      const double x = phi0 + dir * step;
+      if (!makes(x)) {
+        bad = x;
+        found = true;
+        break;
+      }
+      good = x;
+    }
+    if (!found) return good;
+    for (int k = 0; k < kHalvings; ++k) {
+      const double mid = 0.5 * (good + bad);
+      (makes(mid) ? good : bad) = mid;
+    }
+    return good;
+  };
+  const double lo = edge(-1.0);
+  const double hi = edge(1.0);
+  const double mid = 0.5 * (lo + hi);
+  if (mid == phi0 || !makes(mid)) return shot;
+  Shoot out = shot;
+  out.strike.phi = mid;
+  return out;
+}
+
 double estimate_sigma(const NoiseModel& noise) { return std::max(noise.phi, kMinSigmaDeg); }
 
 int worker_count(int requested, std::size_t units) {
