@@ -23,7 +23,8 @@
 // on every machine and, in wasm, quick enough for a page (measured in
 // docs/web.md):
 //   beginner 100 (it samples nothing)   amateur 600   club 2000
-//   expert 4000   champion 20000 (its 9-ball lookahead alone can take 12000)
+//   expert 4000   champion 24000 (its 9-ball lookahead alone can take 12000,
+//   and its sampling of up to 105 candidates before that 9000)
 // A game's config may set "ai_budget" to override them all (tests).
 //
 // Links. A link is "v1." followed by the base64url (RFC 4648 section 5,
@@ -110,7 +111,7 @@ std::int64_t web_budget(std::string_view level) {
   if (level == "amateur") return 600;
   if (level == "club") return 2000;
   if (level == "expert") return 4000;
-  if (level == "champion") return 20000;
+  if (level == "champion") return 24000;
   return 100;  // beginner: samples nothing, the budget is never taken
 }
 
