@@ -85,10 +85,11 @@ std::optional<Call> expected_pot(const std::vector<Call>& potted, int samples);
 /// `shot` (a called pot) with its aim moved to the middle of the range of
 /// aims (phi, all else fixed) around its own for which the noiseless play
 /// from `state` makes the call and keeps the turn (or wins): each edge is
-/// found by steps that double from 0.04 degrees (to at most 1.28) and
-/// then halving six times, to within about 0.01 degrees. A Gaussian aim error then
+/// found by steps that double from 0.04 degrees (to at most 1.28), then
+/// six halvings, to within about 0.01 degrees. A Gaussian aim error then
 /// has the most room on both sides. The shot is returned unchanged when
-/// its own aim does not make the pot. Deterministic; about 25 plays.
+/// its own aim does not make the pot, or has no call. Deterministic;
+/// about 25 plays.
 Shoot centre_aim(const Rules& rules, const GameState& state, const Shoot& shot);
 
 /// The aim noise (degrees) used for geometric estimates: the model's phi
