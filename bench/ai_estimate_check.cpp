@@ -19,10 +19,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <optional>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "ai/evaluate.hpp"
@@ -30,6 +28,7 @@
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/record.hpp"
+#include "record_file.hpp"
 
 namespace {
 
@@ -88,20 +87,9 @@ int main(int argc, char** argv) {
   std::array<Bin, 10> bins{};
   int tables = 0;
   for (int i = 1; i < argc; ++i) {
-    std::ifstream in(argv[i]);
-    if (!in) {
-      std::fprintf(stderr, "ai_estimate_check: cannot read %s\n", argv[i]);
-      return 1;
-    }
-    std::stringstream text;
-    text << in.rdbuf();
-    const auto read = read_record(text.str());
-    if (const auto* err = std::get_if<RecordError>(&read)) {
-      std::fprintf(stderr, "ai_estimate_check: %s: %s: %s\n", argv[i], err->path.c_str(),
-                   err->reason.c_str());
-      return 1;
-    }
-    const GameRecord& rec = std::get<GameRecord>(read);
+    const std::optional<GameRecord> read = bench_tools::read_record_file("ai_estimate_check", argv[i]);
+    if (!read) return 1;
+    const GameRecord& rec = *read;
     const Rules rules(rec.config);
     for (const RecordedAction& a : rec.actions) {
       const GameState& s = a.after;

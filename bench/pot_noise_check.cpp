@@ -27,8 +27,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -37,6 +36,7 @@
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/record.hpp"
+#include "record_file.hpp"
 
 namespace {
 
@@ -91,20 +91,9 @@ int main(int argc, char** argv) {
   std::array<double, 5> sum{};  // chosen, centred, aim only, speed only, tip only
   std::array<int, 5> offsets{};  // |chosen - middle| in quarters of sigma, the last open
   for (int i = first; i < argc; ++i) {
-    std::ifstream in(argv[i]);
-    if (!in) {
-      std::fprintf(stderr, "pot_noise_check: cannot read %s\n", argv[i]);
-      return 1;
-    }
-    std::stringstream text;
-    text << in.rdbuf();
-    const auto read = read_record(text.str());
-    if (const auto* err = std::get_if<RecordError>(&read)) {
-      std::fprintf(stderr, "pot_noise_check: %s: %s: %s\n", argv[i], err->path.c_str(),
-                   err->reason.c_str());
-      return 1;
-    }
-    const GameRecord& rec = std::get<GameRecord>(read);
+    const std::optional<GameRecord> read = bench_tools::read_record_file("pot_noise_check", argv[i]);
+    if (!read) return 1;
+    const GameRecord& rec = *read;
     int seat = -1;
     for (int p = 0; p < 2; ++p) {
       if (rec.players[static_cast<std::size_t>(p)] == who) seat = p;
