@@ -1,6 +1,6 @@
 // How a player's runs from its own break end (docs/ai.md, "What limits
-// the champion"): the break-and-run rate with three times the breaks of a
-// 200-game match for about a third of its time, and the causes.
+// the champion"): the break-and-run rate on three times the breaks of a
+// 200-game match, in less time than the match, and how the runs end.
 //
 //   run_probe [--game eight_ball|nine_ball] [--player NAME] [--racks N]
 //             [--seed S] [--noise SPEC]
@@ -45,70 +45,58 @@ namespace {
 
 using namespace breakshot;
 
-constexpr std::uint64_t kRackStream = 0x7261636bULL;       // "rack"
-constexpr std::uint64_t kDecideStream = 0x646563696465ULL; // "decide"
-constexpr std::uint64_t kNoiseStream = 0x6e6f697365ULL;    // "noise"
+constexpr std::uint64_t kRackStream = 0x7261636bULL;      // "rack"
+constexpr std::uint64_t kDecideStream = 0x646563696465ULL;  // "decide"
+constexpr std::uint64_t kNoiseStream = 0x6e6f697365ULL;     // "noise"
 
 enum class End { won, break_lost, missed_pot, safety, foul, lost, draw };
 
-constexpr std::array<const char *, 7> kEndNames{"won (break-and-run)",
-                                                "break passed the table",
-                                                "missed pot",
-                                                "safety",
-                                                "foul",
-                                                "lost at the table",
-                                                "shot limit"};
+constexpr std::array<const char*, 7> kEndNames{"won (break-and-run)", "break passed the table",
+                                               "missed pot", "safety", "foul", "lost at the table",
+                                               "shot limit"};
 
 struct Run {
   End end = End::draw;
-  int potted = 0; ///< object balls pocketed after the break
+  int potted = 0;  ///< object balls pocketed after the break
 };
 
-int balls_on(const GameState &s) {
+int balls_on(const GameState& s) {
   int n = 0;
-  for (std::size_t b = 1; b < s.on_table.size(); ++b)
-    n += s.on_table[b];
+  for (std::size_t b = 1; b < s.on_table.size(); ++b) n += s.on_table[b];
   return n;
 }
 
-Run play_rack(const Rules &rules, Player &player, const NoiseModel &noise,
-              std::uint64_t seed, int rack) {
+Run play_rack(const Rules& rules, Player& player, const NoiseModel& noise, std::uint64_t seed,
+              int rack) {
   const std::uint64_t rack_seed =
       mix_seed(mix_seed(seed, kRackStream), static_cast<std::uint64_t>(rack));
   GameState state = rules.start(rack_seed, 0);
   const double radius = rules.config().ball_radius;
   Run run;
-  bool broken = false;
-  int after_break = -1; // balls on the table after the break
+  int after_break = -1;  // balls on the table after the break (-1 before it)
   for (int i = 0; i < rules.config().max_shots; ++i) {
     const bool breaking = state.phase == Phase::break_shot;
-    Action a = player.decide(rules, state,
-                             mix_seed(mix_seed(rack_seed, kDecideStream),
-                                      static_cast<std::uint64_t>(i)));
+    Action a = player.decide(rules, state, mix_seed(mix_seed(rack_seed, kDecideStream),
+                                                    static_cast<std::uint64_t>(i)));
     bool called = false;
     bool declared_safe = false;
-    if (auto *shoot = std::get_if<Shoot>(&a)) {
+    if (auto* shoot = std::get_if<Shoot>(&a)) {
       called = shoot->call.has_value();
       declared_safe = shoot->safety;
-      shoot->strike = perturb(shoot->strike, noise, radius,
-                              mix_seed(mix_seed(rack_seed, kNoiseStream),
-                                       static_cast<std::uint64_t>(i)));
+      const std::uint64_t noise_seed =
+          mix_seed(mix_seed(rack_seed, kNoiseStream), static_cast<std::uint64_t>(i));
+      shoot->strike = perturb(shoot->strike, noise, radius, noise_seed);
     }
     const Outcome out = rules.apply(state, a);
     const bool shot = std::holds_alternative<Shoot>(a);
     state = out.state;
-    if (shot && breaking) {
-      broken = true;
-      after_break = balls_on(state);
-    }
-    if (broken && after_break >= 0)
-      run.potted = after_break - balls_on(state);
+    if (shot && breaking) after_break = balls_on(state);
+    if (after_break >= 0) run.potted = after_break - balls_on(state);
     if (state.phase == Phase::game_over) {
       run.end = state.winner == 0 ? End::won : End::lost;
       return run;
     }
-    if (state.player == 0)
-      continue;
+    if (state.player == 0) continue;
     if (breaking) {
       run.end = End::break_lost;
     } else if (!out.ruling.fouls.empty()) {
@@ -123,21 +111,21 @@ Run play_rack(const Rules &rules, Player &player, const NoiseModel &noise,
   return run;
 }
 
-bool parse_int(std::string_view s, long long *out) {
+bool parse_int(std::string_view s, long long* out) {
   const auto r = std::from_chars(s.data(), s.data() + s.size(), *out);
   return r.ec == std::errc() && r.ptr == s.data() + s.size();
 }
 
 int usage() {
-  std::fprintf(stderr, "usage: run_probe [--game eight_ball|nine_ball] "
-                       "[--player NAME] [--racks N] "
-                       "[--seed S] [--noise SPEC]\n");
+  std::fprintf(stderr,
+               "usage: run_probe [--game eight_ball|nine_ball] [--player NAME] [--racks N] "
+               "[--seed S] [--noise SPEC]\n");
   return 2;
 }
 
-} // namespace
+}  // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
   GameConfig config;
   std::string name = "champion";
   long long racks = 300;
@@ -145,8 +133,7 @@ int main(int argc, char **argv) {
   std::string noise_spec = "tournament";
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
-    if (i + 1 >= argc)
-      return usage();
+    if (i + 1 >= argc) return usage();
     const std::string_view val = argv[++i];
     if (arg == "--game") {
       if (val == "eight_ball") {
@@ -154,19 +141,15 @@ int main(int argc, char **argv) {
       } else if (val == "nine_ball") {
         config.game = GameType::nine_ball;
       } else {
-        std::fprintf(
-            stderr,
-            "run_probe: unknown game \"%.*s\" (eight_ball or nine_ball)\n",
-            static_cast<int>(val.size()), val.data());
+        std::fprintf(stderr, "run_probe: unknown game \"%.*s\" (eight_ball or nine_ball)\n",
+                     static_cast<int>(val.size()), val.data());
         return 2;
       }
     } else if (arg == "--player") {
       name = std::string(val);
     } else if (arg == "--racks") {
       if (!parse_int(val, &racks) || racks < 1 || racks > 1000000) {
-        std::fprintf(
-            stderr,
-            "run_probe: --racks takes a whole number from 1 to 1000000\n");
+        std::fprintf(stderr, "run_probe: --racks takes a whole number from 1 to 1000000\n");
         return 2;
       }
     } else if (arg == "--seed") {
@@ -187,40 +170,33 @@ int main(int argc, char **argv) {
     std::array<int, kEndNames.size()> ends{};
     std::map<int, std::array<int, kEndNames.size()>> by_potted;
     for (long long r = 0; r < racks; ++r) {
-      const Run run =
-          play_rack(rules, *player, noise, static_cast<std::uint64_t>(seed),
-                    static_cast<int>(r));
+      const Run run = play_rack(rules, *player, noise, static_cast<std::uint64_t>(seed),
+                                static_cast<int>(r));
       ++ends[static_cast<std::size_t>(run.end)];
-      if (run.end != End::break_lost)
-        ++by_potted[run.potted][static_cast<std::size_t>(run.end)];
+      if (run.end != End::break_lost) ++by_potted[run.potted][static_cast<std::size_t>(run.end)];
     }
-    const int kept = static_cast<int>(racks) -
-                     ends[static_cast<std::size_t>(End::break_lost)];
+    const int kept = static_cast<int>(racks) - ends[static_cast<std::size_t>(End::break_lost)];
     const int won = ends[static_cast<std::size_t>(End::won)];
     std::printf("%s, %s, %lld racks, seed %lld\n", name.c_str(),
-                config.game == GameType::eight_ball ? "eight_ball"
-                                                    : "nine_ball",
-                racks, seed);
+                config.game == GameType::eight_ball ? "eight_ball" : "nine_ball", racks, seed);
     for (std::size_t k = 0; k < kEndNames.size(); ++k) {
       if (ends[k] > 0 || k <= static_cast<std::size_t>(End::safety)) {
         std::printf("  %-24s %5d\n", kEndNames[k], ends[k]);
       }
     }
-    std::printf("break-and-runs: %d of %lld racks (%.1f %%), %d of the %d kept "
-                "breaks (%.1f %%)\n",
+    std::printf("break-and-runs: %d of %lld racks (%.1f %%), %d of the %d kept breaks (%.1f %%)\n",
                 won, racks, 100.0 * won / static_cast<double>(racks), won, kept,
                 kept > 0 ? 100.0 * won / kept : 0.0);
-    std::printf("runs by balls potted after the break when they ended "
-                "(won/missed/safety/foul/lost):\n");
-    for (const auto &[potted, e] : by_potted) {
-      std::printf("  %2d: %4d %4d %4d %4d %4d\n", potted,
-                  e[static_cast<std::size_t>(End::won)],
+    std::printf(
+        "runs by balls potted after the break when they ended "
+        "(won/missed/safety/foul/lost):\n");
+    for (const auto& [potted, e] : by_potted) {
+      std::printf("  %2d: %4d %4d %4d %4d %4d\n", potted, e[static_cast<std::size_t>(End::won)],
                   e[static_cast<std::size_t>(End::missed_pot)],
-                  e[static_cast<std::size_t>(End::safety)],
-                  e[static_cast<std::size_t>(End::foul)],
+                  e[static_cast<std::size_t>(End::safety)], e[static_cast<std::size_t>(End::foul)],
                   e[static_cast<std::size_t>(End::lost)]);
     }
-  } catch (const std::exception &e) {
+  } catch (const std::exception& e) {
     std::fprintf(stderr, "run_probe: %s\n", e.what());
     return 1;
   }
