@@ -49,14 +49,14 @@ constexpr std::uint64_t kRackStream = 0x7261636bULL;      // "rack"
 constexpr std::uint64_t kDecideStream = 0x646563696465ULL;  // "decide"
 constexpr std::uint64_t kNoiseStream = 0x6e6f697365ULL;     // "noise"
 
-enum class End { won, break_lost, missed_pot, safety, foul, lost, draw };
+enum class End { won, break_lost, missed_pot, safety, foul, lost, shot_limit };
 
 constexpr std::array<const char*, 7> kEndNames{"won (break-and-run)", "break passed the table",
                                                "missed pot", "safety", "foul", "lost at the table",
                                                "shot limit"};
 
 struct Run {
-  End end = End::draw;
+  End end = End::shot_limit;
   int potted = 0;  ///< object balls pocketed after the break
 };
 
