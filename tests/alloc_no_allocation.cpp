@@ -34,3 +34,14 @@ TEST(NoAllocation, PoolBreakAfterSetUp) {
   EXPECT_GT(sim.event_count(), 20u);
   EXPECT_EQ(during, 0) << "allocations while simulating the break";
 }
+
+TEST(NoAllocation, HardEightBallBreakWithClusterImpacts) {
+  Scenario s = make_break_scenario("eight_ball", "9ft", 5, 11.0);
+  ASSERT_TRUE(s.physics.ball_clusters);
+  Simulation sim(s);
+  const long before = g_allocations.load();
+  sim.advance_to_rest();
+  const long during = g_allocations.load() - before;
+  EXPECT_GT(sim.event_count(), 20u);
+  EXPECT_EQ(during, 0) << "allocations while simulating the break";
+}

@@ -319,7 +319,7 @@ const GameRecord& played_game() {
     const Rules rules(config);
     auto p0 = make_player("baseline");
     auto p1 = make_player("baseline");
-    return play_game(rules, *p0, *p1, 0, 20240601, parse_noise("tournament"));
+    return play_game(rules, *p0, *p1, 0, 20240602, parse_noise("tournament"));
   }();
   return record;
 }

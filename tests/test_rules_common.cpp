@@ -154,7 +154,7 @@ TEST(RulesCommonPhase, NoDecisionDuringAShotPhase) {
 
 TEST(RulesCommonPhase, NoShotWhileTheCueBallMustBePlaced) {
   const Rules rules = eight_ball_rules();
-  const Outcome scratched = break_rack(rules, 25, kBreakSpeed);
+  const Outcome scratched = break_rack(rules, 26, kBreakSpeed);
   ASSERT_TRUE(includes(scratched.facts.pocketed, 0));
   const GameState& s = scratched.state;
   ASSERT_TRUE(rules.legal_actions(s).must_place);
@@ -396,7 +396,7 @@ TEST(RulesCommonFacts, AgreeWithASimulatedShot) {
 
 TEST(RulesCommonStalemate, TheGameIsDrawnAfterMaxShots) {
   const Rules rules = nine_ball_rules(2);
-  const Outcome first = break_rack(rules, 1, kBreakSpeed);
+  const Outcome first = break_rack(rules, 4, kBreakSpeed);
   SCOPED_TRACE(describe(first));
   ASSERT_NE(first.state.phase, Phase::game_over);
   ASSERT_EQ(first.state.shots, 1);

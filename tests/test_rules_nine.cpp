@@ -367,7 +367,7 @@ TEST(RulesNinePushOut, AScratchOnAPushOutIsStillAFoul) {
 TEST(RulesNinePushOut, IsAllowedOnlyOnTheShotAfterTheBreak) {
   const Rules rules = nine_ball_rules();
   // After a real break that passes the turn, the incoming player may push out.
-  const Outcome broke = break_rack(rules, 1, kBreakSpeed);
+  const Outcome broke = break_rack(rules, 4, kBreakSpeed);
   SCOPED_TRACE(describe(broke));
   ASSERT_TRUE(broke.ruling.fouls.empty());
   ASSERT_EQ(broke.state.player, 1);

@@ -40,6 +40,12 @@ struct PhysicsParams {
   /// with. This is the rule that keeps inelastic clusters from
   /// collapsing (docs/physics-core.md, "Inelastic collapse").
   double collapse_speed = 1e-5;
+  /// A ball striking a cluster (balls within half a millimetre of each
+  /// other) resolves the impact on the whole cluster at once with Hertz
+  /// contacts instead of pair by pair (docs/physics-core.md, "Clusters").
+  /// Off by default; the games' scenarios (make_break_scenario) turn it
+  /// on so that a break spreads the rack.
+  bool ball_clusters = false;
 };
 
 /// The pool model's default collapse_speed (m/s): larger, because balls

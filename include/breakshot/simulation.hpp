@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "breakshot/ball.hpp"
+#include "breakshot/cluster_impact.hpp"
 #include "breakshot/event.hpp"
 #include "breakshot/scenario.hpp"
 
@@ -150,6 +151,7 @@ class Simulation {
   bool pressed(double out, double acc_n, double window) const;
   void collide_balls(std::int32_t i, std::int32_t j);
   void collide_pool_balls(std::int32_t i, std::int32_t j);
+  bool collide_cluster(std::int32_t i, std::int32_t j, double t);
   void collide_pool_wall(std::int32_t i, std::int32_t w);
   void collide_wall(std::int32_t i, std::int32_t w);
   std::int32_t cell_index(Vec2 p) const;
@@ -157,6 +159,12 @@ class Simulation {
   void cell_unlink(std::int32_t i);
 
   Scenario scenario_;
+  // Working memory of collide_cluster (reserved when the scenario has
+  // ball_clusters, so that an impact allocates nothing).
+  std::vector<std::int32_t> cluster_group_;
+  std::vector<ClusterBody> cluster_bodies_;
+  ClusterScratch cluster_scratch_;
+  ClusterOutcome cluster_out_;
   double now_ = 0.0;     // the clock
   double origin_ = 0.0;  // time of the last event: origin of predictions
   std::uint64_t event_count_ = 0;

@@ -770,7 +770,7 @@ class AiPlayer final : public Player {
       speeds = state.game == GameType::nine_ball
                    ? std::vector<double>{kBreakSpeedHard, kBreakSpeedNine}
                    : std::vector<double>{kBreakSpeedMedium, kBreakSpeedHard};
-      spread = {-0.45, 0.45, -0.25, 0.25};
+      spread = {0.0, -0.45, 0.45, -0.25, 0.25};
       draws = {0.0, kBreakDraw};
     }
     GameState probe = state;

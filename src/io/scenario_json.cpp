@@ -436,7 +436,7 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
   if (!check_fields(*p, path,
                     {"model", "ball_ball_restitution", "ball_ball_friction", "gravity",
                      "deceleration", "sliding_friction", "rolling_friction",
-                     "spinning_friction", "collapse_speed"})) {
+                     "spinning_friction", "collapse_speed", "ball_clusters"})) {
     return false;
   }
 
@@ -506,6 +506,11 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
   if (!optional_number(*p, path, "collapse_speed", ph.collapse_speed) ||
       !positive(ph.collapse_speed, member_path(path, "collapse_speed"))) {
     return false;
+  }
+  // Extension: impacts on clusters resolved at once (Hertz contacts).
+  if (const json* c = find(*p, "ball_clusters")) {
+    if (!c->is_boolean()) return fail(member_path(path, "ball_clusters"), expected("true or false", *c));
+    ph.ball_clusters = c->get<bool>();
   }
   // Without an explicit deceleration a ball slows as a rolling ball does
   // on cloth: mu_r g (0.0981 m/s^2 with the defaults). The pool model

@@ -167,6 +167,7 @@ Scenario make_break_scenario(const std::string& game, const std::string& size,
   s.physics.ball_ball_restitution = 0.95;
   s.physics.ball_ball_friction_fit = true;
   s.physics.collapse_speed = kPoolCollapseSpeed;
+  s.physics.ball_clusters = true;
   s.table = make_pool_table(size);
   const double e = CushionParams{}.restitution;
   BallState cue;

@@ -3,6 +3,7 @@
 // docs/architecture.md follows one scenario through this file.
 #include "breakshot/simulation.hpp"
 
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,6 +20,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Below this many balls every pair is checked; above it a grid of cells
 // keeps the per-event cost independent of the number of balls.
 constexpr std::size_t kCellThreshold = 48;
+
+// With ball_clusters, the working memory of cluster impacts is reserved at
+// set-up for up to this many balls (any pool game); larger scenes grow it
+// when a cluster first needs it.
+constexpr std::size_t kClusterReserveBalls = 64;
 
 // A wall contact counts if the foot of the ball's centre on the wall's
 // line lies on the segment, with this much slack (as a fraction of the
@@ -54,6 +60,19 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
   // Room for the events of a typical shot, so that simulating one
   // allocates nothing after set-up (a break has about 100 events).
   events_.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(scenario_.max_events, 64 + 16 * n)));
+  if (scenario_.physics.ball_clusters && n <= kClusterReserveBalls) {
+    // A cluster holds at most every ball; each impact on one adds an
+    // event per pair that touched (up to three per ball in a rack).
+    events_.reserve(events_.capacity() + 4 * n);
+    const std::size_t pairs = n * (n - 1) / 2;
+    cluster_group_.reserve(n);
+    cluster_bodies_.reserve(n);
+    cluster_scratch_.position.reserve(n);
+    cluster_scratch_.velocity.reserve(n);
+    cluster_scratch_.pairs.reserve(pairs);
+    cluster_out_.velocity.reserve(n);
+    cluster_out_.touched.reserve(pairs);
+  }
   next_.resize(n);
   event_.resize(n);
   heap_.resize(n);
@@ -847,6 +866,99 @@ void Simulation::collide_pool_balls(std::int32_t i, std::int32_t j) {
   for (int k = 0; k < 64 && dot(dp, B.v0 - A.v0) < 0.0; ++k, extra *= 2.0) push(extra);
 }
 
+// An impact of i on j (both moved to t) when more balls lie within
+// kClusterGap of them, or of each other, in a chain: the whole cluster is
+// resolved at once (cluster_impact.hpp). Returns false, doing nothing,
+// for a lone pair or a contact slower than collapse_speed; else applies
+// the new velocities (spins unchanged; the pairwise impact on top when
+// i and j still close), records a ball_ball event for
+// (i, j) and then one for every other pair that exchanged an impulse, and
+// predicts again for every ball of the cluster.
+bool Simulation::collide_cluster(std::int32_t i, std::int32_t j, double t) {
+  const Trajectory& A = traj_[static_cast<std::size_t>(i)];
+  const Trajectory& B = traj_[static_cast<std::size_t>(j)];
+  const Vec2 d = B.p0 - A.p0;
+  const double len = norm(d);
+  if (!(len > 0.0) || dot(A.v0 - B.v0, d) / len < scenario_.physics.collapse_speed) return false;
+  std::vector<std::int32_t>& group = cluster_group_;
+  group.clear();
+  group.push_back(i);
+  group.push_back(j);
+  const auto n = static_cast<std::int32_t>(traj_.size());
+  for (std::size_t g = 0; g < group.size(); ++g) {
+    const auto ug = static_cast<std::size_t>(group[g]);
+    const Vec2 pg = traj_[ug].p0;
+    for (std::int32_t k = 0; k < n; ++k) {
+      const auto uk = static_cast<std::size_t>(k);
+      if (traj_[uk].state == MotionState::pocketed ||
+          std::find(group.begin(), group.end(), k) != group.end()) {
+        continue;
+      }
+      const double gap = norm(position_at(k, t) - pg) - radius_[uk] - radius_[ug];
+      if (gap < kClusterGap) {
+        move_to(k, t);
+        group.push_back(k);
+      }
+    }
+  }
+  if (group.size() < 3) return false;
+  std::vector<ClusterBody>& bodies = cluster_bodies_;
+  bodies.clear();
+  for (std::int32_t k : group) {
+    const auto uk = static_cast<std::size_t>(k);
+    bodies.push_back({traj_[uk].p0, traj_[uk].v0, radius_[uk], scenario_.balls[uk].mass});
+  }
+  struct Restitution final : ClusterRestitution {
+    const Simulation* sim;
+    const std::vector<std::int32_t>* ids;
+    Restitution(const Simulation* s, const std::vector<std::int32_t>* g) : sim(s), ids(g) {}
+    double at(int a, int b) const override {
+      return sim->pair_restitution((*ids)[static_cast<std::size_t>(a)], (*ids)[static_cast<std::size_t>(b)]);
+    }
+  };
+  const Restitution restitution(this, &group);
+  ClusterOutcome& r = cluster_out_;
+  cluster_impact(bodies, restitution, cluster_scratch_, r);
+  for (std::size_t g = 0; g < group.size(); ++g) {
+    const std::int32_t k = group[g];
+    if (scenario_.physics.model == Model::pool) {
+      set_motion(k, r.velocity[g], traj_[static_cast<std::size_t>(k)].w0);
+    } else {
+      set_velocity(k, r.velocity[g]);
+    }
+    ++counter_[static_cast<std::size_t>(k)];
+  }
+  // A grazing contact (closing far slower than the balls slide past each
+  // other) can leave the cluster's contacts with next to no impulse while
+  // the pair, frozen where it touched, still closes: the pairwise impact
+  // then settles that pair, so the same contact never comes up again.
+  if (dot(traj_[static_cast<std::size_t>(j)].v0 - traj_[static_cast<std::size_t>(i)].v0, d) < 0.0) {
+    collide_balls(i, j);
+  }
+  Event ev;
+  ev.time = t;
+  ev.type = EventType::ball_ball;
+  ev.ball = std::min(i, j);
+  ev.other = std::max(i, j);
+  events_.push_back(ev);
+  ++event_count_;
+  for (const auto& [a, b] : r.touched) {
+    const std::int32_t x = group[static_cast<std::size_t>(a)];
+    const std::int32_t y = group[static_cast<std::size_t>(b)];
+    if (std::min(x, y) == ev.ball && std::max(x, y) == ev.other) continue;
+    Event e2 = ev;
+    e2.ball = std::min(x, y);
+    e2.other = std::max(x, y);
+    events_.push_back(e2);
+    ++event_count_;
+  }
+  for (std::int32_t k : group) {
+    predict(k);
+    heap_fix(k);
+  }
+  return true;
+}
+
 void Simulation::collide_pool_wall(std::int32_t i, std::int32_t w) {
   const auto ui = static_cast<std::size_t>(i);
   Trajectory& A = traj_[ui];
@@ -1014,6 +1126,7 @@ bool Simulation::step(double limit) {
       const std::int32_t j = p.other;
       move_to(i, t);
       move_to(j, t);
+      if (scenario_.physics.ball_clusters && collide_cluster(i, j, t)) return true;
       collide_balls(i, j);
       ++counter_[ui];
       ++counter_[static_cast<std::size_t>(j)];

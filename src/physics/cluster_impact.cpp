@@ -1,0 +1,170 @@
+// Simultaneous impacts on clusters of balls (cluster_impact.hpp).
+//
+// Pairwise, instantaneous impacts pass a blow through a chain of balls
+// one contact at a time, as in Newton's cradle: a break shot then sends
+// nearly all its energy into the rack's last balls and leaves the rest
+// where they were racked. Real balls are in contact for about 0.2 ms,
+// far longer than the cue ball takes to close a rack's tenths of a
+// millimetre of gaps, so the contacts overlap in time and share the blow.
+// Here the cluster's contacts are integrated together under Hertz's law
+// (Johnson, Contact Mechanics, 1985, ch. 4), which is how a numerical
+// study of the perfectly racked break obtained its ball speeds
+// (docs/physics-core.md, "Clusters", compares them).
+#include "breakshot/cluster_impact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "breakshot/detmath.hpp"
+
+namespace breakshot {
+
+namespace {
+
+/// Pairs whose surfaces start further apart than this (m) are not
+/// watched: no ball moves that far during an impact.
+constexpr double kWatchGap = 0.01;
+/// Verlet steps per contact duration.
+constexpr double kStepsPerContact = 64.0;
+/// A pair closing from further than this many contact durations away is
+/// left to the event loop (a separate, later impact).
+constexpr double kHorizonContacts = 4.0;
+/// Bound on the work of one impact (steps and free-flight jumps).
+constexpr int kMaxSteps = 200000;
+
+
+
+/// Duration of a Hertz contact closing at `speed` (Johnson, eq. 11.24):
+/// 2.94 times the greatest compression over the speed.
+double contact_duration(const ClusterPair& p, double speed) {
+  const double compression =
+      dm::pow(5.0 * p.reduced * speed * speed / (4.0 * p.stiffness), 0.4);
+  return 2.9432 * compression / speed;
+}
+
+}  // namespace
+
+void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitution& restitution,
+                    ClusterScratch& scratch, ClusterOutcome& out) {
+  const int n = static_cast<int>(bodies.size());
+  std::vector<Vec2>& p = scratch.position;
+  std::vector<Vec2>& v = scratch.velocity;
+  std::vector<ClusterPair>& pairs = scratch.pairs;
+  p.clear();
+  v.clear();
+  pairs.clear();
+  out.velocity.clear();
+  out.touched.clear();
+  out.steps = 0;
+  for (const ClusterBody& b : bodies) {
+    p.push_back(b.position);
+    v.push_back(b.velocity);
+    out.velocity.push_back(b.velocity);
+  }
+
+  const double e_star = kBallYoungModulus / (2.0 * (1.0 - kBallPoisson * kBallPoisson));
+  for (int a = 0; a < n; ++a) {
+    for (int b = a + 1; b < n; ++b) {
+      const ClusterBody& A = bodies[static_cast<std::size_t>(a)];
+      const ClusterBody& B = bodies[static_cast<std::size_t>(b)];
+      ClusterPair q;
+      q.a = a;
+      q.b = b;
+      q.reach = A.radius + B.radius;
+      if (norm(B.position - A.position) - q.reach > kWatchGap) continue;
+      const double r_star = A.radius * B.radius / q.reach;
+      q.stiffness = 4.0 / 3.0 * e_star * std::sqrt(r_star);
+      q.reduced = A.mass * B.mass / (A.mass + B.mass);
+      pairs.push_back(q);
+    }
+  }
+
+  // The step: from the fastest closing speed in the cluster, the shortest
+  // contact there will be (slower contacts last longer).
+  double fastest = 0.0;
+  for (const ClusterPair& q : pairs) {
+    const Vec2 d = p[static_cast<std::size_t>(q.b)] - p[static_cast<std::size_t>(q.a)];
+    const double len = norm(d);
+    if (len > 0.0) {
+      fastest = std::max(fastest, -dot(v[static_cast<std::size_t>(q.b)] - v[static_cast<std::size_t>(q.a)], d) / len);
+    }
+  }
+  if (pairs.empty() || !(fastest > 0.0)) return;
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const ClusterPair& q : pairs) shortest = std::min(shortest, contact_duration(q, fastest));
+  const double dt = shortest / kStepsPerContact;
+  const double horizon = kHorizonContacts * shortest;
+
+  // Forces at the current positions; true if any pair overlaps.
+  const auto compute_forces = [&]() {
+    bool any = false;
+    for (ClusterPair& q : pairs) {
+      const Vec2 d = p[static_cast<std::size_t>(q.b)] - p[static_cast<std::size_t>(q.a)];
+      const double len = norm(d);
+      const double overlap = q.reach - len;
+      if (overlap > 0.0 && len > 0.0) {
+        q.force = d * (q.stiffness * overlap * std::sqrt(overlap) / len);
+        any = true;
+      } else {
+        q.force = {};
+      }
+    }
+    return any;
+  };
+  const auto kick = [&](double h) {
+    for (ClusterPair& q : pairs) {
+      if (q.force.x == 0.0 && q.force.y == 0.0) continue;
+      const Vec2 j = q.force * h;
+      q.impulse = q.impulse + j;
+      v[static_cast<std::size_t>(q.a)] = v[static_cast<std::size_t>(q.a)] - j / bodies[static_cast<std::size_t>(q.a)].mass;
+      v[static_cast<std::size_t>(q.b)] = v[static_cast<std::size_t>(q.b)] + j / bodies[static_cast<std::size_t>(q.b)].mass;
+    }
+  };
+
+  bool touching = compute_forces();
+  while (out.steps < kMaxSteps) {
+    ++out.steps;
+    if (!touching) {
+      // Free flight: on to the next contact among the watched pairs, if it
+      // comes within the horizon.
+      double next = std::numeric_limits<double>::infinity();
+      for (const ClusterPair& q : pairs) {
+        const Vec2 d = p[static_cast<std::size_t>(q.b)] - p[static_cast<std::size_t>(q.a)];
+        const Vec2 w = v[static_cast<std::size_t>(q.b)] - v[static_cast<std::size_t>(q.a)];
+        const double dw = dot(d, w);
+        const double ww = dot(w, w);
+        if (!(dw < 0.0) || !(ww > 0.0)) continue;
+        const double gap2 = dot(d, d) - q.reach * q.reach;
+        if (gap2 <= 0.0) {
+          next = 0.0;
+          break;
+        }
+        const double disc = dw * dw - ww * gap2;
+        if (disc < 0.0) continue;
+        next = std::min(next, (-dw - std::sqrt(disc)) / ww);
+      }
+      if (!(next <= horizon)) break;
+      for (std::size_t k = 0; k < p.size(); ++k) p[k] = p[k] + v[k] * next;
+    }
+    kick(0.5 * dt);
+    for (std::size_t k = 0; k < p.size(); ++k) p[k] = p[k] + v[k] * dt;
+    touching = compute_forces();
+    kick(0.5 * dt);
+  }
+
+  // Each pair's impulse, scaled for its restitution, from the velocities
+  // before the impact.
+  for (const ClusterPair& q : pairs) {
+    if (q.impulse.x == 0.0 && q.impulse.y == 0.0) continue;
+    const Vec2 j = q.impulse * (0.5 * (1.0 + restitution.at(q.a, q.b)));
+    out.velocity[static_cast<std::size_t>(q.a)] =
+        out.velocity[static_cast<std::size_t>(q.a)] - j / bodies[static_cast<std::size_t>(q.a)].mass;
+    out.velocity[static_cast<std::size_t>(q.b)] =
+        out.velocity[static_cast<std::size_t>(q.b)] + j / bodies[static_cast<std::size_t>(q.b)].mass;
+    out.touched.emplace_back(q.a, q.b);
+  }
+}
+
+}  // namespace breakshot
