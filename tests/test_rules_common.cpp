@@ -154,7 +154,7 @@ TEST(RulesCommonPhase, NoDecisionDuringAShotPhase) {
 
 TEST(RulesCommonPhase, NoShotWhileTheCueBallMustBePlaced) {
   const Rules rules = eight_ball_rules();
-  const Outcome scratched = break_rack(rules, 26, kBreakSpeed);
+  const Outcome scratched = break_rack(rules, 25, kBreakSpeed);
   ASSERT_TRUE(includes(scratched.facts.pocketed, 0));
   const GameState& s = scratched.state;
   ASSERT_TRUE(rules.legal_actions(s).must_place);

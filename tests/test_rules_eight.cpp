@@ -163,7 +163,7 @@ TEST(RulesEightBreak, AnIllegalBreakWithAScratchLeavesTheCueBallInHandInTheKitch
 
 TEST(RulesEightBreak, ScratchOnALegalBreakGivesKitchenBallInHand) {
   const Rules rules = eight_ball_rules();
-  const Outcome o = break_rack(rules, 26, kBreakSpeed);
+  const Outcome o = break_rack(rules, 25, kBreakSpeed);
   SCOPED_TRACE(describe(o));
   ASSERT_TRUE(includes(o.facts.pocketed, 0));
   ASSERT_FALSE(includes(o.facts.pocketed, 8));
@@ -660,7 +660,7 @@ TEST(RulesEightEight, PocketedWithoutACallLoses) {
 
 TEST(RulesEightKitchen, PlacingBeyondTheHeadStringIsRejected) {
   const Rules rules = eight_ball_rules();
-  const GameState s = break_rack(rules, 26, kBreakSpeed).state;  // scratch on the break
+  const GameState s = break_rack(rules, 25, kBreakSpeed).state;  // scratch on the break
   ASSERT_EQ(s.ball_in_hand, BallInHand::kitchen);
   ASSERT_EQ(s.player, 1);
   const PlaceCueBall beyond{{rules.head_string() + 0.2, 0.635}};

@@ -28,7 +28,7 @@ Vec2 diagonal_br() { return {2.54 - 0.5, 0.5}; }
 
 TEST(RulesNineBreak, PocketingABallContinuesAndAllowsAPushOut) {
   const Rules rules = nine_ball_rules();
-  const Outcome o = break_rack(rules, 3, kBreakSpeed);
+  const Outcome o = break_rack(rules, 4, kBreakSpeed);
   SCOPED_TRACE(describe(o));
   ASSERT_EQ(o.facts.first_hit, 1);
   ASSERT_FALSE(o.facts.pocketed.empty());
@@ -367,7 +367,7 @@ TEST(RulesNinePushOut, AScratchOnAPushOutIsStillAFoul) {
 TEST(RulesNinePushOut, IsAllowedOnlyOnTheShotAfterTheBreak) {
   const Rules rules = nine_ball_rules();
   // After a real break that passes the turn, the incoming player may push out.
-  const Outcome broke = break_rack(rules, 4, kBreakSpeed);
+  const Outcome broke = break_rack(rules, 2, kBreakSpeed);
   SCOPED_TRACE(describe(broke));
   ASSERT_TRUE(broke.ruling.fouls.empty());
   ASSERT_EQ(broke.state.player, 1);

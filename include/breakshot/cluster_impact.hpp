@@ -70,7 +70,7 @@ inline constexpr double kClusterGap = 0.5e-3;
 /// of the impact (no friction with the cloth or between the balls during
 /// the contact, which lasts a fraction of a millisecond): the bodies move
 /// under the Hertz contact forces F = k d^(3/2) (d the overlap,
-/// k = 4/3 E* sqrt(R*)) by velocity Verlet steps of 1/64 of the shortest
+/// k = 4/3 E* sqrt(R*)) by velocity Verlet steps of 1/16 of the shortest
 /// contact's duration, jumping over free flight, until no pair overlaps
 /// and none closes on another sooner than four contact durations. Each
 /// pair's impulse is then scaled by (1 + e) / 2 with e its restitution,

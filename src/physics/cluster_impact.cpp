@@ -26,8 +26,9 @@ namespace {
 /// Pairs whose surfaces start further apart than this (m) are not
 /// watched: no ball moves that far during an impact.
 constexpr double kWatchGap = 0.01;
-/// Verlet steps per contact duration.
-constexpr double kStepsPerContact = 64.0;
+/// Verlet steps per contact duration: 16 give the published break of
+/// tests/test_cluster_impact.cpp to within 0.02 (cue ball at 10) of 64.
+constexpr double kStepsPerContact = 16.0;
 /// A pair closing from further than this many contact durations away is
 /// left to the event loop (a separate, later impact).
 constexpr double kHorizonContacts = 4.0;
@@ -102,7 +103,12 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
     bool any = false;
     for (ClusterPair& q : pairs) {
       const Vec2 d = p[static_cast<std::size_t>(q.b)] - p[static_cast<std::size_t>(q.a)];
-      const double len = norm(d);
+      const double dd = dot(d, d);
+      if (dd >= q.reach * q.reach) {  // apart: no force, and no square root
+        q.force = {};
+        continue;
+      }
+      const double len = std::sqrt(dd);
       const double overlap = q.reach - len;
       if (overlap > 0.0 && len > 0.0) {
         q.force = d * (q.stiffness * overlap * std::sqrt(overlap) / len);
