@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 
@@ -25,23 +26,32 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace breakshot;
 
-TEST(NoAllocation, PoolBreakAfterSetUp) {
-  Scenario s = make_break_scenario("nine_ball", "9ft", 3, 7.0);
+namespace {
+
+/// Simulates `s` to rest and returns the allocations made after set-up.
+long allocations_to_rest(const Scenario& s, std::uint64_t* events) {
   Simulation sim(s);
   const long before = g_allocations.load();
   sim.advance_to_rest();
   const long during = g_allocations.load() - before;
-  EXPECT_GT(sim.event_count(), 20u);
+  *events = sim.event_count();
+  return during;
+}
+
+}  // namespace
+
+TEST(NoAllocation, PoolBreakAfterSetUp) {
+  std::uint64_t events = 0;
+  const long during = allocations_to_rest(make_break_scenario("nine_ball", "9ft", 3, 7.0), &events);
+  EXPECT_GT(events, 20u);
   EXPECT_EQ(during, 0) << "allocations while simulating the break";
 }
 
 TEST(NoAllocation, HardEightBallBreakWithClusterImpacts) {
-  Scenario s = make_break_scenario("eight_ball", "9ft", 5, 11.0);
+  const Scenario s = make_break_scenario("eight_ball", "9ft", 5, 11.0);
   ASSERT_TRUE(s.physics.ball_clusters);
-  Simulation sim(s);
-  const long before = g_allocations.load();
-  sim.advance_to_rest();
-  const long during = g_allocations.load() - before;
-  EXPECT_GT(sim.event_count(), 20u);
+  std::uint64_t events = 0;
+  const long during = allocations_to_rest(s, &events);
+  EXPECT_GT(events, 20u);
   EXPECT_EQ(during, 0) << "allocations while simulating the break";
 }
