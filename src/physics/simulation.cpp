@@ -3,7 +3,6 @@
 // docs/architecture.md follows one scenario through this file.
 #include "breakshot/simulation.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -62,7 +61,8 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
   events_.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(scenario_.max_events, 64 + 16 * n)));
   if (scenario_.physics.ball_clusters && n <= kClusterReserveBalls) {
     // A cluster holds at most every ball; each impact on one adds an
-    // event per pair that touched (up to three per ball in a rack).
+    // event per pair that touched (about three per ball in a rack), and
+    // the events of a spread rack come on top.
     events_.reserve(events_.capacity() + 4 * n);
     const std::size_t pairs = n * (n - 1) / 2;
     cluster_group_.reserve(n);
