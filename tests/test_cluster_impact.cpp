@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <variant>
 #include <vector>
@@ -83,6 +84,9 @@ TEST(ClusterImpact, PerfectRackMatchesThePublishedHertzBreak) {
   for (const Row& row : published) {
     const Vec2 v = r.final_balls[static_cast<std::size_t>(row.ball)].velocity;
     SCOPED_TRACE("ball " + std::to_string(row.ball));
+    // The figures of docs/physics-core.md, "Clusters".
+    std::printf("[Cluster] ball %d: speed %.2f (published %.2f), direction %.1f (published %.1f)\n",
+                row.ball, norm(v), row.speed, 180.0 - std::abs(deg(v)), row.angle);
     EXPECT_NEAR(norm(v), row.speed, 0.08);
     // Our x axis points on toward the foot: the published angle is 180
     // minus the angle from +x, on either side.
