@@ -97,14 +97,12 @@ TEST(ClusterImpact, PerfectRackMatchesThePublishedHertzBreak) {
 TEST(ClusterImpact, TwoBodiesFollowTheRestitutionLaw) {
   // Unequal masses and radii, an oblique contact: the impulse along the
   // line of centres is (1 + e) m* closing, nothing across it.
-  const std::vector<ClusterBody> bodies = {
+  // The second ball exactly in contact, off the first's line of motion.
+  const Vec2 dir = Vec2{0.05, 0.01} / norm(Vec2{0.05, 0.01});
+  const std::vector<ClusterBody> b = {
       {{0.0, 0.0}, {2.0, 0.5}, 0.03, 0.2},
-      {{0.05, 0.0 + 0.01}, {-0.5, 0.0}, 0.021, 0.1},
+      {dir * (0.03 + 0.021), {-0.5, 0.0}, 0.021, 0.1},
   };
-  // Put the second ball exactly in contact along its offset.
-  std::vector<ClusterBody> b = bodies;
-  const Vec2 dir = b[1].position / norm(b[1].position);
-  b[1].position = dir * (b[0].radius + b[1].radius);
   const double e = 0.8;
   ClusterScratch scratch;
   ClusterOutcome out;

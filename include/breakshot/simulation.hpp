@@ -162,6 +162,7 @@ class Simulation {
   // Working memory of collide_cluster (reserved when the scenario has
   // ball_clusters, so that an impact allocates nothing).
   std::vector<std::int32_t> cluster_group_;
+  std::vector<Vec2> cluster_place_;
   std::vector<ClusterBody> cluster_bodies_;
   ClusterScratch cluster_scratch_;
   ClusterOutcome cluster_out_;

@@ -66,6 +66,7 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
     events_.reserve(events_.capacity() + 4 * n);
     const std::size_t pairs = n * (n - 1) / 2;
     cluster_group_.reserve(n);
+    cluster_place_.reserve(n);
     cluster_bodies_.reserve(n);
     cluster_scratch_.position.reserve(n);
     cluster_scratch_.velocity.reserve(n);
@@ -885,6 +886,13 @@ bool Simulation::collide_cluster(std::int32_t i, std::int32_t j, double t) {
   group.push_back(i);
   group.push_back(j);
   const auto n = static_cast<std::int32_t>(traj_.size());
+  // Every ball's place at t, once (pocketed balls are never gathered).
+  std::vector<Vec2>& at = cluster_place_;
+  at.clear();
+  for (std::int32_t k = 0; k < n; ++k) {
+    at.push_back(traj_[static_cast<std::size_t>(k)].state == MotionState::pocketed ? Vec2{}
+                                                                                    : position_at(k, t));
+  }
   for (std::size_t g = 0; g < group.size(); ++g) {
     const auto ug = static_cast<std::size_t>(group[g]);
     const Vec2 pg = traj_[ug].p0;
@@ -894,7 +902,7 @@ bool Simulation::collide_cluster(std::int32_t i, std::int32_t j, double t) {
           std::find(group.begin(), group.end(), k) != group.end()) {
         continue;
       }
-      const double gap = norm(position_at(k, t) - pg) - radius_[uk] - radius_[ug];
+      const double gap = norm(at[uk] - pg) - radius_[uk] - radius_[ug];
       if (gap < kClusterGap) {
         move_to(k, t);
         group.push_back(k);
