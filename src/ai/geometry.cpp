@@ -2,6 +2,7 @@
 #include "geometry.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace breakshot::ai {
@@ -52,6 +53,38 @@ bool walls_clear(const Table& table, double R, Vec2 a, Vec2 b) {
   return true;
 }
 
+namespace {
+
+/// The line from `from` toward the point `off` pocket radii across the
+/// pocket's centre (`across` is the unit vector across), up to the
+/// pocket's capture circle, if it passes every ball but the skipped ones
+/// and keeps clear of the cushions and jaws; its room is how far it may
+/// shift sideways before it meets a jaw.
+std::optional<Approach> approach_line(const Table& table, double R, const Layout& lay, Vec2 from,
+                                      const Pocket& pk, Vec2 across, double off, int skip1,
+                                      int skip2) {
+  const Vec2 aim = pk.centre + across * (off * pk.radius);
+  const Vec2 d = (aim - from) / norm(aim - from);
+  const Vec2 f = from - pk.centre;
+  const double half_b = dot(f, d);
+  const double disc = half_b * half_b - (norm2(f) - pk.radius * pk.radius);
+  if (disc <= 0.0) return std::nullopt;
+  const double s = -half_b - std::sqrt(disc);
+  if (s <= 0.0) return std::nullopt;
+  const Vec2 end = from + d * s;
+  if (!balls_clear(lay, R, from, end, skip1, skip2)) return std::nullopt;
+  if (!walls_clear(table, R, from, end)) return std::nullopt;
+  // Walls near the pocket only: the rails along the way were checked above.
+  double room = kInf;
+  for (const Wall& w : table.walls) {
+    if (wall_distance(w, pk.centre, pk.centre) > 0.2) continue;
+    room = std::min(room, wall_distance(w, from, end) - R);
+  }
+  return Approach{aim, d, s, room};
+}
+
+}  // namespace
+
 std::optional<Approach> pocket_approach(const Table& table, double R, const Layout& lay,
                                         Vec2 from, int pocket, int skip1, int skip2) {
   const Pocket& pk = table.pockets[static_cast<std::size_t>(pocket)];
@@ -59,31 +92,53 @@ std::optional<Approach> pocket_approach(const Table& table, double R, const Layo
   if (dist <= pk.radius) return std::nullopt;
   const Vec2 toward = (pk.centre - from) / dist;
   const Vec2 across = perp(toward);
+  // The line to the centre and two a little to either side: the one with
+  // the most room.
   std::optional<Approach> best;
   for (double off : {0.0, 0.4, -0.4}) {
-    const Vec2 aim = pk.centre + across * (off * pk.radius);
-    const Vec2 d = (aim - from) / norm(aim - from);
-    const Vec2 f = from - pk.centre;
-    const double half_b = dot(f, d);
-    const double disc = half_b * half_b - (norm2(f) - pk.radius * pk.radius);
-    if (disc <= 0.0) continue;
-    const double s = -half_b - std::sqrt(disc);
-    if (s <= 0.0) continue;
-    const Vec2 end = from + d * s;
-    if (!balls_clear(lay, R, from, end, skip1, skip2)) continue;
-    if (!walls_clear(table, R, from, end)) continue;
-    // Room: how far the path may shift sideways before it meets the jaws
-    // (walls near the pocket only; the rails along the way were checked
-    // above).
-    double room = kInf;
-    for (const Wall& w : table.walls) {
-      if (wall_distance(w, pk.centre, pk.centre) > 0.2) continue;
-      room = std::min(room, wall_distance(w, from, end) - R);
-    }
-    room = std::clamp(room, 0.002, 0.04);
-    if (!best || room > best->room) best = Approach{aim, d, s, room};
+    std::optional<Approach> a = approach_line(table, R, lay, from, pk, across, off, skip1, skip2);
+    if (a) a->room = std::clamp(a->room, 0.002, 0.04);
+    if (a && (!best || a->room > best->room)) best = a;
   }
-  return best;
+  if (best) return best;
+  // All three blocked: a fan of lines across the whole mouth. A ball near
+  // a rail going into a corner along it, or one coming in at a shallow
+  // angle, has its open lines to one side, which the three above missed
+  // (docs/ai.md, "The session of 2026-11-23").
+  std::array<std::optional<Approach>, kApproachLines> lines;
+  for (int i = 0; i < kApproachLines; ++i) {
+    const double off = (i - kApproachLines / 2) * kApproachStep;
+    lines[static_cast<std::size_t>(i)] = approach_line(table, R, lay, from, pk, across, off, skip1, skip2);
+  }
+  // The widest run of open lines; of equal runs, the one nearer the centre.
+  int lo = -1;
+  int n = 0;
+  const auto centre_gap = [](int first, int count) {
+    return std::abs(2 * first + count - 1 - (kApproachLines - 1));
+  };
+  for (int i = 0; i < kApproachLines;) {
+    if (!lines[static_cast<std::size_t>(i)]) {
+      ++i;
+      continue;
+    }
+    int j = i;
+    while (j < kApproachLines && lines[static_cast<std::size_t>(j)]) ++j;
+    if (j - i > n || (j - i == n && centre_gap(i, j - i) < centre_gap(lo, n))) {
+      lo = i;
+      n = j - i;
+    }
+    i = j;
+  }
+  if (n == 0) return std::nullopt;
+  // Aim at the middle of the run (between two lines when it is even).
+  const double mid = (lo + 0.5 * (n - 1) - kApproachLines / 2) * kApproachStep;
+  std::optional<Approach> a = approach_line(table, R, lay, from, pk, across, mid, skip1, skip2);
+  if (!a) a = lines[static_cast<std::size_t>(lo + n / 2)];
+  // Room: the distance to the jaws, or half the open window when that is
+  // wider (a line along a rail has a jaw close by, yet room to one side).
+  const double half_window = 0.5 * (n - 1) * kApproachStep * pk.radius;
+  a->room = std::clamp(std::max(a->room, half_window), 0.002, 0.04);
+  return a;
 }
 
 }  // namespace breakshot::ai

@@ -64,10 +64,20 @@ struct Approach {
   double room = 0.0;    ///< m the leg may move sideways before a jaw
 };
 
-/// The open path of a ball from `from` into pocket `pocket` with the most
-/// room, among the line to the pocket centre and lines a little to either
-/// side; `skip1` and `skip2` are balls not in the way (the moving ball).
-/// nullopt when every such line meets a ball, a cushion or a jaw.
+/// Lines tried across a pocket's mouth by pocket_approach, and their
+/// spacing in pocket radii: from -0.9 to +0.9 radii of the centre.
+inline constexpr int kApproachLines = 13;
+inline constexpr double kApproachStep = 0.15;
+
+/// The open path of a ball from `from` into pocket `pocket` that meets no
+/// ball, cushion or jaw: of the line to the pocket's centre and lines 0.4
+/// pocket radii to either side, the one with the most room (its distance
+/// to the jaws); when all three are blocked, of the kApproachLines lines
+/// aimed across the pocket's mouth, the middle of the widest run of open
+/// ones (of equal runs, the one nearer the centre), with the larger of its
+/// distance to the jaws and half the run's width as room. `skip1` and
+/// `skip2` are balls not in the way (the moving ball). nullopt when every
+/// line is blocked.
 std::optional<Approach> pocket_approach(const Table& table, double R, const Layout& lay,
                                         Vec2 from, int pocket, int skip1, int skip2 = -1);
 
