@@ -258,8 +258,8 @@ TEST(AiPlayer, PlaysASafetyWhenNothingIsMakeable) {
 // ball 2 cm off the long rail, 0.25 m from the side pocket, cannot go
 // straight into that pocket (its line runs into the jaw): none is
 // planned, and no aim of a sweep at three speeds pots it there without a
-// cushion. A ball 7 cm off the long rail, 0.39 m from the corner, goes
-// into the corner along the rail: its open lines lie to one side of the
+// cushion. A ball 7 cm off the foot rail, 0.38 m from the corner, goes
+// into the corner along that rail: its open lines lie to one side of the
 // pocket's centre (until 2026-11-23 the planner tried only lines near the
 // centre and found none); it is planned and pots under tournament noise.
 // Where there is a pot, the chance the estimate gives is the engine's

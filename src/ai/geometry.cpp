@@ -130,10 +130,15 @@ std::optional<Approach> pocket_approach(const Table& table, double R, const Layo
     i = j;
   }
   if (n == 0) return std::nullopt;
-  // Aim at the middle of the run (between two lines when it is even).
-  const double mid = (lo + 0.5 * (n - 1) - kApproachLines / 2) * kApproachStep;
-  std::optional<Approach> a = approach_line(table, R, lay, from, pk, across, mid, skip1, skip2);
-  if (!a) a = lines[static_cast<std::size_t>(lo + n / 2)];
+  // Aim at the middle of the run: its middle line, or when the run is even
+  // the line halfway between its two middle ones if that is open too.
+  std::optional<Approach> a = lines[static_cast<std::size_t>(lo + n / 2)];
+  if (n % 2 == 0) {
+    const double mid = (lo + 0.5 * (n - 1) - kApproachLines / 2) * kApproachStep;
+    if (std::optional<Approach> m = approach_line(table, R, lay, from, pk, across, mid, skip1, skip2)) {
+      a = m;
+    }
+  }
   // Room: the distance to the jaws, or half the open window when that is
   // wider (a line along a rail has a jaw close by, yet room to one side).
   const double half_window = 0.5 * (n - 1) * kApproachStep * pk.radius;
