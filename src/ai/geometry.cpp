@@ -107,6 +107,7 @@ std::optional<Approach> pocket_approach(const Table& table, double R, const Layo
   // (docs/ai.md, "The session of 2026-11-23").
   std::array<std::optional<Approach>, kApproachLines> lines;
   for (int i = 0; i < kApproachLines; ++i) {
+    if (i == kApproachLines / 2) continue;  // the centre line, blocked above
     const double off = (i - kApproachLines / 2) * kApproachStep;
     lines[static_cast<std::size_t>(i)] = approach_line(table, R, lay, from, pk, across, off, skip1, skip2);
   }
