@@ -58,11 +58,12 @@ namespace {
 /// The line from `from` toward the point `off` pocket radii across the
 /// pocket's centre (`across` is the unit vector across), up to the
 /// pocket's capture circle, if it passes every ball but the skipped ones
-/// and keeps clear of the cushions and jaws; its room is how far it may
-/// shift sideways before it meets a jaw.
+/// and keeps clear of the cushions and jaws (and, for a ball `at_rest`, if
+/// the ball that strikes it fits at its ghost ball's place); its room is
+/// how far it may shift sideways before it meets a jaw.
 std::optional<Approach> approach_line(const Table& table, double R, const Layout& lay, Vec2 from,
                                       const Pocket& pk, Vec2 across, double off, int skip1,
-                                      int skip2) {
+                                      int skip2, bool at_rest) {
   const Vec2 aim = pk.centre + across * (off * pk.radius);
   const Vec2 d = (aim - from) / norm(aim - from);
   const Vec2 f = from - pk.centre;
@@ -72,6 +73,8 @@ std::optional<Approach> approach_line(const Table& table, double R, const Layout
   const double s = -half_b - std::sqrt(disc);
   if (s <= 0.0) return std::nullopt;
   const Vec2 end = from + d * s;
+  // A ball at rest is struck from its ghost ball's place, which must fit.
+  if (at_rest && wall_clearance(table, from - d * (2.0 * R), R) < 0.0) return std::nullopt;
   if (!balls_clear(lay, R, from, end, skip1, skip2)) return std::nullopt;
   if (!walls_clear(table, R, from, end)) return std::nullopt;
   // Walls near the pocket only: the rails along the way were checked above.
@@ -83,10 +86,60 @@ std::optional<Approach> approach_line(const Table& table, double R, const Layout
   return Approach{aim, d, s, room};
 }
 
+/// A ball on or near a rail, run along it into the corner pocket at its
+/// end: the line to a point kRailRunAim (at most; the ball's own gap when
+/// less) off the rail just short of the pocket, so that the ball comes in
+/// along the cushion, as a player plays it. The pocket's jaws turn such a
+/// ball in even when its line meets the cushion on the way or never
+/// crosses the pocket's capture circle, which is why the lines across the
+/// mouth are all blocked (docs/ai.md, "The second session of 2026-11-23").
+std::optional<Approach> rail_run(const Table& table, double R, const Layout& lay, Vec2 from,
+                                 const Pocket& pk, int skip1, int skip2) {
+  const double L = table.length;
+  const double W = table.width;
+  const bool corner =
+      (pk.centre.x < 0.0 || pk.centre.x > L) && (pk.centre.y < 0.0 || pk.centre.y > W);
+  if (!corner) return std::nullopt;
+  // The two rails that meet at this corner: the short one (x fixed) and
+  // the long one (y fixed).
+  for (int axis = 0; axis < 2; ++axis) {
+    const bool short_rail = axis == 0;
+    const double across_from = short_rail ? from.x : from.y;
+    const bool low = short_rail ? pk.centre.x < 0.0 : pk.centre.y < 0.0;
+    const double nose = low ? 0.0 : (short_rail ? L : W);  // the cushion's line
+    const double inward = low ? 1.0 : -1.0;                // from it into the table
+    const double gap = (across_from - nose) * inward - R;
+    // A negative gap: the ball is in the pocket's mouth, past the cushion.
+    if (gap < -2.0 * R || gap > kRailRunGap) continue;
+    const double along_from = short_rail ? from.y : from.x;
+    const double along_pk = short_rail ? pk.centre.y : pk.centre.x;
+    const double ahead = along_pk > along_from ? 1.0 : -1.0;
+    double along_end = along_pk - ahead * (pk.radius + R);
+    double across_end = nose + inward * (R + std::clamp(gap, 0.002, kRailRunAim));
+    if ((along_end - along_from) * ahead < 2.0 * R) {
+      // Already at the mouth: straight along the rail into the pocket.
+      along_end = along_pk;
+      across_end = across_from;
+    }
+    const Vec2 aim = short_rail ? Vec2{across_end, along_end} : Vec2{along_end, across_end};
+    const double length = norm(aim - from);
+    if (length < 1e-6) continue;
+    const Vec2 dir = (aim - from) / length;
+    // The cue ball (or the ball driving this one) must fit where it hits.
+    if (wall_clearance(table, from - dir * (2.0 * R), R) < 0.0) continue;
+    if (!balls_clear(lay, R, from, aim, skip1, skip2)) continue;
+    if (!balls_clear(lay, R, aim, pk.centre, skip1, skip2)) continue;
+    if (!walls_clear(table, R, from, aim)) continue;
+    return Approach{aim, dir, length, kRailRunRoom};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<Approach> pocket_approach(const Table& table, double R, const Layout& lay,
-                                        Vec2 from, int pocket, int skip1, int skip2) {
+                                        Vec2 from, int pocket, int skip1, int skip2,
+                                        bool at_rest) {
   const Pocket& pk = table.pockets[static_cast<std::size_t>(pocket)];
   const double dist = norm(pk.centre - from);
   if (dist <= pk.radius) return std::nullopt;
@@ -96,7 +149,8 @@ std::optional<Approach> pocket_approach(const Table& table, double R, const Layo
   // the most room.
   std::optional<Approach> best;
   for (double off : {0.0, 0.4, -0.4}) {
-    std::optional<Approach> a = approach_line(table, R, lay, from, pk, across, off, skip1, skip2);
+    std::optional<Approach> a =
+        approach_line(table, R, lay, from, pk, across, off, skip1, skip2, at_rest);
     if (a) a->room = std::clamp(a->room, 0.002, 0.04);
     if (a && (!best || a->room > best->room)) best = a;
   }
@@ -109,7 +163,8 @@ std::optional<Approach> pocket_approach(const Table& table, double R, const Layo
   for (int i = 0; i < kApproachLines; ++i) {
     if (i == kApproachLines / 2) continue;  // the centre line, blocked above
     const double off = (i - kApproachLines / 2) * kApproachStep;
-    lines[static_cast<std::size_t>(i)] = approach_line(table, R, lay, from, pk, across, off, skip1, skip2);
+    lines[static_cast<std::size_t>(i)] =
+        approach_line(table, R, lay, from, pk, across, off, skip1, skip2, at_rest);
   }
   // The widest run of open lines; of equal runs, the one nearer the centre.
   int lo = -1;
@@ -130,13 +185,14 @@ std::optional<Approach> pocket_approach(const Table& table, double R, const Layo
     }
     i = j;
   }
-  if (n == 0) return std::nullopt;
+  if (n == 0) return at_rest ? rail_run(table, R, lay, from, pk, skip1, skip2) : std::nullopt;
   // Aim at the middle of the run: its middle line, or when the run is even
   // the line halfway between its two middle ones if that is open too.
   std::optional<Approach> a = lines[static_cast<std::size_t>(lo + n / 2)];
   if (n % 2 == 0) {
     const double mid = (lo + 0.5 * (n - 1) - kApproachLines / 2) * kApproachStep;
-    if (std::optional<Approach> m = approach_line(table, R, lay, from, pk, across, mid, skip1, skip2)) {
+    if (std::optional<Approach> m =
+            approach_line(table, R, lay, from, pk, across, mid, skip1, skip2, at_rest)) {
       a = m;
     }
   }

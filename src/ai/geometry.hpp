@@ -69,6 +69,13 @@ struct Approach {
 inline constexpr int kApproachLines = 13;
 inline constexpr double kApproachStep = 0.15;
 
+/// Rail runs: a ball at most kRailRunGap (m) off a rail is run along it
+/// into the corner at its end, aimed to arrive kRailRunAim off the rail
+/// (or its own gap when less), with kRailRunRoom of room.
+inline constexpr double kRailRunGap = 0.08;
+inline constexpr double kRailRunAim = 0.01;
+inline constexpr double kRailRunRoom = 0.01;
+
 /// The open path of a ball from `from` into pocket `pocket` that meets no
 /// ball, cushion or jaw: of the line to the pocket's centre and lines 0.4
 /// pocket radii to either side, the one with the most room (its distance
@@ -77,8 +84,13 @@ inline constexpr double kApproachStep = 0.15;
 /// ones (of equal runs, the one nearer the centre), with the larger of its
 /// distance to the jaws and half the run's width as room. `skip1` and
 /// `skip2` are balls not in the way (the moving ball). nullopt when every
-/// line is blocked.
+/// line is blocked. For a ball `at_rest` (not a bank's second leg, which
+/// starts on a cushion), a line is open only if the ball that strikes it
+/// fits at its ghost ball's place, and when every line across the mouth is
+/// blocked, a ball within kRailRunGap of a rail that ends in the corner
+/// pocket is run along that rail (room kRailRunRoom).
 std::optional<Approach> pocket_approach(const Table& table, double R, const Layout& lay,
-                                        Vec2 from, int pocket, int skip1, int skip2 = -1);
+                                        Vec2 from, int pocket, int skip1, int skip2 = -1,
+                                        bool at_rest = true);
 
 }  // namespace breakshot::ai

@@ -236,8 +236,8 @@ class Generator {
   bool fits(Vec2 p) const { return wall_clearance(table_, p, R_) >= 0.0; }
 
   std::optional<Approach> approach(const Layout& lay, Vec2 from, int pocket, int skip1,
-                                   int skip2 = -1) const {
-    return ai::pocket_approach(table_, R_, lay, from, pocket, skip1, skip2);
+                                   int skip2 = -1, bool at_rest = true) const {
+    return ai::pocket_approach(table_, R_, lay, from, pocket, skip1, skip2, at_rest);
   }
 
   /// Lateral miss at the pocket per degree of cue aim (m/deg) of a cut
@@ -355,7 +355,7 @@ class Generator {
     const std::optional<Vec2> hit = bounce(b, pk.centre, rail);
     if (!hit) return std::nullopt;
     // The second leg, from the cushion into the pocket.
-    const std::optional<Approach> ap = approach(layout_, *hit, pocket, t);
+    const std::optional<Approach> ap = approach(layout_, *hit, pocket, t, -1, false);
     if (!ap) return std::nullopt;
     const Vec2 d_first = unit(*hit - b);
     const double leg1 = norm(*hit - b);
