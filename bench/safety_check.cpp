@@ -14,19 +14,21 @@
 //
 //   - the sweep: the cue ball is struck at the centre at 1.5, 2.5 and
 //     4 m/s, at every aim 0.02 degrees apart across the range in which it
-//     meets that ball directly, without noise. For each pocket and speed
-//     the widest run of neighbouring aims that drop the ball in that
-//     pocket with no foul is found, and its middle
-//     aim is played 48 times under tournament noise;
+//     can meet that ball directly, without noise. For each pocket and
+//     speed the widest run of neighbouring aims that drop the ball in that
+//     pocket is found, and its middle aim is played 48 times under
+//     tournament noise;
 //   - the generator: generate_shots with the player's own options (the
 //     champion's, for an AI level; the defaults otherwise); each pot it
-//     returns for that ball and pocket is played 48 times the same way.
+//     returns that hits that ball first and drops it in that pocket
+//     (direct, bank or kick) is played 48 times the same way.
 //
-// A play succeeds when the ball drops in that pocket with no foul and the
-// shooter keeps the table (or wins). Printed: one line per table with a
-// pot the sweep makes at least --min (default 0.8) of the time, its best
-// share from the sweep and from the generator (or "none" when it returned
-// no pot of that ball into that pocket), and a summary. Deterministic:
+// An aim of the sweep, or a noisy play, counts when the cue ball hits
+// that ball first and the ball drops in that pocket with no foul; a noisy
+// play must also leave the shooter at the table (or the winner). Printed:
+// one line per table with a pot the sweep makes at least --min (default
+// 0.8) of the time, its best share from the sweep and from the generator
+// (or "none" when it returned no such pot), and a summary. Deterministic:
 // fixed noise seeds, one thread.
 #include <algorithm>
 #include <charconv>
@@ -56,10 +58,10 @@ constexpr std::uint64_t kSeed = 4242;
 constexpr double kStepDeg = 0.02;
 constexpr double kPi = 3.14159265358979323846;
 
-/// Whether `o` dropped `ball` in `pocket` with no foul and left `player`
-/// at the table (or the winner).
+/// Whether the cue ball hit `ball` first and `o` dropped it in `pocket`
+/// with no foul and left `player` at the table (or the winner).
 bool pot_kept(const Outcome& o, int ball, int pocket, int player) {
-  if (!o.ruling.fouls.empty()) return false;
+  if (o.facts.first_hit != ball || !o.ruling.fouls.empty()) return false;
   bool in = false;
   for (std::size_t i = 0; i < o.facts.pocketed.size(); ++i) {
     in = in || (o.facts.pocketed[i] == ball && o.facts.pocket_of[i] == pocket);
@@ -68,11 +70,12 @@ bool pot_kept(const Outcome& o, int ball, int pocket, int player) {
   return o.state.phase == Phase::game_over ? o.state.winner == player : o.state.player == player;
 }
 
-/// The pocket `ball` dropped in when `o` had no foul and did not lose the
-/// game for `player`, else -1. The sweep plays without a call, which an
-/// 8-ball pot needs to keep the table; the noisy plays carry it.
+/// The pocket `ball` dropped in when the cue ball hit it first and `o`
+/// had no foul and did not lose the game for `player`, else -1. The sweep
+/// plays without a call, which an 8-ball pot needs to keep the table; the
+/// noisy plays carry it.
 int dropped_in(const Outcome& o, int ball, int player) {
-  if (!o.ruling.fouls.empty()) return -1;
+  if (o.facts.first_hit != ball || !o.ruling.fouls.empty()) return -1;
   if (o.state.phase == Phase::game_over && o.state.winner != player) return -1;
   for (std::size_t i = 0; i < o.facts.pocketed.size(); ++i) {
     if (o.facts.pocketed[i] == ball) return o.facts.pocket_of[i];
@@ -219,7 +222,7 @@ std::vector<Found> examine(const Rules& rules, const GameState& s, const ShotGen
         generated = true;
       }
       for (const CandidateShot& c : cands) {
-        if (c.target != f.ball || c.pocket != f.pocket) continue;
+        if (c.first != f.ball || c.target != f.ball || c.pocket != f.pocket) continue;
         ++f.generated;
         f.generator = std::max(f.generator, success(rules, s, c.shot, f.ball, f.pocket, noise));
       }
