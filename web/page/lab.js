@@ -526,6 +526,19 @@ export function mountLab(root, engine) {
       onSet: (v) => { if (v === undefined) delete p[f]; else p[f] = v; changed(); },
     }), FIELD_INFO[f].unit));
 
+    // Cluster impacts (physics.ball_clusters, docs/scenario.md): off is
+    // the default, so unticking leaves the field out.
+    const clustersBox = el('input', { type: 'checkbox', id: 'lab-clusters', checked: p.ball_clusters === true,
+      'aria-label': 'physics.ball_clusters',
+      onchange: () => {
+        if (clustersBox.checked) p.ball_clusters = true;
+        else delete p.ball_clusters;
+        changed();
+      } });
+    const clustersRow = row('cluster impacts', clustersBox, '');
+    clustersRow.title = 'an impact on balls within 0.5 mm of each other is resolved at once with ' +
+      'Hertz contacts (a break spreads the rack); off: every impact is pairwise';
+
     // Duration: a time, or "rest" for the models with friction.
     const isRest = setup.until === 'rest' || (setup.until === undefined && p.model !== 'ideal');
     const untilSel = el('select', { 'aria-label': 'run until',
@@ -547,6 +560,7 @@ export function mountLab(root, engine) {
     physicsPanel.replaceChildren(...present(
       row('model', modelSel, ''),
       ...fields,
+      clustersRow,
       row('run until', untilSel, ''),
       isRest ? null : row('time', timeIn, 's'),
       el('div', { class: 'bs-lab-note', text: 'Blank fields take the engine\'s documented default (shown in grey).' })));

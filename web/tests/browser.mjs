@@ -235,6 +235,28 @@ test('the lab runs the two-ball example and draws its energy graph', async ({ br
   await context.close();
 });
 
+test('the lab\'s cluster impacts box sets physics.ball_clusters and the run accepts it', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  await page.click('#tab-lab');
+  await page.waitForSelector('#lab-examples [data-example="newtons_cradle"]', { timeout: 20000 });
+  await page.click('#lab-examples [data-example="newtons_cradle"]');
+  const field = () => page.evaluate(() => window.breakshotLab.scenario().physics.ball_clusters);
+  check(await field() === undefined, 'the cradle example sets ball_clusters already');
+  check(!(await page.isChecked('#lab-clusters')), 'the box is ticked for a scenario without the field');
+  await page.click('#lab-clusters');
+  check(await field() === true, 'ticking the box did not set physics.ball_clusters');
+  await page.click('#lab-run');
+  await page.waitForFunction(() => window.breakshotLab.frames() > 30 && window.breakshotLab.time() > 0.5,
+    null, { timeout: 30000 });
+  const err = await page.textContent('#lab-error');
+  check(!err || err.trim() === '', 'lab error with cluster impacts: ' + err);
+  await page.screenshot({ path: path.join(shots, 'lab-clusters.png') });
+  await page.click('#lab-clusters');
+  check(await field() === undefined, 'unticking the box did not leave the field out');
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
 // --- run ----------------------------------------------------------------
 const { proc, url } = await startServer();
 // playwright's launch() starts Chromium with a fresh profile folder of its
