@@ -33,7 +33,7 @@ double deg(Vec2 v) { return std::atan2(v.y, v.x) * 180.0 / kPi; }
 // A perfectly aligned, touching 15-ball rack (rows toward +x, apex at the
 // origin, balls numbered row by row toward +y) hit head-on at 10 m/s by a
 // cue ball, every contact elastic and frictionless.
-RunResult perfect_break() {
+RunResult perfect_break(int spectators = 0) {
   Scenario s;
   s.physics.model = Model::ideal;
   s.physics.ball_clusters = true;
@@ -52,6 +52,15 @@ RunResult perfect_break() {
       s.balls.push_back({std::to_string(id++)});
       s.start.push_back(b);
     }
+  }
+  // Balls at rest well away from the rack and the cue ball's path, which
+  // nothing reaches before the end: with enough of them the simulation
+  // files the balls in a grid of cells (48 balls or more).
+  for (int k = 0; k < spectators; ++k) {
+    BallState b;
+    b.position = {-1.9 + 0.1 * (k % 35), -1.9 + 0.1 * (k / 35)};
+    s.balls.push_back({"s" + std::to_string(k)});
+    s.start.push_back(b);
   }
   s.until.rest = false;
   s.until.time = 0.06;  // every contact is over; the walls are further away
@@ -92,6 +101,38 @@ TEST(ClusterImpact, PerfectRackMatchesThePublishedHertzBreak) {
     // minus the angle from +x, on either side.
     EXPECT_NEAR(180.0 - std::abs(deg(v)), row.angle, 3.5);
   }
+}
+
+// A scene of 48 balls or more files them in a grid of cells, and a
+// cluster impact then gathers its members from the cells nearby only
+// (src/physics/simulation.cpp, collide_cluster). It must gather the same
+// cluster as a search over every ball: the rack's break comes out the same
+// with 420 resting balls elsewhere on the table (cells about 0.2 m wide,
+// so the rack spans several). Not to the bit: a ball crossing into
+// another cell has its motion restated from there, which moves the last
+// bits; a ball left out of the cluster would change its speeds by metres
+// per second.
+TEST(ClusterImpact, AGridOfCellsGathersTheSameCluster) {
+  const RunResult alone = perfect_break();
+  const RunResult crowded = perfect_break(420);
+  ASSERT_EQ(crowded.final_balls.size(), alone.final_balls.size() + 420);
+  for (std::size_t k = 0; k < alone.final_balls.size(); ++k) {
+    EXPECT_NEAR(crowded.final_balls[k].position.x, alone.final_balls[k].position.x, 1e-9) << "ball " << k;
+    EXPECT_NEAR(crowded.final_balls[k].position.y, alone.final_balls[k].position.y, 1e-9) << "ball " << k;
+    EXPECT_NEAR(crowded.final_balls[k].velocity.x, alone.final_balls[k].velocity.x, 1e-9) << "ball " << k;
+    EXPECT_NEAR(crowded.final_balls[k].velocity.y, alone.final_balls[k].velocity.y, 1e-9) << "ball " << k;
+  }
+  for (std::size_t k = alone.final_balls.size(); k < crowded.final_balls.size(); ++k) {
+    EXPECT_EQ(crowded.final_balls[k].velocity.x, 0.0) << "spectator " << k << " was hit";
+    EXPECT_EQ(crowded.final_balls[k].velocity.y, 0.0) << "spectator " << k << " was hit";
+  }
+  // The break did spread the rack (a cluster impact, not a cradle).
+  int moving = 0;
+  for (std::size_t k = 1; k < alone.final_balls.size(); ++k) {
+    moving += norm(alone.final_balls[k].velocity) > 0.5 ? 1 : 0;
+  }
+  EXPECT_GE(moving, 12);
+  EXPECT_EQ(crowded.events.size(), alone.events.size());
 }
 
 TEST(ClusterImpact, TwoBodiesFollowTheRestitutionLaw) {

@@ -163,6 +163,8 @@ class Simulation {
   // ball_clusters, so that an impact allocates nothing).
   std::vector<std::int32_t> cluster_group_;
   std::vector<Vec2> cluster_place_;
+  std::vector<std::int32_t> cluster_place_index_;  // candidates of the cells nearby
+  std::int32_t cluster_reach_ = 1;                 // cells searched on each side
   std::vector<ClusterBody> cluster_bodies_;
   ClusterScratch cluster_scratch_;
   ClusterOutcome cluster_out_;

@@ -67,6 +67,7 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
     const std::size_t pairs = n * (n - 1) / 2;
     cluster_group_.reserve(n);
     cluster_place_.reserve(n);
+    cluster_place_index_.reserve(n);
     cluster_bodies_.reserve(n);
     cluster_scratch_.position.reserve(n);
     cluster_scratch_.velocity.reserve(n);
@@ -168,6 +169,11 @@ Simulation::Simulation(const Scenario& scenario) : scenario_(scenario) {
         const auto bi = static_cast<std::int32_t>(i);
         cell_link(bi, cell_index(traj_[i].p0));
       }
+      // Cluster impacts gather the balls within kClusterGap of a member:
+      // their cells are at most this many away, one more for a ball on a
+      // cell's edge whose crossing falls at the impact's time.
+      cluster_reach_ =
+          static_cast<std::int32_t>(std::ceil((2.0 * max_r + kClusterGap) / cell_size_)) + 1;
     }
   }
 
@@ -886,26 +892,56 @@ bool Simulation::collide_cluster(std::int32_t i, std::int32_t j, double t) {
   group.push_back(i);
   group.push_back(j);
   const auto n = static_cast<std::int32_t>(traj_.size());
-  // Every ball's place at t, once (pocketed balls are never gathered).
-  std::vector<Vec2>& at = cluster_place_;
-  at.clear();
-  for (std::int32_t k = 0; k < n; ++k) {
-    at.push_back(traj_[static_cast<std::size_t>(k)].state == MotionState::pocketed ? Vec2{}
-                                                                                    : position_at(k, t));
-  }
-  for (std::size_t g = 0; g < group.size(); ++g) {
-    const auto ug = static_cast<std::size_t>(group[g]);
-    const Vec2 pg = traj_[ug].p0;
-    for (std::int32_t k = 0; k < n; ++k) {
-      const auto uk = static_cast<std::size_t>(k);
-      if (traj_[uk].state == MotionState::pocketed ||
-          std::find(group.begin(), group.end(), k) != group.end()) {
-        continue;
+  // Ball k joins when its place at t is within kClusterGap of group
+  // member g's. Members are taken in order and, for each, the candidates
+  // in increasing index, so the group (and so the result) is the same
+  // whether every ball is a candidate or only those of the cells nearby.
+  const auto join = [&](std::size_t ug, Vec2 pg, std::int32_t k, Vec2 pk) {
+    const auto uk = static_cast<std::size_t>(k);
+    if (std::find(group.begin(), group.end(), k) != group.end()) return;
+    if (norm(pk - pg) - radius_[uk] - radius_[ug] < kClusterGap) {
+      move_to(k, t);
+      group.push_back(k);
+    }
+  };
+  if (use_cells_) {
+    // Only the balls of the cells within reach: a large scene pays for
+    // the balls near the impact, not for all of them.
+    std::vector<std::int32_t>& near = cluster_place_index_;
+    for (std::size_t g = 0; g < group.size(); ++g) {
+      const auto ug = static_cast<std::size_t>(group[g]);
+      const Vec2 pg = traj_[ug].p0;
+      const std::int32_t cx = ball_cell_[ug] % grid_nx_;
+      const std::int32_t cy = ball_cell_[ug] / grid_nx_;
+      near.clear();
+      for (std::int32_t y = std::max(0, cy - cluster_reach_);
+           y <= std::min(grid_ny_ - 1, cy + cluster_reach_); ++y) {
+        for (std::int32_t x = std::max(0, cx - cluster_reach_);
+             x <= std::min(grid_nx_ - 1, cx + cluster_reach_); ++x) {
+          for (std::int32_t k = cell_head_[static_cast<std::size_t>(y * grid_nx_ + x)]; k >= 0;
+               k = cell_next_[static_cast<std::size_t>(k)]) {
+            if (traj_[static_cast<std::size_t>(k)].state != MotionState::pocketed) near.push_back(k);
+          }
+        }
       }
-      const double gap = norm(at[uk] - pg) - radius_[uk] - radius_[ug];
-      if (gap < kClusterGap) {
-        move_to(k, t);
-        group.push_back(k);
+      std::sort(near.begin(), near.end());
+      for (std::int32_t k : near) join(ug, pg, k, position_at(k, t));
+    }
+  } else {
+    // Every ball's place at t, once (pocketed balls are never gathered).
+    std::vector<Vec2>& at = cluster_place_;
+    at.clear();
+    for (std::int32_t k = 0; k < n; ++k) {
+      at.push_back(traj_[static_cast<std::size_t>(k)].state == MotionState::pocketed
+                       ? Vec2{}
+                       : position_at(k, t));
+    }
+    for (std::size_t g = 0; g < group.size(); ++g) {
+      const auto ug = static_cast<std::size_t>(group[g]);
+      const Vec2 pg = traj_[ug].p0;
+      for (std::int32_t k = 0; k < n; ++k) {
+        if (traj_[static_cast<std::size_t>(k)].state == MotionState::pocketed) continue;
+        join(ug, pg, k, at[static_cast<std::size_t>(k)]);
       }
     }
   }
