@@ -117,10 +117,12 @@ TEST(ClusterImpact, AGridOfCellsGathersTheSameCluster) {
   const RunResult crowded = perfect_break(420);
   ASSERT_EQ(crowded.final_balls.size(), alone.final_balls.size() + 420);
   for (std::size_t k = 0; k < alone.final_balls.size(); ++k) {
-    EXPECT_NEAR(crowded.final_balls[k].position.x, alone.final_balls[k].position.x, 1e-9) << "ball " << k;
-    EXPECT_NEAR(crowded.final_balls[k].position.y, alone.final_balls[k].position.y, 1e-9) << "ball " << k;
-    EXPECT_NEAR(crowded.final_balls[k].velocity.x, alone.final_balls[k].velocity.x, 1e-9) << "ball " << k;
-    EXPECT_NEAR(crowded.final_balls[k].velocity.y, alone.final_balls[k].velocity.y, 1e-9) << "ball " << k;
+    const BallState& a = alone.final_balls[k];
+    const BallState& c = crowded.final_balls[k];
+    EXPECT_NEAR(c.position.x, a.position.x, 1e-9) << "ball " << k;
+    EXPECT_NEAR(c.position.y, a.position.y, 1e-9) << "ball " << k;
+    EXPECT_NEAR(c.velocity.x, a.velocity.x, 1e-9) << "ball " << k;
+    EXPECT_NEAR(c.velocity.y, a.velocity.y, 1e-9) << "ball " << k;
   }
   for (std::size_t k = alone.final_balls.size(); k < crowded.final_balls.size(); ++k) {
     EXPECT_EQ(crowded.final_balls[k].velocity.x, 0.0) << "spectator " << k << " was hit";

@@ -898,8 +898,8 @@ bool Simulation::collide_cluster(std::int32_t i, std::int32_t j, double t) {
   // whether every ball is a candidate or only those of the cells nearby.
   const auto join = [&](std::size_t ug, Vec2 pg, std::int32_t k, Vec2 pk) {
     const auto uk = static_cast<std::size_t>(k);
-    if (std::find(group.begin(), group.end(), k) != group.end()) return;
-    if (norm(pk - pg) - radius_[uk] - radius_[ug] < kClusterGap) {
+    if (norm(pk - pg) - radius_[uk] - radius_[ug] < kClusterGap &&
+        std::find(group.begin(), group.end(), k) == group.end()) {
       move_to(k, t);
       group.push_back(k);
     }
@@ -920,7 +920,9 @@ bool Simulation::collide_cluster(std::int32_t i, std::int32_t j, double t) {
              x <= std::min(grid_nx_ - 1, cx + cluster_reach_); ++x) {
           for (std::int32_t k = cell_head_[static_cast<std::size_t>(y * grid_nx_ + x)]; k >= 0;
                k = cell_next_[static_cast<std::size_t>(k)]) {
-            if (traj_[static_cast<std::size_t>(k)].state != MotionState::pocketed) near.push_back(k);
+            if (traj_[static_cast<std::size_t>(k)].state != MotionState::pocketed) {
+              near.push_back(k);
+            }
           }
         }
       }
