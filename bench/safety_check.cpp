@@ -249,6 +249,7 @@ int main(int argc, char** argv) {
   int with_pot = 0;      // tables where the sweep makes some pot >= min
   int none = 0;          // ... and the generator returned no pot for the best pair
   int lower = 0;         // ... or its best was 0.2 or more below the sweep's
+  int seated = 0;        // records in which the player played
   for (const char* file : opt->files) {
     const std::optional<GameRecord> read = bench_tools::read_record_file("safety_check", file);
     if (!read) return 1;
@@ -258,6 +259,7 @@ int main(int argc, char** argv) {
       if (rec.players[static_cast<std::size_t>(p)] == opt->player) seat = p;
     }
     if (seat < 0) continue;
+    ++seated;
     const Rules rules(rec.config);
     GameState before = rec.start;
     int index = 0;
@@ -293,6 +295,10 @@ int main(int argc, char** argv) {
       before = a.after;
       ++index;
     }
+  }
+  if (seated == 0) {
+    std::fprintf(stderr, "safety_check: no record has a player named %s\n", opt->player.c_str());
+    return 1;
   }
   std::printf("safeties by %s from a table with the cue ball on it: %d\n", opt->player.c_str(),
               safeties);
