@@ -35,7 +35,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <optional>
 #include <string>
@@ -58,18 +57,6 @@ constexpr std::uint64_t kSeed = 4242;
 constexpr double kStepDeg = 0.02;
 constexpr double kPi = 3.14159265358979323846;
 
-/// Whether the cue ball hit `ball` first and `o` dropped it in `pocket`
-/// with no foul and left `player` at the table (or the winner).
-bool pot_kept(const Outcome& o, int ball, int pocket, int player) {
-  if (o.facts.first_hit != ball || !o.ruling.fouls.empty()) return false;
-  bool in = false;
-  for (std::size_t i = 0; i < o.facts.pocketed.size(); ++i) {
-    in = in || (o.facts.pocketed[i] == ball && o.facts.pocket_of[i] == pocket);
-  }
-  if (!in) return false;
-  return o.state.phase == Phase::game_over ? o.state.winner == player : o.state.player == player;
-}
-
 /// The pocket `ball` dropped in when the cue ball hit it first and `o`
 /// had no foul and did not lose the game for `player`, else -1. The sweep
 /// plays without a call, which an 8-ball pot needs to keep the table; the
@@ -81,6 +68,13 @@ int dropped_in(const Outcome& o, int ball, int player) {
     if (o.facts.pocketed[i] == ball) return o.facts.pocket_of[i];
   }
   return -1;
+}
+
+/// Whether `o` dropped `ball` in `pocket` as dropped_in counts it and left
+/// `player` at the table (or the winner).
+bool pot_kept(const Outcome& o, int ball, int pocket, int player) {
+  if (dropped_in(o, ball, player) != pocket) return false;
+  return o.state.phase == Phase::game_over ? o.state.winner == player : o.state.player == player;
 }
 
 /// Share of kSamples noisy plays of `shot` that pot `ball` in `pocket`.

@@ -55,6 +55,12 @@ bool walls_clear(const Table& table, double R, Vec2 a, Vec2 b) {
 
 namespace {
 
+/// Whether the ball that strikes a ball at `from` toward `dir` fits at its
+/// ghost ball's place (2R behind, on the line).
+bool ghost_fits(const Table& table, double R, Vec2 from, Vec2 dir) {
+  return wall_clearance(table, from - dir * (2.0 * R), R) >= 0.0;
+}
+
 /// The line from `from` toward the point `off` pocket radii across the
 /// pocket's centre (`across` is the unit vector across), up to the
 /// pocket's capture circle, if it passes every ball but the skipped ones
@@ -74,7 +80,7 @@ std::optional<Approach> approach_line(const Table& table, double R, const Layout
   if (s <= 0.0) return std::nullopt;
   const Vec2 end = from + d * s;
   // A ball at rest is struck from its ghost ball's place, which must fit.
-  if (at_rest && wall_clearance(table, from - d * (2.0 * R), R) < 0.0) return std::nullopt;
+  if (at_rest && !ghost_fits(table, R, from, d)) return std::nullopt;
   if (!balls_clear(lay, R, from, end, skip1, skip2)) return std::nullopt;
   if (!walls_clear(table, R, from, end)) return std::nullopt;
   // Walls near the pocket only: the rails along the way were checked above.
@@ -126,7 +132,7 @@ std::optional<Approach> rail_run(const Table& table, double R, const Layout& lay
     if (length < 1e-6) continue;
     const Vec2 dir = (aim - from) / length;
     // The cue ball (or the ball driving this one) must fit where it hits.
-    if (wall_clearance(table, from - dir * (2.0 * R), R) < 0.0) continue;
+    if (!ghost_fits(table, R, from, dir)) continue;
     if (!balls_clear(lay, R, from, aim, skip1, skip2)) continue;
     if (!balls_clear(lay, R, aim, pk.centre, skip1, skip2)) continue;
     if (!walls_clear(table, R, from, aim)) continue;
