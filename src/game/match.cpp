@@ -1,10 +1,7 @@
 // Games and matches between players (include/breakshot/match.hpp).
 //
-// Seeds: a game's seed gives three streams. The noise of action i uses
-// mix_seed(game_seed, i), as the record says, so that replay() can check
-// it; the player deciding action i gets mix_seed(mix_seed(game_seed,
-// kPlayerStream), i); the rack comes from mix_seed(game_seed ^
-// kRackStream, 0). The stream tags keep the three apart.
+// A game is played through a GameSession (session.hpp), which owns the
+// seed streams, the noise and the record.
 //
 // Noise: each seat shoots with its player's own noise (Player::noise(),
 // the AI levels) or, for a player without one, with the match's; the
@@ -14,6 +11,8 @@
 // so any set of saved records can be summed up the same way.
 
 #include "breakshot/match.hpp"
+
+#include "breakshot/session.hpp"
 
 #include <algorithm>
 #include <array>
@@ -36,11 +35,6 @@
 namespace breakshot {
 
 namespace {
-
-// Stream tags ("player", "rack" in ASCII): arbitrary constants that keep
-// the players' and the rack's seeds apart from the noise seeds.
-constexpr std::uint64_t kPlayerStream = 0x706c61796572ULL;
-constexpr std::uint64_t kRackStream = 0x7261636bULL;
 
 /// Every foul kind, so that a summary lists them all, 0 included.
 constexpr Foul kFoulKinds[] = {Foul::scratch,          Foul::no_contact,
@@ -145,56 +139,37 @@ GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
     throw std::invalid_argument("play_game: the breaker must be 0 or 1, not " +
                                 std::to_string(breaker));
   }
-  GameRecord record;
-  record.config = rules.config();
-  record.players = {p0.name(), p1.name()};
-  record.seed = game_seed;
-  record.noise = {effective_noise(p0, noise), effective_noise(p1, noise)};
-  record.start = rules.start(mix_seed(game_seed ^ kRackStream, 0), breaker);
-
-  Player* const seats[2] = {&p0, &p1};
-  const std::uint64_t player_stream = mix_seed(game_seed, kPlayerStream);
+  const Seats seats{{p0.name(), p1.name()},
+                    {effective_noise(p0, noise), effective_noise(p1, noise)}};
+  GameSession session(rules.config(), seats, game_seed, breaker);
+  Player* const players[2] = {&p0, &p1};
   const std::size_t limit = action_limit(rules.config());
-  const double radius = rules.config().ball_radius;
-  GameState state = record.start;
-  while (state.phase != Phase::game_over) {
-    const std::size_t i = record.actions.size();
+  while (!session.over()) {
+    const std::size_t i = session.actions();
     if (limit != 0 && i >= limit) {
       throw std::logic_error("the game did not end after " + std::to_string(i) +
                              " actions (max_shots is " +
                              std::to_string(rules.config().max_shots) + ")");
     }
+    const GameState& state = session.state();
     const int seat = state.player;
-    Player& player = *seats[seat];
-    RecordedAction ra;
-    ra.player = seat;
-    ra.noise_seed = mix_seed(game_seed, i);
-    ra.action = player.decide(rules, state, mix_seed(player_stream, i));
-    if (auto why = rules.check(state, ra.action)) {
+    Player& player = *players[seat];
+    const Action action = player.decide(session.rules(), state, session.next_player_seed());
+    if (auto why = session.check(action)) {
       throw std::logic_error(player_label(seat, player) + " chose an action the rules refuse (" +
                              std::string(to_string(state.phase)) + ", action " +
                              std::to_string(i) + "): " + *why);
     }
-    if (auto* shoot = std::get_if<Shoot>(&ra.action)) {
-      ra.intended = shoot->strike;
-      shoot->strike = perturb(shoot->strike, record.noise[static_cast<std::size_t>(seat)], radius,
-                              ra.noise_seed);
-    }
-    Outcome out;
     try {
-      out = rules.apply(state, ra.action);
-    } catch (const std::invalid_argument& e) {
+      session.play(action);
+    } catch (const GameSession::ExecutedRefused& e) {
       // The intended action passed check(), so the noise made it illegal:
       // perturb() promises strikes the rules accept, so this is a bug.
       throw std::logic_error(player_label(seat, player) + ": the shot as executed (after noise) " +
                              "is refused at action " + std::to_string(i) + ": " + e.what());
     }
-    ra.ruling = std::move(out.ruling);
-    ra.after = out.state;
-    state = std::move(out.state);
-    record.actions.push_back(std::move(ra));
   }
-  return record;
+  return session.record();
 }
 
 double PlayerStats::pot_rate() const {

@@ -71,6 +71,8 @@
 
 #include "breakshot/record.hpp"
 
+#include "breakshot/session.hpp"
+
 namespace breakshot {
 
 namespace {
@@ -944,9 +946,9 @@ std::variant<GameRecord, RecordError> read_record(std::string_view json_text) {
 ReplayReport replay(const GameRecord& record) {
   ReplayReport rep;
   rep.final_state = record.start;
-  std::optional<Rules> rules;
+  std::optional<GameSession> session;
   try {
-    rules.emplace(record.config);
+    (void)Rules(record.config);
   } catch (const std::exception& e) {
     rep.where = "config";
     rep.recorded = shorten(config_json(record.config).dump());
@@ -954,10 +956,9 @@ ReplayReport replay(const GameRecord& record) {
     rep.message = std::string("the rules cannot be built from the config: ") + e.what();
     return rep;
   }
-
-  GameState state;
   try {
-    state = rules->start(record.start.rack_seed, record.start.breaker);
+    session.emplace(record.config, Seats{record.players, record.noise}, record.seed,
+                    record.start.rack_seed, record.start.breaker);
   } catch (const std::exception& e) {
     rep.where = "start";
     rep.recorded = shorten(state_json(record.start).dump());
@@ -965,17 +966,17 @@ ReplayReport replay(const GameRecord& record) {
     rep.message = std::string("the start cannot be set up: ") + e.what();
     return rep;
   }
-  if (!identical_state(state, record.start)) {
-    report_difference(rep, difference(state_json(record.start), state_json(state), "start"),
+  if (!identical_state(session->state(), record.start)) {
+    report_difference(rep, difference(state_json(record.start), state_json(session->state()), "start"),
                       "the start differs from Rules::start");
-    rep.final_state = state;
+    rep.final_state = session->state();
     return rep;
   }
-  rep.final_state = state;
+  rep.final_state = session->state();
 
-  const double radius = record.config.ball_radius;
   for (std::size_t i = 0; i < record.actions.size(); ++i) {
     const RecordedAction& ra = record.actions[i];
+    const GameState& state = session->state();
     const std::string path = index_path("actions", i);
     const std::string context = "action " + std::to_string(i) + " (player " +
                                 std::to_string(ra.player) + ", " +
@@ -990,8 +991,7 @@ ReplayReport replay(const GameRecord& record) {
     if (const auto* shoot = std::get_if<Shoot>(&ra.action); shoot != nullptr && ra.intended) {
       CueStrike executed;
       try {
-        executed = perturb(*ra.intended, record.noise[static_cast<std::size_t>(ra.player)], radius,
-                           ra.noise_seed);
+        executed = session->executed(*ra.intended, ra.player, ra.noise_seed);
       } catch (const std::exception& e) {
         report_difference(rep, {member_path(path, "intended"),
                                 shorten(strike_json(*ra.intended).dump()),
@@ -1017,7 +1017,7 @@ ReplayReport replay(const GameRecord& record) {
 
     Outcome out;
     try {
-      out = rules->apply(state, ra.action);
+      out = session->play_executed(ra.action, ra.intended, ra.noise_seed);
     } catch (const std::invalid_argument& e) {
       report_difference(rep, {member_path(path, "action"), shorten(action_json(ra.action).dump()),
                               std::string("(not allowed: ") + e.what() + ")"},
@@ -1043,8 +1043,7 @@ ReplayReport replay(const GameRecord& record) {
                         context);
       return rep;
     }
-    state = std::move(out.state);
-    rep.final_state = state;
+    rep.final_state = session->state();
     rep.actions_identical = i + 1;
   }
   rep.action.reset();

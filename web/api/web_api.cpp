@@ -9,13 +9,10 @@
 //
 // Games. A BsGame holds the rules and a GameRecord (record.hpp) that
 // grows with every action, so bs_game_record is that record as
-// write_record writes it, and `breakshot replay` accepts it. Seeds are
-// those of play_game (src/game/match.cpp), from the game's seed S:
-//   rack            mix_seed(S ^ kRackStream, 0)
-//   noise, action i mix_seed(S, i)
-//   AI, action i    mix_seed(mix_seed(S, kPlayerStream), i)
-// so a game between two AI seats is the game play_game plays with the
-// same players (tests/test_web_api.cpp checks it). A seat is "human" (no
+// write_record writes it, and `breakshot replay` accepts it. A BsGame
+// plays through a GameSession (session.hpp), as play_game does, so its
+// seeds are play_game's and a game between two AI seats is the game
+// play_game plays with the same players (tests/test_web_api.cpp checks it). A seat is "human" (no
 // noise: the strike is played as given) or an AI level name (ai.hpp): it
 // shoots with the level's noise, whoever chose the shot. The AI decides
 // with one thread, no time budget and a budget in simulations per
@@ -41,7 +38,7 @@
 // bits, without leading zeros ("0" for +0, "8000000000000000" for -0,
 // "3ff0000000000000" for 1.0), so nothing is rounded. The executed strike
 // is not stored: it is perturb(intended, seat noise, radius,
-// mix_seed(S, i)), re-derived exactly as the record's replay does, so a
+// GameSeeds::noise(S, i)), re-derived exactly as the record's replay does, so a
 // link holds the same game as the record, at about half the length.
 // bs_game_from_link replays the actions through the rules and stops with
 // an error naming the first one refused ("a[7]: ...").
@@ -83,6 +80,7 @@
 #include "breakshot/player.hpp"
 #include "breakshot/record.hpp"
 #include "breakshot/scenario_io.hpp"
+#include "breakshot/session.hpp"
 #include "breakshot/simulation.hpp"
 
 #ifndef BREAKSHOT_VERSION
@@ -97,8 +95,6 @@ namespace {
 
 // The stream tags of play_game (src/game/match.cpp): the same constants,
 // so that a web game's seeds are a match's.
-constexpr std::uint64_t kPlayerStream = 0x706c61796572ULL;
-constexpr std::uint64_t kRackStream = 0x7261636bULL;
 
 constexpr std::string_view kHuman = "human";
 constexpr std::string_view kLinkPrefix = "v1.";
@@ -625,29 +621,28 @@ bs::Scenario scenario_from(const char* scenario_json) {
 // Games
 
 struct BsGame {
-  BsGame(const bs::GameConfig& config, std::array<std::string, 2> seat_names, std::uint64_t seed,
-         int breaker, std::optional<std::int64_t> budget)
-      : rules(config), seats(std::move(seat_names)), ai_budget(budget) {
-    record.config = config;
-    record.players = seats;
-    record.seed = seed;
+  BsGame(const bs::GameConfig& config, const std::array<std::string, 2>& seat_names,
+         std::uint64_t seed, int breaker, std::optional<std::int64_t> budget)
+      : session(config, seats_of(seat_names), seed, breaker), seats(seat_names), ai_budget(budget) {}
+
+  /// A human seat plays without noise; an AI seat with its level's noise.
+  static bs::Seats seats_of(const std::array<std::string, 2>& names) {
+    bs::Seats s;
+    s.names = names;
     for (std::size_t k = 0; k < 2; ++k) {
-      record.noise[k] = seats[k] == kHuman ? bs::NoiseModel{} : bs::ai_level(seats[k]).noise;
+      s.noise[k] = names[k] == kHuman ? bs::NoiseModel{} : bs::ai_level(names[k]).noise;
     }
-    record.start = rules.start(bs::mix_seed(seed ^ kRackStream, 0), breaker);
+    return s;
   }
 
-  const bs::GameState& state() const {
-    return record.actions.empty() ? record.start : record.actions.back().after;
-  }
-  const bs::GameState& state_before(std::size_t i) const {
-    return i == 0 ? record.start : record.actions[i - 1].after;
-  }
+  const bs::Rules& rules() const { return session.rules(); }
+  const bs::GameRecord& record() const { return session.record(); }
+  const bs::GameState& state() const { return session.state(); }
+  const bs::GameState& state_before(std::size_t i) const { return session.state_before(i); }
 
-  bs::Rules rules;
+  bs::GameSession session;
   std::array<std::string, 2> seats;
   std::optional<std::int64_t> ai_budget;
-  bs::GameRecord record;
   std::string reply;
 };
 
@@ -776,18 +771,18 @@ ojson state_json(const BsGame& g) {
   j["innings"] = s.innings;
   j["racks"] = s.racks;
   j["players"] = ojson::array({g.seats[0], g.seats[1]});
-  j["actions"] = g.record.actions.size();
-  j["legal"] = legal_json(g.rules.legal_actions(s));
+  j["actions"] = g.record().actions.size();
+  j["legal"] = legal_json(g.rules().legal_actions(s));
   return j;
 }
 
 ojson table_json(const BsGame& g) {
-  const bs::Table& t = g.rules.table();
+  const bs::Table& t = g.rules().table();
   ojson j = ojson::object();
   j["length"] = t.length;
   j["width"] = t.width;
-  j["ball_radius"] = g.rules.config().ball_radius;
-  j["head_string"] = g.rules.head_string();
+  j["ball_radius"] = g.rules().config().ball_radius;
+  j["head_string"] = g.rules().head_string();
   j["head_spot"] = vec2_json(t.head_spot);
   j["foot_spot"] = vec2_json(t.foot_spot);
   ojson outline = ojson::array();
@@ -820,45 +815,33 @@ ojson table_json(const BsGame& g) {
 /// Plays `action` (as chosen) for the seat to act; nullopt and the game
 /// unchanged if the rules refuse it (`why` says why).
 std::optional<ojson> play(BsGame& g, const bs::Action& action, std::string& why) {
-  const bs::GameState& state = g.state();
-  if (auto reason = g.rules.check(state, action)) {
+  if (auto reason = g.session.check(action)) {
     why = *reason;
     return std::nullopt;
   }
-  const std::size_t i = g.record.actions.size();
-  const int seat = state.player;
-  bs::RecordedAction ra;
-  ra.player = seat;
-  ra.noise_seed = bs::mix_seed(g.record.seed, i);
-  ra.action = action;
-  std::vector<int> numbers;
-  if (auto* shoot = std::get_if<bs::Shoot>(&ra.action)) {
-    ra.intended = shoot->strike;
-    shoot->strike = bs::perturb(shoot->strike, g.record.noise[static_cast<std::size_t>(seat)],
-                                g.rules.config().ball_radius, ra.noise_seed);
-    (void)g.rules.shot_scenario(state, shoot->strike, &numbers);
-  }
+  const std::size_t i = g.session.actions();
   bs::Outcome out;
   try {
-    out = g.rules.apply(state, ra.action);
+    out = g.session.play(action);
   } catch (const std::exception& e) {
     why = std::string("the action as executed was refused: ") + e.what();
     return std::nullopt;
   }
+  const bs::RecordedAction& ra = g.record().actions.back();
   ojson j = ojson::object();
   j["index"] = i;
-  j["player"] = seat;
+  j["player"] = ra.player;
   j["kind"] = action_kind(ra.action);
   j["executed"] = action_json(ra.action);
   if (ra.intended) {
+    std::vector<int> numbers;
+    (void)g.rules().shot_scenario(g.state_before(i), std::get<bs::Shoot>(ra.action).strike,
+                                  &numbers);
     j["intended"] = strike_json(*ra.intended);
     j["numbers"] = ints_json(numbers);
   }
   j["ruling"] = ruling_json(out.ruling);
   j["facts"] = facts_json(out.facts);
-  ra.ruling = std::move(out.ruling);
-  ra.after = std::move(out.state);
-  g.record.actions.push_back(std::move(ra));
   j["state"] = state_json(g);
   return j;
 }
@@ -898,10 +881,8 @@ std::string ai_action_json(BsGame& g, const char* level) {
                        ") is human: name an AI level for a hint");
     }
   }
-  const std::size_t i = g.record.actions.size();
   const std::unique_ptr<bs::Player> ai = bs::make_ai_player(web_level(name, g.ai_budget));
-  const std::uint64_t seed = bs::mix_seed(bs::mix_seed(g.record.seed, kPlayerStream), i);
-  const bs::Action a = ai->decide(g.rules, state, seed);
+  const bs::Action a = ai->decide(g.rules(), state, g.session.next_player_seed());
   ojson j = ojson::object();
   j["action"] = action_json(a);
   return j.dump();
@@ -909,14 +890,14 @@ std::string ai_action_json(BsGame& g, const char* level) {
 
 std::string link_text(const BsGame& g) {
   ojson j = ojson::object();
-  j["g"] = bs::to_string(g.record.config.game);
-  j["t"] = g.record.config.table_size;
-  j["s"] = std::to_string(g.record.seed);
-  j["b"] = g.record.start.breaker;
+  j["g"] = bs::to_string(g.record().config.game);
+  j["t"] = g.record().config.table_size;
+  j["s"] = std::to_string(g.record().seed);
+  j["b"] = g.record().start.breaker;
   j["p"] = ojson::array({g.seats[0], g.seats[1]});
   if (g.ai_budget) j["n"] = *g.ai_budget;
   ojson actions = ojson::array();
-  for (const bs::RecordedAction& ra : g.record.actions) {
+  for (const bs::RecordedAction& ra : g.record().actions) {
     if (const auto* p = std::get_if<bs::PlaceCueBall>(&ra.action)) {
       actions.push_back(ojson::array({"p", double_hex(p->position.x), double_hex(p->position.y)}));
     } else if (const auto* s = std::get_if<bs::Shoot>(&ra.action)) {
@@ -1128,7 +1109,7 @@ const char* bs_game_check_placement(BsGame* g, double x, double y) {
   if (g == nullptr) return null_handle();
   return keep(g->reply, guarded([&] {
                 ojson j = ojson::object();
-                const auto why = g->rules.check_placement(g->state(), {x, y});
+                const auto why = g->rules().check_placement(g->state(), {x, y});
                 j["ok"] = !why;
                 if (why) j["reason"] = *why;
                 return j.dump();
@@ -1148,18 +1129,18 @@ const char* bs_game_ai_action(BsGame* g, const char* level_or_null) {
 BsPlayback* bs_game_shot_playback(BsGame* g, int index) {
   return guarded_new<BsPlayback>([&] {
     if (g == nullptr) bad("handle", "a null handle");
-    const std::size_t n = g->record.actions.size();
+    const std::size_t n = g->record().actions.size();
     if (index < 0 || static_cast<std::size_t>(index) >= n) {
       bad("index", "must be in [0, " + std::to_string(n) + "), not " + std::to_string(index));
     }
-    const bs::RecordedAction& ra = g->record.actions[static_cast<std::size_t>(index)];
+    const bs::RecordedAction& ra = g->record().actions[static_cast<std::size_t>(index)];
     const auto* shot = std::get_if<bs::Shoot>(&ra.action);
     if (shot == nullptr) {
       bad("index", "action " + std::to_string(index) + " is not a shot (" +
                        std::string(action_kind(ra.action)) + ")");
     }
     return std::make_unique<BsPlayback>(
-        g->rules.shot_scenario(g->state_before(static_cast<std::size_t>(index)), shot->strike));
+        g->rules().shot_scenario(g->state_before(static_cast<std::size_t>(index)), shot->strike));
   });
 }
 
@@ -1174,17 +1155,17 @@ const char* bs_game_link(BsGame* g) {
 
 const char* bs_game_record(BsGame* g) {
   if (g == nullptr) return null_handle();
-  return keep(g->reply, guarded([&] { return bs::write_record(g->record); }));
+  return keep(g->reply, guarded([&] { return bs::write_record(g->record()); }));
 }
 
 const char* bs_game_undo_to(BsGame* g, int n) {
   if (g == nullptr) return null_handle();
   return keep(g->reply, guarded([&] {
-                const std::size_t size = g->record.actions.size();
+                const std::size_t size = g->record().actions.size();
                 if (n < 0 || static_cast<std::size_t>(n) > size) {
                   bad("n", "must be in [0, " + std::to_string(size) + "], not " + std::to_string(n));
                 }
-                g->record.actions.erase(g->record.actions.begin() + n, g->record.actions.end());
+                g->session.take_back_to(static_cast<std::size_t>(n));
                 return state_json(*g).dump();
               }));
 }
