@@ -28,6 +28,7 @@
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/record.hpp"
+#include "breakshot/record_io.hpp"
 #include "record_file.hpp"
 
 namespace {

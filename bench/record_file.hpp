@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "breakshot/record.hpp"
+#include "breakshot/record_io.hpp"
 
 namespace bench_tools {
 

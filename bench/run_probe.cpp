@@ -37,6 +37,7 @@
 #include <string_view>
 #include <variant>
 
+#include "breakshot/players.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"

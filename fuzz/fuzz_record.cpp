@@ -15,6 +15,7 @@
 #include <variant>
 
 #include "breakshot/record.hpp"
+#include "breakshot/record_io.hpp"
 
 namespace {
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "ai/evaluate.hpp"
+#include "breakshot/players.hpp"
 #include "breakshot/ai.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/match.hpp"

@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "breakshot/players.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"

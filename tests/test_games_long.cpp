@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "breakshot/players.hpp"
 #include "breakshot/match.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"

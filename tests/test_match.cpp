@@ -23,6 +23,9 @@
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/record.hpp"
+#include "breakshot/players.hpp"
+#include "breakshot/match_io.hpp"
+#include "breakshot/record_io.hpp"
 
 namespace {
 
@@ -71,8 +74,8 @@ MatchOptions options(GameType game, int games, std::uint64_t seed) {
 void check_short_match(GameType game) {
   const fs::path dir = fresh_dir("match");
   MatchOptions o = options(game, 4, 11);
-  o.records_dir = (dir / "records").string();  // created by play_match
-  const MatchSummary summary = play_match(o);
+  const std::string records = (dir / "records").string();
+  const MatchSummary summary = play_match(o, record_files(records));  // creates the folder
 
   EXPECT_EQ(summary.games_played, 4);
   EXPECT_EQ(summary.players[0].games_won + summary.players[1].games_won + summary.draws, 4);
@@ -81,7 +84,7 @@ void check_short_match(GameType game) {
   int innings = 0;
   int fouls = 0;
   for (int g = 0; g < 4; ++g) {
-    const fs::path file = fs::path(o.records_dir) / ("game-000" + std::to_string(g + 1) + ".json");
+    const fs::path file = fs::path(records) / ("game-000" + std::to_string(g + 1) + ".json");
     ASSERT_TRUE(fs::exists(file)) << file;
     const GameRecord r = read_file(file);
     EXPECT_EQ(r.config.game, game);
@@ -158,17 +161,14 @@ TEST(Match, ManyGamesRoundTripAndReplay) {
 TEST(Match, SameSeedSameSummaryAndRecords) {
   const fs::path dir = fresh_dir("match");
   MatchOptions o = options(GameType::nine_ball, 2, 99);
-  o.records_dir = (dir / "a").string();
-  const std::string a = match_summary_json(play_match(o));
-  o.records_dir = (dir / "b").string();
-  const std::string b = match_summary_json(play_match(o));
+  const std::string a = match_summary_json(play_match(o, record_files((dir / "a").string())));
+  const std::string b = match_summary_json(play_match(o, record_files((dir / "b").string())));
   EXPECT_EQ(a, b);
   for (const char* name : {"game-0001.json", "game-0002.json"}) {
     EXPECT_EQ(slurp(dir / "a" / name), slurp(dir / "b" / name)) << name;
   }
   o.seed = 100;
-  o.records_dir = (dir / "c").string();
-  (void)play_match(o);
+  (void)play_match(o, record_files((dir / "c").string()));
   EXPECT_NE(slurp(dir / "a" / "game-0001.json"), slurp(dir / "c" / "game-0001.json"));
   fs::remove_all(dir);
 }
@@ -370,12 +370,12 @@ TEST(Match, BadOptionsAndUnwritableRecords) {
   const fs::path dir = fresh_dir("match");
   std::ofstream(dir / "file") << "in the way";
   o.table_size = "9ft";
-  o.records_dir = (dir / "file" / "records").string();
+  const std::string records = (dir / "file" / "records").string();
   try {
-    (void)play_match(o);
+    (void)play_match(o, record_files(records));
     FAIL() << "no exception";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find(o.records_dir), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(records), std::string::npos) << e.what();
   }
   fs::remove_all(dir);
 }

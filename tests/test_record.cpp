@@ -18,6 +18,8 @@
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/record.hpp"
+#include "breakshot/players.hpp"
+#include "breakshot/record_io.hpp"
 
 namespace {
 

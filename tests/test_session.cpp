@@ -10,6 +10,8 @@
 #include "breakshot/match.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/record.hpp"
+#include "breakshot/players.hpp"
+#include "breakshot/record_io.hpp"
 #include "breakshot/session.hpp"
 
 using namespace breakshot;
@@ -61,8 +63,8 @@ TEST(Session, APlayedGameIsTheGamePlayGamePlays) {
       EXPECT_EQ(ra.noise_seed, GameSeeds::noise(9, i));
       if (const auto* shot = std::get_if<Shoot>(&ra.action)) {
         ASSERT_TRUE(ra.intended.has_value());
-        EXPECT_TRUE(identical(shot->strike, perturb(*ra.intended, noise,
-                                                    config.ball_radius, ra.noise_seed)));
+        EXPECT_TRUE(identical(shot->strike,
+                              perturb(*ra.intended, noise, config.ball_radius, ra.noise_seed)));
       }
     }
     EXPECT_TRUE(replay(session.record()).identical);

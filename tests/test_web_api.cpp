@@ -31,6 +31,7 @@
 #include "breakshot/lab.hpp"
 #include "breakshot/match.hpp"
 #include "breakshot/record.hpp"
+#include "breakshot/record_io.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
 #include "web_api.hpp"

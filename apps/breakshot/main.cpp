@@ -46,6 +46,9 @@
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/record.hpp"
+#include "breakshot/players.hpp"
+#include "breakshot/match_io.hpp"
+#include "breakshot/record_io.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/serve.hpp"
 #include "breakshot/simulation.hpp"
@@ -228,7 +231,6 @@ bs::MatchOptions match_options(const MatchArgs& a) {
     throw BadArgument{"--table: unknown table size '" + a.table + "' (7ft, 8ft or 9ft)"};
   }
   opt.table_size = a.table;
-  opt.records_dir = a.records;
   opt.timing = a.timing;
   return opt;
 }
@@ -242,7 +244,9 @@ int run_match(const MatchArgs& args) {
     return kExitInvalid;
   }
   try {
-    write_output("", bs::match_summary_json(bs::play_match(opt)));
+    const bs::RecordSink records =
+        args.records.empty() ? bs::RecordSink{} : bs::record_files(args.records);
+    write_output("", bs::match_summary_json(bs::play_match(opt, records)));
   } catch (const std::runtime_error& e) {
     // A record that cannot be written: the message names the path.
     throw Failure{e.what()};

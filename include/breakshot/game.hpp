@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,6 +24,10 @@
 #include "breakshot/vec.hpp"
 
 namespace breakshot {
+
+namespace detail {
+class Ruleset;
+}
 
 /// The fastest cue stick a game accepts (m/s); a hard break is about 11.
 inline constexpr double kMaxCueSpeed = 20.0;
@@ -209,6 +214,10 @@ class Rules {
   GameState start(std::uint64_t rack_seed, int breaker) const;
 
   LegalActions legal_actions(const GameState& state) const;
+  /// Balls the player to act may legally hit first.
+  std::vector<int> targets(const GameState& state) const;
+  /// The foul kinds of this game, in the order match summaries list them.
+  std::vector<Foul> foul_kinds() const;
   /// Why `action` is not allowed now, or nullopt if it is.
   std::optional<std::string> check(const GameState& state, const Action& action) const;
   /// Why the cue ball may not be placed at p now, or nullopt.
@@ -230,6 +239,7 @@ class Rules {
 
  private:
   GameConfig config_;
+  std::shared_ptr<const detail::Ruleset> ruleset_;  // the game's own rulings (src/game/ruleset.hpp)
   Table table_;
   Scenario base_;  // physics, table and ball specs of a full rack
 };

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -40,9 +41,6 @@ struct MatchOptions {
   std::uint64_t seed = 0;
   /// The noise of players without a noise of their own (Player::noise()).
   NoiseModel noise;
-  /// Where to write each game's record (game-0001.json, ...); created if
-  /// missing. Empty: no records.
-  std::string records_dir;
   /// Measure how long each player's decisions take (wall clock) and put
   /// the figures in the summary. Off by default: times differ from run to
   /// run, and without them the summary is a function of the options.
@@ -100,26 +98,30 @@ struct MatchSummary {
   std::array<PlayerStats, 2> players;
 };
 
-/// A summary with no games yet: the options' settings, the player names
-/// and each player's effective noise (make_player(name)->noise(), else
-/// options.noise), every foul kind at 0. Throws std::invalid_argument for
-/// an unknown player name.
-MatchSummary empty_summary(const MatchOptions& options);
+/// A summary with no games yet: the options' settings, the player names,
+/// each seat's effective noise (`seat_noise`: the player's own, else
+/// options.noise), every foul kind of the game at 0. Throws
+/// std::invalid_argument for a game whose rules cannot be built (an
+/// unknown table size).
+MatchSummary empty_summary(const MatchOptions& options,
+                           const std::array<NoiseModel, 2>& seat_noise);
 
 /// Adds a finished game (phase game_over at the end) to the summary; the
 /// record's seat 0 is summary.players[0]. Throws std::invalid_argument for
 /// a game that is not over.
 void add_game(MatchSummary& summary, const GameRecord& record);
 
-/// Plays options.games games: game g (from 0) is broken by player g % 2,
-/// with the game seed mix_seed(options.seed, g). Throws
-/// std::invalid_argument for bad options (unknown player or table, fewer
-/// than one game), std::runtime_error naming the path when a record
-/// cannot be written, and whatever play_game throws.
-MatchSummary play_match(const MatchOptions& options);
+/// Where a match sends each finished game's record: game g (from 0) and
+/// its record. io's record_files (match_io.hpp) writes them to a folder.
+using RecordSink = std::function<void(int game, const GameRecord& record)>;
 
-/// The summary as JSON text (indented, keys in a fixed order, a trailing
-/// newline): the same summary gives the same bytes.
-std::string match_summary_json(const MatchSummary& summary);
+/// Plays options.games games between p0 (seat 0) and p1: game g (from 0)
+/// is broken by seat g % 2, with the game seed mix_seed(options.seed, g).
+/// Each record goes to `sink` (if any) as soon as the game ends.
+/// options.players are the names the summary gives the seats. Throws
+/// std::invalid_argument for bad options (an unknown table, fewer than one
+/// game), and whatever play_game and the sink throw.
+MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
+                        const RecordSink& sink = {});
 
 }  // namespace breakshot

@@ -1,8 +1,8 @@
-// Computer players. A player maps a game state to an action.
+// A player maps a game state to an action. The computer players and the
+// registry that makes them by name are in players.hpp (the AI layer).
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,16 +23,5 @@ class Player {
   /// (the AI levels, docs/ai.md); nullopt: the match's noise.
   virtual std::optional<NoiseModel> noise() const { return std::nullopt; }
 };
-
-/// The baseline player: ghost-ball aim at every legal ball and pocket,
-/// the easiest unblocked shot (docs/rules.md, "Baseline player"). Its
-/// aim uses libm (atan2, sin, cos), so its choices are reproducible on
-/// one maths library; records store the executed actions, so a replay
-/// never depends on that.
-std::unique_ptr<Player> make_baseline_player();
-
-/// A player by name ("baseline"); throws std::invalid_argument for an
-/// unknown name, listing the known ones.
-std::unique_ptr<Player> make_player(std::string_view name);
 
 }  // namespace breakshot

@@ -49,8 +49,7 @@ class GameSession {
   /// A new game: the rules of `config` (std::invalid_argument if they
   /// cannot be built), the rack from GameSeeds::rack(game_seed), `breaker`
   /// (0 or 1; std::invalid_argument otherwise) to break.
-  GameSession(const GameConfig& config, const Seats& seats, std::uint64_t game_seed,
-              int breaker);
+  GameSession(const GameConfig& config, const Seats& seats, std::uint64_t game_seed, int breaker);
   /// A game whose first rack has the seed `rack_seed` (a record's start);
   /// otherwise as above.
   GameSession(const GameConfig& config, const Seats& seats, std::uint64_t game_seed,

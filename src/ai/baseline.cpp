@@ -1,4 +1,4 @@
-// The baseline player (include/breakshot/player.hpp): ghost-ball aim at
+// The baseline player (include/breakshot/players.hpp): ghost-ball aim at
 // every legal ball and pocket, the easiest unblocked shot.
 //
 // A pot is planned in two legs. The object ball's leg runs from the ball
@@ -816,18 +816,5 @@ class BaselinePlayer final : public Player {
 }  // namespace
 
 std::unique_ptr<Player> make_baseline_player() { return std::make_unique<BaselinePlayer>(); }
-
-std::unique_ptr<Player> make_player(std::string_view name) {
-  if (name == "baseline") return make_baseline_player();
-  // The AI levels (include/breakshot/ai.hpp) by their names.
-  const std::vector<std::string> levels = ai_level_names();
-  if (std::find(levels.begin(), levels.end(), name) != levels.end()) {
-    return make_ai_player(ai_level(name));
-  }
-  std::string known = "baseline";
-  for (const std::string& l : levels) known += ", " + l;
-  throw std::invalid_argument("unknown player \"" + std::string(name) + "\" (known players: " +
-                              known + ")");
-}
 
 }  // namespace breakshot

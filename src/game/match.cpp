@@ -16,30 +16,17 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <chrono>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <variant>
-
-#include <nlohmann/json.hpp>
 
 namespace breakshot {
 
 namespace {
-
-/// Every foul kind, so that a summary lists them all, 0 included.
-constexpr Foul kFoulKinds[] = {Foul::scratch,          Foul::no_contact,
-                               Foul::wrong_ball_first, Foul::no_rail,
-                               Foul::illegal_break,    Foul::behind_head_string};
 
 std::string player_label(int seat, const Player& p) {
   return "player " + std::to_string(seat) + " (" + p.name() + ")";
@@ -83,7 +70,8 @@ NoiseModel effective_noise(const Player& p, const NoiseModel& match_noise) {
 
 /// empty_summary with the players' effective noise already known.
 MatchSummary empty_summary_with(const MatchOptions& options,
-                                const std::array<NoiseModel, 2>& noise) {
+                                const std::array<NoiseModel, 2>& noise,
+                                const std::vector<Foul>& fouls) {
   MatchSummary s;
   s.game = options.game;
   s.table_size = options.table_size;
@@ -92,17 +80,17 @@ MatchSummary empty_summary_with(const MatchOptions& options,
   for (std::size_t p = 0; p < 2; ++p) {
     s.players[p].name = options.players[p];
     s.players[p].noise = to_string(noise[p]);
-    for (const Foul f : kFoulKinds) s.players[p].fouls[std::string(to_string(f))] = 0;
+    // Every foul kind of the game, so that a summary lists them all, 0 included.
+    for (const Foul f : fouls) s.players[p].fouls[std::string(to_string(f))] = 0;
   }
   return s;
 }
 
-void write_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path.string() + ": write error");
+GameConfig config_of(const MatchOptions& options) {
+  GameConfig config;
+  config.game = options.game;
+  config.table_size = options.table_size;
+  return config;
 }
 
 // A player whose decisions are timed (MatchOptions::timing).
@@ -123,13 +111,6 @@ class TimedPlayer final : public Player {
   Player& inner_;
   std::vector<double>& seconds_;
 };
-
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
-  return v[std::min(k, v.size() - 1)];
-}
 
 }  // namespace
 
@@ -181,12 +162,9 @@ double PlayerStats::balls_per_inning() const {
   return innings > 0 ? static_cast<double>(balls_pocketed) / static_cast<double>(innings) : 0.0;
 }
 
-MatchSummary empty_summary(const MatchOptions& options) {
-  std::array<NoiseModel, 2> noise;
-  for (std::size_t p = 0; p < 2; ++p) {
-    noise[p] = effective_noise(*make_player(options.players[p]), options.noise);
-  }
-  return empty_summary_with(options, noise);
+MatchSummary empty_summary(const MatchOptions& options,
+                           const std::array<NoiseModel, 2>& seat_noise) {
+  return empty_summary_with(options, seat_noise, Rules(config_of(options)).foul_kinds());
 }
 
 void add_game(MatchSummary& summary, const GameRecord& record) {
@@ -242,84 +220,28 @@ void add_game(MatchSummary& summary, const GameRecord& record) {
   }
 }
 
-MatchSummary play_match(const MatchOptions& options) {
+MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
+                        const RecordSink& sink) {
   if (options.games < 1) {
     throw std::invalid_argument("the number of games must be at least 1, not " +
                                 std::to_string(options.games));
   }
-  GameConfig config;
-  config.game = options.game;
-  config.table_size = options.table_size;
-  const Rules rules(config);
-  const std::unique_ptr<Player> p0 = make_player(options.players[0]);
-  const std::unique_ptr<Player> p1 = make_player(options.players[1]);
-
-  const std::filesystem::path dir(options.records_dir);
-  if (!options.records_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
-  }
-
+  const Rules rules(config_of(options));
   MatchSummary summary = empty_summary_with(
-      options, {effective_noise(*p0, options.noise), effective_noise(*p1, options.noise)});
-  TimedPlayer t0(*p0, summary.players[0].decision_seconds);
-  TimedPlayer t1(*p1, summary.players[1].decision_seconds);
-  Player& s0 = options.timing ? static_cast<Player&>(t0) : *p0;
-  Player& s1 = options.timing ? static_cast<Player&>(t1) : *p1;
+      options, {effective_noise(p0, options.noise), effective_noise(p1, options.noise)},
+      rules.foul_kinds());
+  TimedPlayer t0(p0, summary.players[0].decision_seconds);
+  TimedPlayer t1(p1, summary.players[1].decision_seconds);
+  Player& s0 = options.timing ? static_cast<Player&>(t0) : p0;
+  Player& s1 = options.timing ? static_cast<Player&>(t1) : p1;
   for (int g = 0; g < options.games; ++g) {
     const GameRecord record = play_game(rules, s0, s1, g % 2,
                                         mix_seed(options.seed, static_cast<std::uint64_t>(g)),
                                         options.noise);
     add_game(summary, record);
-    if (!options.records_dir.empty()) {
-      char name[32];
-      std::snprintf(name, sizeof name, "game-%04d.json", g + 1);
-      write_file(dir / name, write_record(record));
-    }
+    if (sink) sink(g, record);
   }
   return summary;
-}
-
-std::string match_summary_json(const MatchSummary& s) {
-  using ojson = nlohmann::ordered_json;
-  ojson j = ojson::object();
-  j["game"] = to_string(s.game);
-  j["table_size"] = s.table_size;
-  j["seed"] = std::to_string(s.seed);  // a string, as in records: 64 bits survive any reader
-  j["noise"] = to_string(s.noise);
-  j["games_played"] = s.games_played;
-  j["draws"] = s.draws;
-  ojson players = ojson::array();
-  for (const PlayerStats& p : s.players) {
-    ojson o = ojson::object();
-    o["name"] = p.name;
-    o["noise"] = p.noise;
-    o["games_won"] = p.games_won;
-    o["breaks"] = p.breaks;
-    o["break_and_runs"] = p.break_and_runs;
-    o["innings"] = p.innings;
-    o["shots"] = p.shots;
-    o["balls_pocketed"] = p.balls_pocketed;
-    o["balls_per_inning"] = p.balls_per_inning();
-    o["pot_attempts"] = p.pot_attempts;
-    o["pots_made"] = p.pots_made;
-    o["pot_rate"] = p.pot_rate();
-    if (!p.decision_seconds.empty()) {
-      ojson t = ojson::object();
-      t["decisions"] = p.decision_seconds.size();
-      t["median"] = quantile(p.decision_seconds, 0.5);
-      t["p90"] = quantile(p.decision_seconds, 0.9);
-      t["max"] = quantile(p.decision_seconds, 1.0);
-      o["decision_seconds"] = std::move(t);
-    }
-    ojson fouls = ojson::object();
-    for (const auto& [kind, count] : p.fouls) fouls[kind] = count;
-    o["fouls"] = std::move(fouls);
-    players.push_back(std::move(o));
-  }
-  j["players"] = std::move(players);
-  return j.dump(2) + "\n";
 }
 
 }  // namespace breakshot

@@ -69,7 +69,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "breakshot/record.hpp"
+#include "breakshot/record_io.hpp"
 
 #include "breakshot/session.hpp"
 
@@ -817,68 +817,7 @@ void report_difference(ReplayReport& rep, Difference d, std::string context) {
                 ", replayed " + rep.replayed;
 }
 
-bool same_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-
 }  // namespace
-
-bool identical(const CueStrike& a, const CueStrike& b) {
-  return same_bits(a.speed, b.speed) && same_bits(a.phi, b.phi) && same_bits(a.theta, b.theta) &&
-         same_bits(a.a, b.a) && same_bits(a.b, b.b);
-}
-
-bool identical(const Action& a, const Action& b) {
-  if (a.index() != b.index()) return false;
-  if (const auto* pa = std::get_if<PlaceCueBall>(&a)) {
-    const auto& pb = std::get<PlaceCueBall>(b);
-    return same_bits(pa->position.x, pb.position.x) && same_bits(pa->position.y, pb.position.y);
-  }
-  if (const auto* sa = std::get_if<Shoot>(&a)) {
-    const auto& sb = std::get<Shoot>(b);
-    return identical(sa->strike, sb.strike) && sa->call == sb.call && sa->safety == sb.safety &&
-           sa->push_out == sb.push_out;
-  }
-  return std::get<Decide>(a) == std::get<Decide>(b);
-}
-
-namespace {
-
-bool identical_state(const GameState& a, const GameState& b) {
-  if (!(a == b)) return false;
-  for (std::size_t i = 0; i < a.position.size(); ++i) {
-    if (!same_bits(a.position[i].x, b.position[i].x) ||
-        !same_bits(a.position[i].y, b.position[i].y)) {
-      return false;
-    }
-  }
-  return true;
-}
-
-bool identical_config(const GameConfig& a, const GameConfig& b) {
-  // GameConfig has no operator==; its JSON names every member, exactly.
-  return config_json(a).dump() == config_json(b).dump();
-}
-
-bool identical_noise(const NoiseModel& a, const NoiseModel& b) {
-  return same_bits(a.phi, b.phi) && same_bits(a.theta, b.theta) && same_bits(a.speed, b.speed) &&
-         same_bits(a.a, b.a) && same_bits(a.b, b.b);
-}
-
-}  // namespace
-
-bool RecordedAction::operator==(const RecordedAction& o) const {
-  const bool intended_same =
-      intended.has_value() == o.intended.has_value() && (!intended || identical(*intended, *o.intended));
-  return player == o.player && identical(action, o.action) && intended_same &&
-         noise_seed == o.noise_seed && ruling == o.ruling && identical_state(after, o.after);
-}
-
-bool GameRecord::operator==(const GameRecord& o) const {
-  return identical_config(config, o.config) && players == o.players && seed == o.seed &&
-         identical_noise(noise[0], o.noise[0]) && identical_noise(noise[1], o.noise[1]) &&
-         identical_state(start, o.start) && actions == o.actions;
-}
 
 std::string write_record(const GameRecord& record) {
   // The parts are built as JSON trees and dumped compact, each action on
@@ -966,7 +905,7 @@ ReplayReport replay(const GameRecord& record) {
     rep.message = std::string("the start cannot be set up: ") + e.what();
     return rep;
   }
-  if (!identical_state(session->state(), record.start)) {
+  if (!identical(session->state(), record.start)) {
     report_difference(rep, difference(state_json(record.start), state_json(session->state()), "start"),
                       "the start differs from Rules::start");
     rep.final_state = session->state();
@@ -1037,7 +976,7 @@ ReplayReport replay(const GameRecord& record) {
                         context);
       return rep;
     }
-    if (!identical_state(out.state, ra.after)) {
+    if (!identical(out.state, ra.after)) {
       report_difference(rep, difference(state_json(ra.after), state_json(out.state),
                                         member_path(path, "after")),
                         context);

@@ -79,6 +79,7 @@
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/record.hpp"
+#include "breakshot/record_io.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/session.hpp"
 #include "breakshot/simulation.hpp"

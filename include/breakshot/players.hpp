@@ -1,0 +1,38 @@
+// The computer players by name, and matches between players named so.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "breakshot/match.hpp"
+#include "breakshot/player.hpp"
+
+namespace breakshot {
+
+/// The baseline player: ghost-ball aim at every legal ball and pocket,
+/// the easiest unblocked shot (docs/rules.md, "Baseline player"). Its
+/// aim uses libm (atan2, sin, cos), so its choices are reproducible on
+/// one maths library; records store the executed actions, so a replay
+/// never depends on that.
+std::unique_ptr<Player> make_baseline_player();
+
+/// A player by name ("baseline"); throws std::invalid_argument for an
+/// unknown name, listing the known ones.
+std::unique_ptr<Player> make_player(std::string_view name);
+
+/// The names make_player knows: "baseline", then the AI levels.
+std::vector<std::string> player_names();
+
+/// empty_summary (match.hpp) for the players named in options.players,
+/// with each one's own noise (make_player(name)->noise(), else
+/// options.noise). Throws std::invalid_argument for an unknown name.
+MatchSummary empty_summary(const MatchOptions& options);
+
+/// play_match (match.hpp) between make_player(options.players[0]) and
+/// make_player(options.players[1]). Throws std::invalid_argument for an
+/// unknown player name or bad options.
+MatchSummary play_match(const MatchOptions& options, const RecordSink& sink = {});
+
+}  // namespace breakshot

@@ -1,0 +1,50 @@
+// The computer players by name (include/breakshot/players.hpp).
+#include "breakshot/players.hpp"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <string>
+
+#include "breakshot/ai.hpp"
+
+namespace breakshot {
+
+std::vector<std::string> player_names() {
+  std::vector<std::string> names{"baseline"};
+  for (const std::string& l : ai_level_names()) names.push_back(l);
+  return names;
+}
+
+std::unique_ptr<Player> make_player(std::string_view name) {
+  if (name == "baseline") return make_baseline_player();
+  // The AI levels (include/breakshot/ai.hpp) by their names.
+  const std::vector<std::string> levels = ai_level_names();
+  if (std::find(levels.begin(), levels.end(), name) != levels.end()) {
+    return make_ai_player(ai_level(name));
+  }
+  std::string known;
+  for (const std::string& n : player_names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown player \"" + std::string(name) + "\" (known players: " +
+                              known + ")");
+}
+
+MatchSummary empty_summary(const MatchOptions& options) {
+  std::array<NoiseModel, 2> noise;
+  for (std::size_t p = 0; p < 2; ++p) {
+    noise[p] = make_player(options.players[p])->noise().value_or(options.noise);
+  }
+  return empty_summary(options, noise);
+}
+
+MatchSummary play_match(const MatchOptions& options, const RecordSink& sink) {
+  if (options.games < 1) {
+    throw std::invalid_argument("the number of games must be at least 1, not " +
+                                std::to_string(options.games));
+  }
+  const std::unique_ptr<Player> p0 = make_player(options.players[0]);
+  const std::unique_ptr<Player> p1 = make_player(options.players[1]);
+  return play_match(options, *p0, *p1, sink);
+}
+
+}  // namespace breakshot

@@ -1,0 +1,163 @@
+// 9-ball by the WPA rules: the lowest ball first, the 9 wins, the push-out
+// after the break, three fouls in a row. docs/rules.md lists the clauses.
+#include <memory>
+#include <string>
+
+#include "ruleset.hpp"
+
+namespace breakshot::detail {
+
+namespace {
+
+class NineBall final : public Ruleset {
+ public:
+  int ball_count() const override { return 10; }
+
+  std::vector<Foul> foul_kinds() const override {
+    // The pool kinds, listed as 8-ball lists them (illegal_break and
+    // behind_head_string never occur in 9-ball and stay at 0).
+    return {Foul::scratch, Foul::no_contact,    Foul::wrong_ball_first,
+            Foul::no_rail, Foul::illegal_break, Foul::behind_head_string};
+  }
+
+  std::vector<int> targets(const GameState& s) const override {
+    const auto n = static_cast<int>(s.on_table.size());
+    for (int b = 1; b < n; ++b) {
+      if (s.on_table[static_cast<std::size_t>(b)]) return {b};
+    }
+    return {};
+  }
+
+  std::vector<Choice> choices(Phase phase) const override {
+    if (phase == Phase::push_out_choice) return {Choice::shoot, Choice::pass_back};
+    return {};
+  }
+
+  void legal_shot(const GameState& s, LegalActions& la) const override {
+    la.push_out = s.phase == Phase::shot && s.push_out_allowed;
+  }
+
+  std::optional<std::string> check_shot(const Rules& rules, const GameState& s,
+                                        const Shoot& shot) const override {
+    if (shot.safety) return "9-ball has no declared safety";
+    if (shot.call) {
+      // Informational only: a valid pocket and an object ball on the table.
+      const Call& call = *shot.call;
+      const auto pockets = rules.table().pockets.size();
+      if (call.pocket < 0 || call.pocket >= static_cast<int>(pockets)) {
+        return "called pocket " + std::to_string(call.pocket) + " does not exist (0-" +
+               std::to_string(pockets - 1) + ")";
+      }
+      if (call.ball < 1 || call.ball >= ball_count() ||
+          !s.on_table[static_cast<std::size_t>(call.ball)]) {
+        return "called ball " + std::to_string(call.ball) + " is not on the table";
+      }
+      if (shot.push_out) return "a push-out is not a pot attempt: it has no call";
+    }
+    if (shot.push_out && !(s.phase == Phase::shot && s.push_out_allowed)) {
+      return "a push-out is only allowed on the shot right after the break";
+    }
+    return std::nullopt;
+  }
+
+  void decide(DecisionRuling& d, Choice choice) const override {
+    GameState& s = d.s;
+    switch (choice) {
+      case Choice::shoot:
+        s.phase = Phase::shot;
+        s.ball_in_hand = BallInHand::none;
+        s.after_push_out = false;
+        d.r.text = d.who + " takes the table after the push-out.";
+        break;
+      case Choice::pass_back:
+        s.phase = Phase::shot;
+        s.ball_in_hand = BallInHand::none;
+        s.after_push_out = false;
+        d.pass_turn();
+        d.r.turn_continues = false;
+        d.r.text = d.who + " passes the shot back to " + player_name(d.opp) + ".";
+        break;
+      default:
+        break;  // not on offer in 9-ball: check() refuses them
+    }
+  }
+
+  void rule_shot(ShotRuling& x) const override {
+    GameState& s = x.s;
+    Ruling& r = x.r;
+    const ShotFacts& f = x.f;
+    const Shoot& shot = x.shot;
+    const std::string& who = x.who;
+    const std::string& what = x.what;
+    const std::vector<Foul>& fouls = r.fouls;
+    const bool is_break = x.is_break;
+    const bool nine_in = has(f.pocketed, 9);
+    const int lowest = x.targets.empty() ? -1 : x.targets.front();
+    if (is_break) {
+      r.legal_break = !x.objects.empty() || f.object_balls_to_cushion >= 4;
+      if (f.first_hit < 0)
+        x.foul(Foul::no_contact);
+      else if (f.first_hit != lowest)
+        x.foul(Foul::wrong_ball_first);
+      if (!r.legal_break) x.foul(Foul::illegal_break);
+    } else if (shot.push_out) {
+      // Push-out: only the other fouls apply (WPA 9-ball).
+    } else {
+      if (f.first_hit < 0)
+        x.foul(Foul::no_contact);
+      else if (f.first_hit != lowest)
+        x.foul(Foul::wrong_ball_first);
+      if (f.first_hit >= 0 && x.objects.empty() && !f.cushion_after_contact) {
+        x.foul(Foul::no_rail);
+      }
+    }
+    auto& streak = s.fouls_in_a_row[static_cast<std::size_t>(x.shooter)];
+    s.push_out_allowed = is_break;  // the shot after the break may be a push-out
+    if (!fouls.empty()) {
+      if (nine_in) x.spot(9);
+      streak += 1;
+      if (streak >= 3) {
+        x.game_over(x.opp, who + " fouled three times in a row");
+        r.text = what + "Foul (" + join_fouls(fouls) +
+                 "), the third in a row: " + player_name(x.opp) + " wins.";
+      } else {
+        x.ball_in_hand_for_opponent(BallInHand::anywhere);
+        r.text = what + "Foul (" + join_fouls(fouls) + "): " + player_name(x.opp) +
+                 " has the cue ball in hand" + (nine_in ? "; the 9 is spotted" : "") +
+                 (streak == 2 ? "; " + who + " is on two fouls" : "") + ".";
+      }
+    } else if (shot.push_out) {
+      streak = 0;
+      if (nine_in) x.spot(9);
+      s.phase = Phase::push_out_choice;
+      s.after_push_out = true;
+      s.ball_in_hand = BallInHand::none;
+      x.pass_turn();
+      r.text = what + "Push-out" + (nine_in ? "; the 9 is spotted" : "") + ": " +
+               player_name(x.opp) + " shoots from here or passes the shot back.";
+    } else {
+      streak = 0;
+      s.phase = Phase::shot;
+      s.ball_in_hand = BallInHand::none;
+      if (nine_in) {
+        x.game_over(x.shooter,
+                    who + (is_break ? " pocketed the 9 on the break" : " pocketed the 9 legally"));
+        r.text = what + s.result + ": " + who + " wins.";
+      } else if (!x.objects.empty()) {
+        r.turn_continues = true;
+        r.text = what + (is_break ? "Legal break; " : "") + who + " shoots again" +
+                 (is_break ? " and may push out." : ".");
+      } else {
+        x.pass_turn();
+        r.text = what + (is_break ? "Legal break; " : "") + player_name(x.opp) + " to shoot" +
+                 (is_break ? " and may push out." : ".");
+      }
+    }
+  }
+};
+
+}  // namespace
+
+std::shared_ptr<const Ruleset> make_nine_ball_ruleset() { return std::make_shared<NineBall>(); }
+
+}  // namespace breakshot::detail

@@ -1,0 +1,101 @@
+// The family of rulesets behind Rules (include/breakshot/game.hpp).
+//
+// Rules is the one shape every game has: a plain GameState, legal actions,
+// check, and apply returning the next state with the shot's events and the
+// ruling read from them. What is common to the games on a pool table
+// (placing the cue ball, simulating a shot, reading its facts, spotting,
+// the stalemate limit) is written once in rules.cpp; what one game decides
+// is a Ruleset, one file a game (rules_eight.cpp, rules_nine.cpp). A new
+// game is a new Ruleset and an entry in make_ruleset.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "breakshot/event.hpp"
+#include "breakshot/game.hpp"
+
+namespace breakshot::detail {
+
+bool has(const std::vector<int>& v, int x);
+std::string player_name(int p);
+std::string join_balls(const std::vector<int>& balls);
+std::string join_fouls(const std::vector<Foul>& fouls);
+
+/// A decision being ruled: the state before it, the state and ruling
+/// being built, and the moves the games' decisions share.
+struct DecisionRuling {
+  const Rules& rules;
+  const GameState& before;
+  GameState& s;
+  Ruling& r;
+  int shooter;
+  int opp;
+  std::string who;  ///< "Player N" of the shooter
+
+  /// The table is racked again (a new rack seed from the old one), the
+  /// shots and innings of the game carried over, `breaker` to break.
+  void rerack(int breaker);
+  /// The turn passes to the opponent (a new inning begins).
+  void pass_turn();
+};
+
+/// A shot being ruled: what the common part read from the simulation and
+/// the moves the games' rulings share.
+struct ShotRuling {
+  const Rules& rules;
+  const GameState& before;
+  const Shoot& shot;
+  const std::vector<Event>& events;  ///< ball fields are ball numbers
+  const ShotFacts& f;
+  GameState& s;
+  Ruling& r;
+  int shooter;
+  int opp;
+  std::string who;   ///< "Player N" of the shooter
+  std::string what;  ///< "Player N pockets ... ." and a space
+  bool is_break = false;
+  bool cue_in = false;       ///< the cue ball fell
+  std::vector<int> objects;  ///< object balls pocketed, in order
+  std::vector<int> targets;  ///< the legal first targets before the shot
+
+  /// Adds a foul once.
+  void foul(Foul x);
+  void game_over(int winner, const std::string& why);
+  /// The opponent shoots next with the cue ball in hand at `where`.
+  void ball_in_hand_for_opponent(BallInHand where);
+  void pass_turn();
+  /// Puts `ball` back on the table (Rules::spot_position) and says so.
+  void spot(int ball);
+  /// The pocket `ball` fell in, -1 if it did not.
+  int pocket_of(int ball) const;
+};
+
+class Ruleset {
+ public:
+  virtual ~Ruleset() = default;
+  /// Balls including the cue ball.
+  virtual int ball_count() const = 0;
+  /// The foul kinds this game knows, in the order summaries list them.
+  virtual std::vector<Foul> foul_kinds() const = 0;
+  /// Balls the shooter may legally hit first.
+  virtual std::vector<int> targets(const GameState& s) const = 0;
+  /// The decisions on offer in a decision phase (empty: none).
+  virtual std::vector<Choice> choices(Phase phase) const = 0;
+  /// The game's part of LegalActions for a shot (push_out, call).
+  virtual void legal_shot(const GameState& s, LegalActions& la) const = 0;
+  /// Why the game refuses this shot (the strike itself is checked already).
+  virtual std::optional<std::string> check_shot(const Rules& rules, const GameState& s,
+                                                const Shoot& shot) const = 0;
+  /// Plays a decision already checked to be on offer.
+  virtual void decide(DecisionRuling& d, Choice choice) const = 0;
+  /// Rules a shot: fouls, whose turn, the next phase, the ruling's text.
+  virtual void rule_shot(ShotRuling& shot) const = 0;
+};
+
+std::shared_ptr<const Ruleset> make_eight_ball_ruleset();
+std::shared_ptr<const Ruleset> make_nine_ball_ruleset();
+
+}  // namespace breakshot::detail
