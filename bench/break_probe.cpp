@@ -1,5 +1,5 @@
-// Break statistics per break option, under tournament noise (docs/ai.md,
-// "The third session of 2026-11-22"): which placements, aims, speeds and
+// Break statistics per break option, under tournament noise (docs/experiments.md,
+// "richer safeties; 9-ball calls on expected pots"): which placements, aims, speeds and
 // tip heights keep the table, break dry or foul.
 //
 //   break_probe [--game eight_ball|nine_ball] [--racks N]

@@ -369,8 +369,8 @@ int made_of_100(const Rules& rules, const GameState& s, const CandidateShot& c, 
 
 // A ball a centimetre off the long rail, 0.8 m from the corner: every line
 // across the corner's mouth meets the cushion on the way, yet the engine
-// runs the ball along the rail and drops it, as on a real table (docs/ai.md,
-// "The second session of 2026-11-23"). Shot generation plans that run and
+// runs the ball along the rail and drops it, as on a real table (docs/experiments.md,
+// "rail runs into the corners"). Shot generation plans that run and
 // the plans go in under tournament noise.
 TEST(AiShotGeneration, RunsABallAlongTheRailIntoTheCorner) {
   const Rules rules = nine_ball_rules();

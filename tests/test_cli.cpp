@@ -1,5 +1,5 @@
 // The breakshot command as a user runs it: exit status, standard error
-// and the result it writes (shared/contract/scenario-format.md, "Command
+// and the result it writes (docs/contract.md, "Command
 // line and exit status").
 
 #include <gtest/gtest.h>

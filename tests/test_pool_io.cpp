@@ -1,7 +1,7 @@
 // Reading and writing the pool model's scenarios and results: the pool
 // model's defaults, pool tables and their cushion fields, racks, the cue
 // strike, balls in pockets and against the pocket jaws, and the result's
-// pool events and "cue" object (shared/contract/scenario-format.md;
+// pool events and "cue" object (docs/contract.md;
 // docs/scenario.md has the project's choices).
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Reading scenarios, validating them and writing results: the contract in
-// shared/contract/scenario-format.md. Every kind of invalid input the
+// docs/contract.md. Every kind of invalid input the
 // contract lists is checked with the exact path it must be reported at.
 
 #include <chrono>

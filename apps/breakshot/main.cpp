@@ -8,7 +8,7 @@
 //     shoot with their level's noise)
 //   breakshot replay RECORD|-
 //
-// Exit status of simulate (shared/contract/scenario-format.md): 0 the run
+// Exit status of simulate (docs/contract.md): 0 the run
 // is complete, 2 the scenario is invalid (nothing simulated), 3
 // max_events stopped the run (the partial result is written), 1 anything
 // else. match: 0 played (the summary JSON on standard output), 2 a bad

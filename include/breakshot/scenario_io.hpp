@@ -1,5 +1,5 @@
 // Reading scenario files and writing result files (the contract in
-// shared/contract/scenario-format.md).
+// docs/contract.md).
 #pragma once
 
 #include <string>

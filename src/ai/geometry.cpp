@@ -98,7 +98,7 @@ std::optional<Approach> approach_line(const Table& table, double R, const Layout
 /// along the cushion, as a player plays it. The pocket's jaws turn such a
 /// ball in even when its line meets the cushion on the way or never
 /// crosses the pocket's capture circle, which is why the lines across the
-/// mouth are all blocked (docs/ai.md, "The second session of 2026-11-23").
+/// mouth are all blocked (docs/experiments.md, "rail runs into the corners").
 std::optional<Approach> rail_run(const Table& table, double R, const Layout& lay, Vec2 from,
                                  const Pocket& pk, int skip1, int skip2) {
   const double L = table.length;
@@ -164,7 +164,7 @@ std::optional<Approach> pocket_approach(const Table& table, double R, const Layo
   // All three blocked: a fan of lines across the whole mouth. A ball near
   // a rail going into a corner along it, or one coming in at a shallow
   // angle, has its open lines to one side, which the three above missed
-  // (docs/ai.md, "The session of 2026-11-23").
+  // (docs/experiments.md, "rail shots: lines across the whole pocket mouth").
   std::array<std::optional<Approach>, kApproachLines> lines;
   for (int i = 0; i < kApproachLines; ++i) {
     if (i == kApproachLines / 2) continue;  // the centre line, blocked above

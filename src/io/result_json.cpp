@@ -1,5 +1,5 @@
 // Writing a result file (the Result section of
-// shared/contract/scenario-format.md).
+// docs/contract.md).
 //
 // A gas run can have a million events, so the text is written straight
 // into one string instead of building a JSON tree first: the tree costs a

@@ -1,6 +1,6 @@
 // Reading a scenario file: JSON text to a validated Scenario, or the
 // first problem found as a JSON path and a reason. The format is the
-// contract in shared/contract/scenario-format.md.
+// contract in docs/contract.md.
 //
 // The reader is strict on purpose: a scenario is usually written by hand,
 // and a typo in a field name that silently falls back to a default gives

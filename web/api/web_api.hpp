@@ -28,7 +28,7 @@ typedef struct BsGame BsGame;
 /* {"version": "...", "levels": [...], "budgets": {...}} */
 const char* bs_version(void);
 
-/* The result file of a scenario (shared/contract/scenario-format.md),
+/* The result file of a scenario (docs/contract.md),
  * exactly as `breakshot simulate` writes it, or {"error"}. Release the
  * text with bs_free. */
 char* bs_simulate(const char* scenario_json);
