@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <variant>
 
 namespace bs = breakshot;
 
@@ -98,6 +99,21 @@ int main() {
   expect(bs::norm(p1 - p0) <= 1e-12 * bs::norm(p0), "momentum is conserved");
   expect(std::abs(e1 - e0) <= 1e-12 * e0, "energy is conserved (elastic collision)");
   expect(result.final_balls[1].position.x > 0.0, "the object ball moved forwards");
+
+  // The game and AI layers: a game of 9-ball between two baseline players,
+  // played through a GameSession, replays identical from its record text.
+  bs::GameConfig config;
+  config.game = bs::GameType::nine_ball;
+  const bs::NoiseModel noise = bs::parse_noise("tournament");
+  bs::GameSession game(config, bs::Seats{{"baseline", "baseline"}, {noise, noise}}, 7, 0);
+  const auto player = bs::make_player("baseline");
+  while (!game.over()) {
+    game.play(player->decide(game.rules(), game.state(), game.next_player_seed()));
+  }
+  std::printf("  9-ball: %zu actions, %s\n", game.actions(), game.state().result.c_str());
+  const auto reread = bs::read_record(bs::write_record(game.record()));
+  expect(std::holds_alternative<bs::GameRecord>(reread), "the game's record reads back");
+  expect(bs::replay(game.record()).identical, "the game replays identical");
 
   if (failures > 0) {
     std::fprintf(stderr, "consumer: %d check(s) failed\n", failures);

@@ -1,13 +1,36 @@
-// Everything public in one include.
+// Every public header of the library in one include, layer by layer
+// (docs/architecture.md, "Layers"). The server of `breakshot serve`
+// (serve.hpp) is part of the command, not of the library.
 #pragma once
 
+// physics: tables, balls, the event-driven simulation, measures
 #include "breakshot/ball.hpp"
+#include "breakshot/cluster_impact.hpp"
+#include "breakshot/detmath.hpp"
 #include "breakshot/event.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/physics.hpp"
+#include "breakshot/pool.hpp"
 #include "breakshot/roots.hpp"
 #include "breakshot/scenario.hpp"
-#include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 #include "breakshot/vec.hpp"
+
+// game: the rules, racks, noise, a game in progress, records, matches
+#include "breakshot/game.hpp"
+#include "breakshot/match.hpp"
+#include "breakshot/noise.hpp"
+#include "breakshot/player.hpp"
+#include "breakshot/rack.hpp"
+#include "breakshot/record.hpp"
+#include "breakshot/session.hpp"
+
+// ai: the computer players
+#include "breakshot/ai.hpp"
+#include "breakshot/players.hpp"
+
+// io: scenario and result files, game records, match summaries
+#include "breakshot/match_io.hpp"
+#include "breakshot/record_io.hpp"
+#include "breakshot/scenario_io.hpp"
