@@ -18,6 +18,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "breakshot/version.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -277,7 +279,9 @@ TEST_F(Cli, OtherFailuresExitOne) {
 TEST_F(Cli, HelpAndVersion) {
   Run r = run("--version");
   EXPECT_EQ(r.status, 0);
-  EXPECT_NE(r.out.find("breakshot"), std::string::npos);
+  // The library's version (version.hpp) and the commit it was built from.
+  EXPECT_EQ(r.out.rfind("breakshot " + std::string(breakshot::kVersion) + " (commit ", 0), 0u)
+      << r.out;
   r = run("--help");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("simulate"), std::string::npos);

@@ -52,12 +52,11 @@
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/serve.hpp"
 #include "breakshot/simulation.hpp"
+#include "breakshot/version.hpp"
 
 #include <csignal>
 
-#ifndef BREAKSHOT_VERSION
-#define BREAKSHOT_VERSION "0.1.0"
-#endif
+#include "build_commit.hpp"  // BREAKSHOT_COMMIT (cmake/build_commit.cmake)
 
 namespace {
 
@@ -331,7 +330,8 @@ int run_serve(const ServeArgs& args) {
 
 int main(int argc, char** argv) {
   CLI::App app{"breakshot: an event-driven billiards physics engine", "breakshot"};
-  app.set_version_flag("--version", std::string("breakshot ") + BREAKSHOT_VERSION);
+  app.set_version_flag("--version", "breakshot " + std::string(bs::kVersion) + " (commit " +
+                                        BREAKSHOT_COMMIT + ")");
   app.require_subcommand(1);
   app.footer(
       "Run 'breakshot simulate --help' for the scenario file and exit status,\n"

@@ -16,6 +16,7 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 #include "breakshot/vec.hpp"
+#include "breakshot/version.hpp"
 
 // game: the rules, racks, noise, a game in progress, records, matches
 #include "breakshot/game.hpp"

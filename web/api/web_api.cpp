@@ -83,10 +83,8 @@
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/session.hpp"
 #include "breakshot/simulation.hpp"
+#include "breakshot/version.hpp"
 
-#ifndef BREAKSHOT_VERSION
-#define BREAKSHOT_VERSION "0.1.0"
-#endif
 
 namespace bs = breakshot;
 using ojson = nlohmann::ordered_json;
@@ -1040,7 +1038,7 @@ extern "C" {
 const char* bs_version(void) {
   static const std::string reply = [] {
     ojson j = ojson::object();
-    j["version"] = BREAKSHOT_VERSION;
+    j["version"] = std::string(bs::kVersion);
     ojson levels = ojson::array();
     ojson budgets = ojson::object();
     for (const std::string& l : bs::ai_level_names()) {
