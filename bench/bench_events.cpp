@@ -53,10 +53,10 @@ Scenario friction_break() {
   s.physics.model = Model::friction;
   s.physics.deceleration = 0.2;
   s.physics.ball_ball_restitution = 0.95;
-  const double L = 2.54, W = 1.27, R = 0.028575;
+  const double L = 2.54, W = 1.27, R = kPoolBallRadius;
   s.table = make_rectangle({0, 0}, {L, W});
   auto add = [&](const std::string& id, Vec2 p, Vec2 v) {
-    BallSpec b{id, R, 0.17, 0.75};
+    BallSpec b{id, R, kPoolBallMass, 0.75};
     BallState st;
     st.position = p;
     st.velocity = v;

@@ -21,23 +21,20 @@ using namespace breakshot;
 
 namespace {
 
-constexpr double kR = 0.028575;
+constexpr double kR = kPoolBallRadius;
 
 double unit(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
 
 Scenario pool_scene() {
   Scenario s;
-  s.physics.model = Model::pool;
-  s.physics.ball_ball_restitution = 0.95;
-  s.physics.ball_ball_friction_fit = true;
-  s.physics.collapse_speed = kPoolCollapseSpeed;
+  s.physics = default_physics(Model::pool);
   s.table = make_pool_table("9ft");
   s.until.rest = true;
   return s;
 }
 
 void add(Scenario& s, const std::string& id, Vec2 p) {
-  s.balls.push_back({id, kR, 0.17, CushionParams{}.restitution});
+  s.balls.push_back({id, kR, kPoolBallMass, CushionParams{}.restitution});
   BallState st;
   st.position = p;
   s.start.push_back(st);

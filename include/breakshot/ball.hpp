@@ -22,11 +22,15 @@ enum class MotionState : std::uint8_t {
 
 std::string_view to_string(MotionState s);
 
+/// The default ball: a pool ball (WPA: 2.25 in diameter, 5.5-6 oz).
+inline constexpr double kPoolBallRadius = 0.028575;  ///< m
+inline constexpr double kPoolBallMass = 0.170;       ///< kg
+
 /// What does not change during a simulation.
 struct BallSpec {
   std::string id;
-  double radius = 0.028575;      ///< m
-  double mass = 0.170;           ///< kg
+  double radius = kPoolBallRadius;  ///< m
+  double mass = kPoolBallMass;      ///< kg
   double wall_restitution = 1.0; ///< against every wall of the table
 };
 

@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "breakshot/ball.hpp"
 #include "breakshot/event.hpp"
 #include "breakshot/pool.hpp"
 #include "breakshot/scenario.hpp"
@@ -41,8 +42,8 @@ std::optional<GameType> parse_game_type(std::string_view s);
 struct GameConfig {
   GameType game = GameType::eight_ball;
   std::string table_size = "9ft";  ///< "7ft", "8ft" or "9ft"
-  double ball_radius = 0.028575;   ///< m (WPA 2.25 in)
-  double ball_mass = 0.170;        ///< kg
+  double ball_radius = kPoolBallRadius;  ///< m (WPA 2.25 in)
+  double ball_mass = kPoolBallMass;      ///< kg
   /// A game still going after this many shots is ended as a draw (the
   /// stalemate clause, docs/rules.md). 0: no limit.
   int max_shots = 400;

@@ -53,4 +53,29 @@ struct PhysicsParams {
 /// re-contact is an event.
 inline constexpr double kPoolCollapseSpeed = 1e-3;
 
+/// The pool model's default ball-ball restitution: the middle of
+/// Alciatore's measured 0.92-0.98 for phenolic pool balls.
+inline constexpr double kPoolBallBallRestitution = 0.95;
+
+/// The physics of `model` when nothing else is given (docs/scenario.md,
+/// "Defaults"), in one place, after Box2D's b2DefaultWorldDef: the
+/// scenario reader starts from it, and so do the racks and the games, the
+/// AI's estimates, the benchmarks and, through the web facade
+/// (bs_defaults), the page. PhysicsParams{} is default_physics(ideal).
+/// The pool model: restitution 0.95, the measured speed-dependent
+/// ball-ball friction (ball_ball_friction_fit), kPoolCollapseSpeed; the
+/// games also turn ball_clusters on.
+constexpr PhysicsParams default_physics(Model model) {
+  PhysicsParams p;
+  p.model = model;
+  // A ball of the friction model slows as a rolling ball does on cloth.
+  p.deceleration = p.rolling_friction * p.gravity;
+  if (model == Model::pool) {
+    p.ball_ball_restitution = kPoolBallBallRestitution;
+    p.ball_ball_friction_fit = true;
+    p.collapse_speed = kPoolCollapseSpeed;
+  }
+  return p;
+}
+
 }  // namespace breakshot

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "breakshot/physics.hpp"
 #include "breakshot/table.hpp"
 #include "breakshot/vec.hpp"
 
@@ -19,10 +20,10 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The pool model's defaults (docs/physics.md), for the players' speed
 // estimates only: their simulations use the scenario's own values.
-inline constexpr double kGravity = 9.81;
-inline constexpr double kSlidingFriction = 0.2;
-inline constexpr double kRollingFriction = 0.01;
-inline constexpr double kBallBallRestitution = 0.95;
+inline constexpr double kGravity = default_physics(Model::pool).gravity;
+inline constexpr double kSlidingFriction = default_physics(Model::pool).sliding_friction;
+inline constexpr double kRollingFriction = default_physics(Model::pool).rolling_friction;
+inline constexpr double kBallBallRestitution = default_physics(Model::pool).ball_ball_restitution;
 
 /// True if the segments p0-p1 and q0-q1 cross at a point inside both.
 bool segments_cross(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1);

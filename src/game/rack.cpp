@@ -160,14 +160,11 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
 
 Scenario make_break_scenario(const std::string& game, const std::string& size,
                              std::uint64_t seed, double cue_speed) {
-  constexpr double kRadius = 0.028575;
-  constexpr double kMass = 0.170;
+  constexpr double kRadius = kPoolBallRadius;
+  constexpr double kMass = kPoolBallMass;
   Scenario s;
-  s.physics.model = Model::pool;
-  s.physics.ball_ball_restitution = 0.95;
-  s.physics.ball_ball_friction_fit = true;
-  s.physics.collapse_speed = kPoolCollapseSpeed;
-  s.physics.ball_clusters = true;
+  s.physics = default_physics(Model::pool);
+  s.physics.ball_clusters = true;  // the break spreads the rack
   s.table = make_pool_table(size);
   const double e = CushionParams{}.restitution;
   BallState cue;
