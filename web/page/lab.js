@@ -12,6 +12,10 @@
 // web/tools/bundle-examples.mjs. Test hooks: docs/web.md, "Lab test hooks".
 
 import { EXAMPLES } from './lab-examples.js';
+import { el, present, errText, fitCanvas } from './lab-dom.js';
+import { niceCeil, niceAxis, niceStep, prefixFor, tickLabel, fmtSI, fmtNum, roundTo, roundSig } from './lab-format.js';
+import { FELT, RAIL, TOTAL_COLOUR, GRAPH_BG, luminance, ballColours } from './lab-colours.js';
+import { tableVertices, bbox, fits, regularPolygon, posStep } from './lab-geometry.js';
 
 // Per-ball traces, per-ball energy lines and event-exact sampling are kept
 // up to this many balls; beyond it only the total energy is plotted.
@@ -50,198 +54,9 @@ const FIELD_INFO = {
   spinning_friction: { label: 'spinning friction', unit: '' },
 };
 
-const NAMED_COLOURS = {
-  white: '#f4f4ef', cue: '#f4f4ef', black: '#1c1c1c', red: '#d7263d',
-  blue: '#2a6fdb', green: '#1f9d55', yellow: '#f2c230', orange: '#f0872a',
-  purple: '#7f3fc6', violet: '#7f3fc6', pink: '#f46fae', brown: '#8d5a2e',
-  maroon: '#8a1c1c', cyan: '#1bb5c8', magenta: '#d035c0', grey: '#9aa0a6',
-  gray: '#9aa0a6', gold: '#d4a11a', silver: '#c3c6c9', navy: '#26418f',
-  teal: '#138a86', lime: '#7ccf3a',
-};
-const FELT = '#4f6b7a';
-const RAIL = '#2b3036';
-const TOTAL_COLOUR = '#e0b24a';   // the system's things (total energy, momentum) are gold
-const GRAPH_BG = '#1b2026';
-
 // ---------------------------------------------------------------- helpers
 
 function clone(x) { return x === undefined ? undefined : JSON.parse(JSON.stringify(x)); }
-
-function el(tag, props, ...kids) {
-  const e = document.createElement(tag);
-  if (props) {
-    for (const [k, v] of Object.entries(props)) {
-      if (v == null || v === false) continue;
-      if (k === 'class') e.className = v;
-      else if (k === 'text') e.textContent = v;
-      else if (k === 'dataset') Object.assign(e.dataset, v);
-      else if (k.startsWith('on') && typeof v === 'function') e.addEventListener(k.slice(2), v);
-      else if (k === 'value') e.value = v;
-      else if (k === 'checked') e.checked = v;
-      else e.setAttribute(k, v === true ? '' : String(v));
-    }
-  }
-  for (const kid of kids.flat()) {
-    if (kid == null || kid === false) continue;
-    e.append(kid.nodeType ? kid : String(kid));
-  }
-  return e;
-}
-
-function present(...kids) { return kids.flat().filter((k) => k != null && k !== false); }
-
-function errText(e) {
-  if (e == null) return 'unknown error';
-  if (typeof e === 'string') return e;
-  return e.message || String(e);
-}
-
-function hslHex(h, s, l) {
-  s /= 100; l /= 100;
-  const f = (n) => {
-    const k = (n + h / 30) % 12;
-    const c = l - s * Math.min(l, 1 - l) * Math.max(-1, Math.min(k - 3, 9 - k, 1));
-    return Math.round(255 * c).toString(16).padStart(2, '0');
-  };
-  return `#${f(0)}${f(8)}${f(4)}`;
-}
-
-function luminance(hex) {
-  const n = parseInt(hex.slice(1), 16);
-  const c = [(n >> 16) & 255, (n >> 8) & 255, n & 255].map((v) => {
-    v /= 255;
-    return v <= 0.03928 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4;
-  });
-  return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
-}
-
-// Colours: an id that names a colour gets it; the others take hues a golden
-// angle apart. Many balls share 8 colours so they can be drawn in batches.
-function ballColours(balls) {
-  const n = balls.length;
-  const out = new Array(n);
-  let k = 0;
-  for (let i = 0; i < n; i++) {
-    const id = String(balls[i].id ?? '').toLowerCase();
-    if (n <= 200 && NAMED_COLOURS[id]) { out[i] = NAMED_COLOURS[id]; continue; }
-    const j = n > 200 ? i % 8 : k++;
-    out[i] = hslHex((j * 137.508 + 15) % 360, 68, j % 2 ? 42 : 55);
-  }
-  return out;
-}
-
-// 1, 2 or 5 times a power of ten, at least x.
-function niceCeil(x) {
-  if (!(x > 0)) return 1;
-  const p = 10 ** Math.floor(Math.log10(x));
-  for (const m of [1, 2, 2.5, 5, 10]) if (m * p >= x * (1 - 1e-12)) return m * p;
-  return 10 * p;
-}
-
-// A round axis end at least x, with less headroom than niceCeil.
-function niceAxis(x) {
-  if (!(x > 0)) return 1;
-  const p = 10 ** Math.floor(Math.log10(x));
-  for (const m of [1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10]) if (m * p >= x * (1 - 1e-12)) return m * p;
-  return 10 * p;
-}
-
-function niceStep(range, maxTicks) {
-  const raw = range / Math.max(1, maxTicks);
-  const p = 10 ** Math.floor(Math.log10(raw));
-  for (const m of [1, 2, 5, 10]) if (m * p >= raw) return m * p;
-  return 10 * p;
-}
-
-const PREFIXES = [[1e3, 'k'], [1, ''], [1e-3, 'm'], [1e-6, 'µ'], [1e-9, 'n'], [1e-12, 'p']];
-function prefixFor(maxAbs) {
-  for (const [f, p] of PREFIXES) if (maxAbs >= f * 0.9995) return [f, p];
-  return PREFIXES[PREFIXES.length - 1];
-}
-
-function tickLabel(v, step) {
-  const digits = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
-  return v.toFixed(Math.min(digits, 6));
-}
-
-// A number with an SI prefix on its unit: 0.0009 J -> "0.900000 mJ".
-function fmtSI(v, unit, digits = 6) {
-  if (!Number.isFinite(v)) return `${v} ${unit}`;
-  if (v === 0) return `0 ${unit}`;
-  const [f, p] = prefixFor(Math.abs(v));
-  return `${(v / f).toPrecision(digits)} ${p}${unit}`;
-}
-
-function fmtNum(v, digits = 5) {
-  if (!Number.isFinite(v)) return String(v);
-  if (v === 0) return '0';
-  const a = Math.abs(v);
-  if (a >= 1e5 || a < 1e-3) return v.toExponential(digits - 1);
-  return v.toPrecision(digits);
-}
-
-// Rounds a dragged coordinate to a step that suits the table's size.
-function roundTo(v, step) {
-  const r = Math.round(v / step) * step;
-  const d = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
-  return Number(r.toFixed(Math.min(d, 12)));
-}
-
-function roundSig(v, sig) {
-  if (v === 0 || !Number.isFinite(v)) return v;
-  return Number(v.toPrecision(sig));
-}
-
-// --------------------------------------------------------------- geometry
-// (of the drawing and of placing a new ball, never of the motion)
-
-function tableVertices(table) {
-  if (!table) return null;
-  if (table.shape === 'rectangle' && Array.isArray(table.min) && Array.isArray(table.max)) {
-    const [x0, y0] = table.min, [x1, y1] = table.max;
-    return [[x0, y0], [x1, y0], [x1, y1], [x0, y1]];
-  }
-  if (table.shape === 'polygon' && Array.isArray(table.vertices)) return table.vertices;
-  return null;
-}
-
-function bbox(pts) {
-  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-  for (const p of pts) {
-    if (!Array.isArray(p) || !Number.isFinite(p[0]) || !Number.isFinite(p[1])) continue;
-    x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
-    y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
-  }
-  if (!(x1 > x0)) { x0 = Number.isFinite(x0) ? x0 - 0.5 : -0.5; x1 = x0 + 1; }
-  if (!(y1 > y0)) { y0 = Number.isFinite(y0) ? y0 - 0.5 : -0.5; y1 = y0 + 1; }
-  return { x0, y0, x1, y1 };
-}
-
-function insidePolygon(x, y, vs) {
-  let inside = false;
-  for (let i = 0, j = vs.length - 1; i < vs.length; j = i++) {
-    const [xi, yi] = vs[i], [xj, yj] = vs[j];
-    if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
-  }
-  return inside;
-}
-
-function segDist(x, y, a, b) {
-  const dx = b[0] - a[0], dy = b[1] - a[1];
-  const l2 = dx * dx + dy * dy;
-  let t = l2 > 0 ? ((x - a[0]) * dx + (y - a[1]) * dy) / l2 : 0;
-  t = Math.max(0, Math.min(1, t));
-  return Math.hypot(x - a[0] - t * dx, y - a[1] - t * dy);
-}
-
-function regularPolygon(n, r, phase) {
-  const out = [];
-  for (let k = 0; k < n; k++) {
-    const a = phase + (2 * Math.PI * k) / n;
-    out.push([roundSig(r * Math.cos(a), 4) + 0, roundSig(r * Math.sin(a), 4) + 0]);
-  }
-  return out;
-}
 
 // ------------------------------------------------------------------ mount
 
@@ -817,12 +632,6 @@ export function mountLab(root, engine) {
     return out;
   }
 
-  function fits(x, y, r, vs) {
-    if (!insidePolygon(x, y, vs)) return false;
-    for (let k = 0; k < vs.length; k++) if (segDist(x, y, vs[k], vs[(k + 1) % vs.length]) < r) return false;
-    return true;
-  }
-
   // Adds `count` balls like the last one, at rest, at the given point or in free spots.
   function addBalls(count, at) {
     const last = setup.balls[setup.balls.length - 1];
@@ -863,11 +672,6 @@ export function mountLab(root, engine) {
     if (balls.length < n) addBalls(n - balls.length);
     if (selected >= n) selected = -1;
     changed({ panels: true, colour: true });
-  }
-
-  function posStep(bb) {
-    const size = Math.max(bb.x1 - bb.x0, bb.y1 - bb.y0);
-    return 10 ** Math.floor(Math.log10(size / 2000));
   }
 
   // ---------------------------------------------------------------- runs
@@ -1111,19 +915,6 @@ export function mountLab(root, engine) {
   }
 
   // ------------------------------------------------------------- drawing
-
-  function fitCanvas(c, cssW, cssH) {
-    const dpr = window.devicePixelRatio || 1;
-    const w = Math.max(1, Math.round(cssW)), h = Math.max(1, Math.round(cssH));
-    if (c.width !== Math.round(w * dpr) || c.height !== Math.round(h * dpr)) {
-      c.width = Math.round(w * dpr);
-      c.height = Math.round(h * dpr);
-    }
-    c.style.height = `${h}px`;
-    const ctx = c.getContext('2d');
-    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    return { ctx, w, h };
-  }
 
   function drawAll() {
     if (destroyed || !setup) return;
