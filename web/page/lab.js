@@ -15,7 +15,12 @@ import { EXAMPLES } from './lab-examples.js';
 import { el, present, errText, fitCanvas } from './lab-dom.js';
 import { niceCeil, niceAxis, niceStep, prefixFor, tickLabel, fmtSI, fmtNum, roundTo, roundSig } from './lab-format.js';
 import { FELT, RAIL, TOTAL_COLOUR, GRAPH_BG, luminance, ballColours } from './lab-colours.js';
-import { tableVertices, bbox, fits, regularPolygon, posStep } from './lab-geometry.js';
+import { tableVertices, bbox } from './lab-geometry.js';
+import {
+  DEFAULT_RADIUS, DEFAULT_MASS, MODELS, PHYSICS_FIELDS, FIELD_INFO, EMPTY_SCENARIO, clone, normalise,
+  buildScenario, untilOf, radiusOf, defaultFor, wallDefault, setModel, tableAs, resizeTable, addVertex,
+  polygonPresets, tableStep, addBall, spotForNewBall, removeBallAt, setBallCount, renameBall, addPairRestitution,
+} from './lab-scenario.js';
 
 // Per-ball traces, per-ball energy lines and event-exact sampling are kept
 // up to this many balls; beyond it only the total energy is plotted.
@@ -30,33 +35,6 @@ const STRIP = 150;
 const MAX_POINTS = 40000;
 // Events in one animation frame beyond which the frame is not split at each event.
 const MAX_EVENT_SAMPLES = 64;
-
-const DEFAULT_RADIUS = 0.028575;
-const DEFAULT_MASS = 0.170;
-
-const MODELS = ['ideal', 'friction', 'pool'];
-// Physics fields shown for each model, with their documented defaults
-// (docs/scenario.md, "Defaults"). A blank field is left out of the
-// scenario, so the engine applies the default itself.
-const PHYSICS_FIELDS = {
-  ideal: ['ball_ball_restitution'],
-  friction: ['ball_ball_restitution', 'deceleration'],
-  pool: ['ball_ball_restitution', 'ball_ball_friction', 'gravity',
-         'sliding_friction', 'rolling_friction', 'spinning_friction'],
-};
-const FIELD_INFO = {
-  ball_ball_restitution: { label: 'ball-ball restitution', unit: '' },
-  ball_ball_friction: { label: 'ball-ball friction', unit: '' },
-  deceleration: { label: 'deceleration', unit: 'm/s²' },
-  gravity: { label: 'gravity', unit: 'm/s²' },
-  sliding_friction: { label: 'sliding friction', unit: '' },
-  rolling_friction: { label: 'rolling friction', unit: '' },
-  spinning_friction: { label: 'spinning friction', unit: '' },
-};
-
-// ---------------------------------------------------------------- helpers
-
-function clone(x) { return x === undefined ? undefined : JSON.parse(JSON.stringify(x)); }
 
 // ------------------------------------------------------------------ mount
 
@@ -189,23 +167,6 @@ export function mountLab(root, engine) {
     loadScenario(ex.scenario, name);
   }
 
-  // Makes the editable parts present; everything else passes through.
-  function normalise(sc) {
-    if (!sc || typeof sc !== 'object' || Array.isArray(sc)) sc = {};
-    if (!sc.physics || typeof sc.physics !== 'object') sc.physics = { model: 'ideal' };
-    if (!sc.physics.model) sc.physics.model = 'ideal';
-    if (!sc.table || typeof sc.table !== 'object') sc.table = { shape: 'rectangle', min: [-0.5, -0.5], max: [0.5, 0.5] };
-    if (!Array.isArray(sc.balls)) sc.balls = [];
-    if (sc.until === undefined && sc.physics.model === 'ideal') sc.until = { time: 5 };
-    return sc;
-  }
-
-  function buildScenario() {
-    const sc = clone(setup);
-    if (Array.isArray(sc.pair_restitution) && sc.pair_restitution.length === 0) delete sc.pair_restitution;
-    return sc;
-  }
-
   // Called after every edit of the setup.
   function changed({ panels = false, colour = false } = {}) {
     if (run) resetRun(true);
@@ -234,7 +195,7 @@ export function mountLab(root, engine) {
     } else {
       let pb = null;
       try {
-        pb = engine.playback(buildScenario());
+        pb = engine.playback(buildScenario(setup));
         initialFrame = pb.frame(0);
         engineError = null;
       } catch (e) {
@@ -310,26 +271,11 @@ export function mountLab(root, engine) {
     renderBalls();
   }
 
-  function defaultFor(field) {
-    const p = setup.physics;
-    switch (field) {
-      case 'ball_ball_restitution': return p.model === 'pool' ? 0.95 : 1.0;
-      case 'ball_ball_friction': return p.model === 'pool' ? 'mu(v) fit' : 0;
-      case 'gravity': return 9.81;
-      case 'sliding_friction': return 0.2;
-      case 'rolling_friction': return 0.01;
-      case 'spinning_friction': return 0.044;
-      case 'deceleration': return `${roundSig((p.rolling_friction ?? 0.01) * (p.gravity ?? 9.81), 6)}`;
-      default: return '';
-    }
-  }
-
   function renderPhysics() {
     const p = setup.physics;
     const modelSel = el('select', { id: 'lab-model', 'aria-label': 'model',
       onchange: () => {
-        p.model = modelSel.value;
-        if (p.model === 'ideal' && (setup.until === 'rest' || setup.until === undefined)) setup.until = { time: 5 };
+        setModel(setup, modelSel.value);
         changed({ panels: true });
       } },
     MODELS.map((m) => el('option', { value: m, text: m })));
@@ -337,7 +283,7 @@ export function mountLab(root, engine) {
     modelSel.value = p.model;
 
     const fields = (PHYSICS_FIELDS[p.model] || []).map((f) => row(FIELD_INFO[f].label, numField({
-      value: p[f], placeholder: defaultFor(f), label: `physics.${f}`,
+      value: p[f], placeholder: defaultFor(p, f), label: `physics.${f}`,
       onSet: (v) => { if (v === undefined) delete p[f]; else p[f] = v; changed(); },
     }), FIELD_INFO[f].unit));
 
@@ -381,39 +327,11 @@ export function mountLab(root, engine) {
       el('div', { class: 'bs-lab-note', text: 'Blank fields take the engine\'s documented default (shown in grey).' })));
   }
 
-  function presets() {
-    const list = [];
-    for (const ex of EXAMPLES) {
-      const t = ex.scenario && ex.scenario.table;
-      if (t && t.shape === 'polygon' && Array.isArray(t.vertices)) {
-        const name = /star/.test(ex.name) ? 'star' : /l_shape/.test(ex.name) ? 'L shape' : ex.name;
-        list.push({ name: `${name} (${ex.name})`, vertices: t.vertices });
-      }
-    }
-    const bb = bbox(tableVertices(setup.table) || [[-0.5, -0.5], [0.5, 0.5]]);
-    const r = Math.min(bb.x1 - bb.x0, bb.y1 - bb.y0) / 2;
-    const cx = (bb.x0 + bb.x1) / 2, cy = (bb.y0 + bb.y1) / 2;
-    const shift = (vs) => vs.map(([x, y]) => [roundSig(x + cx, 6) + 0, roundSig(y + cy, 6) + 0]);
-    list.push({ name: 'triangle', vertices: shift(regularPolygon(3, r, Math.PI / 2)) });
-    list.push({ name: 'hexagon', vertices: shift(regularPolygon(6, r, 0)) });
-    list.push({ name: 'octagon', vertices: shift(regularPolygon(8, r, Math.PI / 8)) });
-    list.push({ name: 'box (current bounds)', vertices: [[bb.x0, bb.y0], [bb.x1, bb.y0], [bb.x1, bb.y1], [bb.x0, bb.y1]] });
-    return list;
-  }
-
   function renderTable() {
     const t = setup.table;
     const shapeSel = el('select', { id: 'lab-shape', 'aria-label': 'table shape',
       onchange: () => {
-        const vs = tableVertices(t);
-        const keep = { ...t };
-        delete keep.shape; delete keep.min; delete keep.max; delete keep.vertices; delete keep.size;
-        if (shapeSel.value === 'polygon') {
-          setup.table = { shape: 'polygon', vertices: clone(vs || [[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]), ...keep };
-        } else {
-          const bb = bbox(vs || [[-0.5, -0.5], [0.5, 0.5]]);
-          setup.table = { shape: 'rectangle', min: [bb.x0, bb.y0], max: [bb.x1, bb.y1], ...keep };
-        }
+        setup.table = tableAs(t, shapeSel.value);
         changed({ panels: true });
       } },
     el('option', { value: 'rectangle', text: 'box (rectangle)' }),
@@ -426,15 +344,9 @@ export function mountLab(root, engine) {
     if (t.shape === 'rectangle') {
       if (!Array.isArray(t.min)) t.min = [-0.5, -0.5];
       if (!Array.isArray(t.max)) t.max = [0.5, 0.5];
-      const setSize = (axis, v) => {
-        const c = (t.min[axis] + t.max[axis]) / 2;
-        t.min[axis] = roundSig(c - v / 2, 12) + 0;
-        t.max[axis] = roundSig(c + v / 2, 12) + 0;
-        changed({ panels: true });
-      };
       const positive = (label, axis) => numField({
         value: roundSig(t.max[axis] - t.min[axis], 12), label, required: true,
-        onSet: (v) => { if (!(v > 0)) throw new Error(`${label} must be above 0`); setSize(axis, v); },
+        onSet: (v) => { if (!(v > 0)) throw new Error(`${label} must be above 0`); resizeTable(t, axis, v); changed({ panels: true }); },
       });
       parts.push(row('width', positive('table width', 0), 'm'));
       parts.push(row('height', positive('table height', 1), 'm'));
@@ -444,11 +356,11 @@ export function mountLab(root, engine) {
       if (!Array.isArray(t.vertices)) t.vertices = [];
       const presetSel = el('select', { 'aria-label': 'polygon preset',
         onchange: () => {
-          const p = presets().find((q) => q.name === presetSel.value);
+          const p = polygonPresets(setup.table, EXAMPLES).find((q) => q.name === presetSel.value);
           if (p) { t.vertices = clone(p.vertices); changed({ panels: true }); }
         } },
       el('option', { value: '', text: 'preset…' }),
-      presets().map((p) => el('option', { value: p.name, text: p.name })));
+      polygonPresets(setup.table, EXAMPLES).map((p) => el('option', { value: p.name, text: p.name })));
       parts.push(row('preset', presetSel, ''));
       const list = el('table', { class: 'bs-lab-grid bs-lab-vertices' },
         el('thead', null, el('tr', null, el('th', { text: '#' }), el('th', { text: 'x (m)' }), el('th', { text: 'y (m)' }), el('th'))));
@@ -467,24 +379,12 @@ export function mountLab(root, engine) {
       list.append(body);
       parts.push(list);
       parts.push(el('button', { type: 'button', text: '+ vertex', title: 'add a vertex halfway along the last edge',
-        onclick: () => {
-          const vs = t.vertices;
-          if (vs.length === 0) { vs.push([0, 0]); } else {
-            const a = vs[vs.length - 1], b = vs[0];
-            vs.push([roundSig((a[0] + b[0]) / 2, 8) + 0, roundSig((a[1] + b[1]) / 2, 8) + 0]);
-          }
-          changed({ panels: true });
-        } }));
+        onclick: () => { addVertex(t.vertices); changed({ panels: true }); } }));
       parts.push(el('div', { class: 'bs-lab-note', text: 'Vertices in either order; drag the white handles on the table to move them.' }));
     } else {
       parts.push(el('div', { class: 'bs-lab-note', text: `The lab edits boxes and polygons; this "${t.shape}" table is sent to the engine as it is and not drawn.` }));
     }
     tablePanel.replaceChildren(...present(parts));
-  }
-
-  function wallDefault() {
-    if (setup.table && typeof setup.table.cushion_restitution === 'number') return setup.table.cushion_restitution;
-    return setup.physics.model === 'pool' ? 0.75 : 1.0;
   }
 
   let rowRefs = [];   // per shown ball row: {x, y, vx, vy, tr}
@@ -501,7 +401,7 @@ export function mountLab(root, engine) {
     countIn.classList.add('bs-short');
     const head = el('div', { class: 'bs-lab-ballhead' },
       row('count', countIn, ''),
-      el('button', { type: 'button', text: '+ ball', onclick: () => { addBall(); changed({ panels: true, colour: true }); } }));
+      el('button', { type: 'button', text: '+ ball', onclick: () => { addBall(setup); changed({ panels: true, colour: true }); } }));
 
     const cols = [['', ''], ['id', ''], ['x', 'm'], ['y', 'm'], ['vx', 'm/s'], ['vy', 'm/s'],
       ['radius', 'm'], ['mass', 'kg'], ['wall e', ''], ['', '']];
@@ -511,17 +411,13 @@ export function mountLab(root, engine) {
     const body = el('tbody');
     rowRefs = [];
     const shown = showAllRows ? n : Math.min(n, TABLE_ROWS);
-    const wd = wallDefault();
+    const wd = wallDefault(setup);
     for (let i = 0; i < shown; i++) {
       const b = balls[i];
       const name = `balls[${i}]`;
       const idIn = el('input', { type: 'text', class: 'bs-id', value: b.id ?? '', 'aria-label': `${name}.id`, spellcheck: 'false' });
       idIn.addEventListener('change', () => {
-        const old = b.id;
-        b.id = idIn.value;
-        for (const pr of setup.pair_restitution || []) {
-          if (Array.isArray(pr.balls)) pr.balls = pr.balls.map((x) => (x === old ? b.id : x));
-        }
+        renameBall(setup, b, idIn.value);
         changed({ panels: true, colour: true });
       });
       const pos = () => { if (!Array.isArray(b.position)) b.position = [0, 0]; return b.position; };
@@ -570,9 +466,7 @@ export function mountLab(root, engine) {
     });
     const addPair = el('button', { type: 'button', text: '+ pair restitution',
       onclick: () => {
-        if (!setup.pair_restitution) setup.pair_restitution = [];
-        setup.pair_restitution.push({ balls: [balls[0]?.id ?? '', balls[1]?.id ?? ''],
-          restitution: setup.physics.ball_ball_restitution ?? defaultFor('ball_ball_restitution') });
+        addPairRestitution(setup);
         changed({ panels: true });
       } });
 
@@ -592,84 +486,14 @@ export function mountLab(root, engine) {
     drawAll();
   }
 
-  function radiusOf(b) { return Number.isFinite(b.radius) && b.radius > 0 ? b.radius : DEFAULT_RADIUS; }
-
-  function uniqueId() {
-    const ids = new Set(setup.balls.map((b) => String(b.id)));
-    for (let k = setup.balls.length + 1; ; k++) if (!ids.has(`b${k}`)) return `b${k}`;
-  }
-
-  // Spots inside the table clear of the walls, of the other balls and of
-  // each other, nearest the table's centre first (geometry only).
-  function freeSpots(r, count) {
-    const vs = tableVertices(setup.table);
-    const bb = bbox(vs || [[-0.5, -0.5], [0.5, 0.5]]);
-    const gap = r * 0.2;
-    const step = Math.max(2 * r + gap, Math.min(bb.x1 - bb.x0, bb.y1 - bb.y0) / 60);
-    const cx = (bb.x0 + bb.x1) / 2, cy = (bb.y0 + bb.y1) / 2;
-    const cands = [];
-    for (let x = bb.x0 + r + gap; x <= bb.x1 - r - gap; x += step) {
-      for (let y = bb.y0 + r + gap; y <= bb.y1 - r - gap; y += step) cands.push([x, y]);
-    }
-    cands.sort((a, b) => Math.hypot(a[0] - cx, a[1] - cy) - Math.hypot(b[0] - cx, b[1] - cy));
-    const taken = [];
-    for (const b of setup.balls) {
-      if (Array.isArray(b.position)) taken.push([b.position[0], b.position[1], radiusOf(b)]);
-    }
-    const out = [];
-    for (const [x, y] of cands) {
-      if (out.length >= count) break;
-      if (vs && !fits(x, y, r + gap, vs)) continue;
-      let clear = true;
-      for (const [bx, by, br] of taken) {
-        if (Math.hypot(bx - x, by - y) < r + br + gap) { clear = false; break; }
-      }
-      if (!clear) continue;
-      out.push([x, y]);
-      taken.push([x, y, r]);
-    }
-    while (out.length < count) out.push([cx, cy]);  // no room: the engine will say so
-    return out;
-  }
-
-  // Adds `count` balls like the last one, at rest, at the given point or in free spots.
-  function addBalls(count, at) {
-    const last = setup.balls[setup.balls.length - 1];
-    const proto = {};
-    if (last && last.radius !== undefined) proto.radius = last.radius;
-    if (last && last.mass !== undefined) proto.mass = last.mass;
-    const r = radiusOf(proto);
-    const step = posStep(bbox(tableVertices(setup.table) || [[-0.5, -0.5], [0.5, 0.5]]));
-    const spots = at ? [at] : freeSpots(r, count);
-    const added = [];
-    for (const p of spots) {
-      const b = { id: uniqueId(), position: [roundTo(p[0], step), roundTo(p[1], step)], velocity: [0, 0], ...proto };
-      setup.balls.push(b);
-      added.push(b);
-    }
-    return added;
-  }
-
-  function addBall(at) { return addBalls(1, at)[0]; }
-
   function removeBall(i) {
-    const [b] = setup.balls.splice(i, 1);
-    if (setup.pair_restitution && b) {
-      setup.pair_restitution = setup.pair_restitution.filter((pr) => !(Array.isArray(pr.balls) && pr.balls.includes(b.id)));
-    }
+    removeBallAt(setup, i);
     if (selected === i) selected = -1; else if (selected > i) selected--;
     changed({ panels: true, colour: true });
   }
 
   function setCount(n) {
-    const balls = setup.balls;
-    while (balls.length > n) {
-      const b = balls.pop();
-      if (setup.pair_restitution) {
-        setup.pair_restitution = setup.pair_restitution.filter((pr) => !(Array.isArray(pr.balls) && pr.balls.includes(b.id)));
-      }
-    }
-    if (balls.length < n) addBalls(n - balls.length);
+    setBallCount(setup, n);
     if (selected >= n) selected = -1;
     changed({ panels: true, colour: true });
   }
@@ -683,19 +507,13 @@ export function mountLab(root, engine) {
     return `×${s >= 1 ? roundSig(s, 3) : s.toPrecision(2).replace(/\.?0+e/, 'e')}`;
   }
 
-  function untilOf(sc) {
-    if (sc.until === 'rest') return { T: null, rest: true };
-    if (sc.until && typeof sc.until === 'object' && Number.isFinite(sc.until.time)) return { T: sc.until.time, rest: false };
-    return { T: null, rest: sc.physics && sc.physics.model !== 'ideal' };
-  }
-
   function startRun() {
     try {
       resetRun(true);
       runError = null;
       if (fieldErrors.size) { updateError(); return; }
       if (!engine || typeof engine.playback !== 'function') { engineError = 'the engine is not loaded'; updateError(); return; }
-      const sc = buildScenario();
+      const sc = buildScenario(setup);
       let pb;
       try {
         pb = engine.playback(sc);
@@ -1520,8 +1338,7 @@ export function mountLab(root, engine) {
         canvas.style.cursor = overTip ? 'pointer' : overBall ? (mode === 'velocity' || e.shiftKey ? 'crosshair' : 'grab') : 'default';
         return;
       }
-      const bb = bbox(tableVertices(setup.table) || [[-0.5, -0.5], [0.5, 0.5]]);
-      const step = posStep(bb);
+      const step = tableStep(setup);
       if (drag.kind === 'move') {
         const b = setup.balls[drag.i];
         b.position = [roundTo(w.x - drag.dx, step), roundTo(w.y - drag.dy, step)];
@@ -1562,16 +1379,7 @@ export function mountLab(root, engine) {
       if (run) return;
       const w = toWorld(e);
       if (!w || hitBall(w.px, w.py) >= 0) return;
-      let at = [w.x, w.y];
-      const t = setup.table;
-      if (t.shape === 'rectangle' && Array.isArray(t.min) && Array.isArray(t.max)) {
-        // Keep the new ball inside a box (it takes the last ball's radius).
-        const last = setup.balls[setup.balls.length - 1];
-        const r = last ? radiusOf(last) : DEFAULT_RADIUS;
-        const m = r + posStep(bbox(tableVertices(t)));
-        at = at.map((v, k) => (t.max[k] - t.min[k] > 2 * m ? Math.min(Math.max(v, t.min[k] + m), t.max[k] - m) : v));
-      }
-      const b = addBall(at);
+      const b = addBall(setup, spotForNewBall(setup, [w.x, w.y]));
       selected = setup.balls.indexOf(b);
       changed({ panels: true, colour: true });
     } catch (err) {
@@ -1600,7 +1408,7 @@ export function mountLab(root, engine) {
   // ---------------------------------------------------------------- API
 
   const api = {
-    scenario: () => buildScenario(),
+    scenario: () => buildScenario(setup),
     running: () => !!run && !run.paused && !run.done,
     time: () => (run ? run.t : 0),
     frames: () => frames,
@@ -1624,7 +1432,7 @@ export function mountLab(root, engine) {
 
   const first = EXAMPLES.find((e) => e.name === 'two_balls') || EXAMPLES[0];
   if (first) loadScenario(first.scenario, first.name);
-  else loadScenario({ physics: { model: 'ideal' }, table: { shape: 'rectangle', min: [-0.5, -0.5], max: [0.5, 0.5] }, balls: [], until: { time: 5 } }, null);
+  else loadScenario(EMPTY_SCENARIO, null);
   return api;
 }
 
