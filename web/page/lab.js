@@ -21,20 +21,15 @@ import {
   buildScenario, untilOf, radiusOf, defaultFor, wallDefault, setModel, tableAs, resizeTable, addVertex,
   polygonPresets, tableStep, addBall, spotForNewBall, removeBallAt, setBallCount, renameBall, addPairRestitution,
 } from './lab-scenario.js';
+import { TRACE_LIMIT } from './lab-run.js';
+import { Player } from './lab-player.js';
 
-// Per-ball traces, per-ball energy lines and event-exact sampling are kept
-// up to this many balls; beyond it only the total energy is plotted.
-const TRACE_LIMIT = 20;
 // Ball rows shown in the numbers table before "show all".
 const TABLE_ROWS = 60;
 // A setup velocity arrow ends where the ball would be after this many seconds.
 const VEL_TAU = 0.25;
 // Width (CSS px) of the strip right of the table with the system momentum.
 const STRIP = 150;
-// History points kept before thinning by half.
-const MAX_POINTS = 40000;
-// Events in one animation frame beyond which the frame is not split at each event.
-const MAX_EVENT_SAMPLES = 64;
 
 // ------------------------------------------------------------------ mount
 
@@ -47,9 +42,11 @@ export function mountLab(root, engine) {
   let setup = null;             // the scenario being edited (contract format)
   let colours = [];
   let example = null;           // name of the loaded example, if unchanged since
-  let run = null;               // the current run, see startRun()
-  let frames = 0;               // frames drawn since the last Run
-  let rafId = 0;
+  const player = new Player({
+    speed: () => speed(),
+    frame: () => drawAll(),
+    stop: (error) => { if (error) runError = error; finish(); },
+  });
   let speedLog = 0;             // log10 of the speed factor
   let mode = 'move';            // drag mode: 'move' or 'velocity'
   let showTraces = true;
@@ -169,7 +166,7 @@ export function mountLab(root, engine) {
 
   // Called after every edit of the setup.
   function changed({ panels = false, colour = false } = {}) {
-    if (run) resetRun(true);
+    if (player.run) resetRun(true);
     example = null;
     for (const b of exampleBar.querySelectorAll('button')) b.setAttribute('aria-pressed', 'false');
     if (colour) colours = ballColours(setup.balls);
@@ -524,193 +521,41 @@ export function mountLab(root, engine) {
         return;
       }
       engineError = null;
-      const n = sc.balls.length;
-      let ahead = null;
-      if (n <= TRACE_LIMIT) {
-        try { ahead = engine.playback(sc); } catch (e) { ahead = null; }
-      }
-      const { T, rest } = untilOf(sc);
-      run = {
-        pb, ahead, sc, n, T, rest, pool: sc.physics.model === 'pool',
-        t: 0, sampled: -Infinity, last: null, paused: false, done: false,
-        frame: null, aheadEvents: 0,
-        traces: n <= TRACE_LIMIT ? Array.from({ length: n }, () => []) : null,
-        hist: { t: [], E: [], e: n <= TRACE_LIMIT ? Array.from({ length: n }, () => []) : null },
-        eMax: 0, pRef: 0, pSys: 0,
-      };
-      frames = 0;
-      const f0 = sample(0);
-      run.frame = f0;
-      run.t = 0;
-      setMomentumScale(f0);
+      const f0 = player.begin(engine, pb, sc);
       updateError();
       updateButtons();
       drawAll();
-      if (rest && f0.at_rest) { finish(); return; }
-      rafId = requestAnimationFrame(tick);
+      if (player.run.rest && f0.at_rest) { finish(); return; }
+      player.play();
     } catch (e) {
       runError = `run failed: ${errText(e)}`;
       finish();
     }
   }
 
-  function setMomentumScale(f) {
-    let m = 0;
-    for (const b of f.balls) m = Math.max(m, Math.hypot(b[6], b[7]));
-    run.pRef = m > 0 ? niceCeil(m) : 0;
-    const P = Math.hypot(f.momentum[0], f.momentum[1]);
-    run.pSys = Math.max(run.n <= TRACE_LIMIT ? run.pRef : 0, P > 0 ? niceCeil(P) : 0);
-  }
-
-  function sample(t) {
-    const f = run.pb.frame(t);
-    run.sampled = t;
-    const h = run.hist;
-    h.t.push(f.t ?? t);
-    h.E.push(f.energy);
-    let eMax = Math.max(run.eMax, f.energy);
-    if (h.e) {
-      for (let i = 0; i < run.n; i++) {
-        const e = f.balls[i][5];
-        h.e[i].push(e);
-        if (e > eMax) eMax = e;
-      }
-    }
-    run.eMax = eMax;
-    if (run.traces) {
-      for (let i = 0; i < run.n; i++) {
-        const b = f.balls[i];
-        if (b[2]) run.traces[i].push(b[0], b[1]);
-      }
-    }
-    if (h.t.length > MAX_POINTS) thin();
-    return f;
-  }
-
-  function thin() {
-    const h = run.hist;
-    const keep = (a) => a.filter((_, k) => k % 2 === 0 || k === a.length - 1);
-    h.t = keep(h.t); h.E = keep(h.E);
-    if (h.e) h.e = h.e.map(keep);
-    if (run.traces) {
-      run.traces = run.traces.map((tr) => {
-        if (tr.length <= 2 * MAX_POINTS) return tr;
-        const out = [];
-        for (let k = 0; k < tr.length; k += 4) out.push(tr[k], tr[k + 1]);
-        out.push(tr[tr.length - 2], tr[tr.length - 1]);
-        return out;
-      });
-    }
-  }
-
-  // Moves the run to `target`, sampling just before and at every event on
-  // the way (found by the look-ahead playback) so that traces turn exactly
-  // at the collisions and the energy graph jumps where the energy does.
-  function advance(target) {
-    const times = [];
-    if (run.ahead) {
-      const fa = run.ahead.frame(target);
-      if (fa.events > run.aheadEvents) {
-        if (fa.events - run.aheadEvents <= MAX_EVENT_SAMPLES) {
-          const reply = run.ahead.events(run.aheadEvents);
-          const evs = Array.isArray(reply) ? reply : (reply && reply.events) || [];
-          for (const ev of evs) {
-            const te = ev && ev.time;
-            if (Number.isFinite(te) && te > run.t && te <= target && !(times.length && te <= times[times.length - 1])) {
-              times.push(te);
-            }
-          }
-        }
-        run.aheadEvents = fa.events;
-      }
-    }
-    const list = [];
-    const push = (t) => { if (t > (list.length ? list[list.length - 1] : run.sampled)) list.push(t); };
-    if (run.pool && run.traces) {
-      // Curved paths: a few evenly spaced points between frames too.
-      const steps = 3;
-      const t0 = run.t;
-      let k = 0;
-      for (let s = 1; s < steps; s++) {
-        const ts = t0 + ((target - t0) * s) / steps;
-        while (k < times.length && times[k] <= ts) { push(times[k] - Math.abs(times[k]) * 1e-12); push(times[k]); k++; }
-        push(ts);
-      }
-      while (k < times.length) { push(times[k] - Math.abs(times[k]) * 1e-12); push(times[k]); k++; }
-    } else {
-      for (const te of times) { push(te - Math.abs(te) * 1e-12); push(te); }
-    }
-    push(target);
-    let f = run.frame;
-    for (const t of list) f = sample(t);
-    run.frame = f;
-    run.t = target;
-    if (run.pRef === 0 || run.pSys === 0) setMomentumScale(f);
-    const P = Math.hypot(f.momentum[0], f.momentum[1]);
-    if (P > run.pSys) run.pSys = niceCeil(P);
-  }
-
-  function tick(now) {
-    rafId = 0;
-    if (destroyed || !run || run.paused || run.done) return;
-    try {
-      if (run.last == null) run.last = now;
-      const dt = Math.min(Math.max(now - run.last, 0), 100) / 1000;
-      run.last = now;
-      let target = run.t + dt * speed();
-      if (run.T != null && target >= run.T) target = run.T;
-      if (target > run.t) advance(target);
-      if (run.frame && run.frame.complete === false) {
-        runError = `The run stopped at the max_events guard, after ${run.frame.events} events, at t = ${fmtSI(run.frame.t ?? run.t, 's', 6)}.`;
-        finish();
-      } else if (run.T != null && run.t >= run.T) finish();
-      else if (run.rest && run.frame && run.frame.at_rest) finish();
-    } catch (e) {
-      runError = `The engine stopped: ${errText(e)}`;
-      finish();
-    }
-    frames++;
-    drawAll();
-    if (run && !run.done && !run.paused) rafId = requestAnimationFrame(tick);
-  }
-
   function finish() {
-    if (!run) { updateButtons(); updateError(); return; }
-    run.done = true;
-    freePlaybacks();
-    if (rafId) { cancelAnimationFrame(rafId); rafId = 0; }
+    if (!player.finish()) { updateButtons(); updateError(); return; }
     updateButtons();
     updateError();
     drawAll();
   }
 
-  function freePlaybacks() {
-    if (!run) return;
-    for (const k of ['pb', 'ahead']) {
-      if (run[k]) { try { run[k].free(); } catch (e) { /* ignore */ } run[k] = null; }
-    }
-  }
-
   function togglePause() {
-    if (!run || run.done) return;
-    run.paused = !run.paused;
-    run.last = null;
-    if (!run.paused && !rafId) rafId = requestAnimationFrame(tick);
+    if (!player.togglePause()) return;
     updateButtons();
     drawAll();
   }
 
   // Back to the setup. `quiet` skips the redraw (the caller draws).
   function resetRun(quiet) {
-    if (rafId) { cancelAnimationFrame(rafId); rafId = 0; }
-    if (run) { freePlaybacks(); run = null; }
-    frames = 0;
+    player.reset();
     if (!quiet) { runError = null; updateError(); }
     updateButtons();
     if (!quiet) drawAll();
   }
 
   function updateButtons() {
+    const run = player.run;
     const active = !!run && !run.done;
     pauseBtn.disabled = !active;
     pauseBtn.textContent = run && run.paused ? 'Resume' : 'Pause';
@@ -720,6 +565,7 @@ export function mountLab(root, engine) {
   }
 
   function updateStats() {
+    const run = player.run;
     const f = run ? run.frame : initialFrame;
     const t = run ? run.t : 0;
     tVal.textContent = fmtSI(t, 's', 6);
@@ -756,6 +602,7 @@ export function mountLab(root, engine) {
   }
 
   function drawTable() {
+    const run = player.run;
     const cssW = canvasBox.clientWidth;
     if (!cssW) return;
     const vs = tableVertices(setup.table);
@@ -955,6 +802,7 @@ export function mountLab(root, engine) {
   }
 
   function drawMomentumArrows(ctx, v, n, radii) {
+    const run = player.run;
     const f = run.frame;
     if (!f || !(run.pRef > 0)) return;
     const canvasW = canvas.width / (window.devicePixelRatio || 1), canvasH = canvas.height / (window.devicePixelRatio || 1);
@@ -985,6 +833,7 @@ export function mountLab(root, engine) {
 
   // The strip right of the table: the system's momentum on a dial, and the scales.
   function drawStrip(ctx, w, h) {
+    const run = player.run;
     const x0 = w - STRIP;
     ctx.fillStyle = '#1f2327';
     ctx.fillRect(x0, 0, STRIP, h);
@@ -1049,6 +898,7 @@ export function mountLab(root, engine) {
   }
 
   function drawEnergy() {
+    const run = player.run;
     const cssW = energyBox.clientWidth;
     if (!cssW) return;
     const { ctx, w, h } = fitCanvas(energyCanvas, cssW, 270);
@@ -1299,7 +1149,7 @@ export function mountLab(root, engine) {
   function onPointerDown(e) {
     try {
       if (e.button !== 0) return;
-      if (run) { resetRun(); }
+      if (player.run) { resetRun(); }
       drawTable();
       const w = toWorld(e);
       if (!w) return;
@@ -1332,7 +1182,7 @@ export function mountLab(root, engine) {
       const w = toWorld(e);
       if (!w) return;
       if (!drag) {
-        if (run || !setup) { canvas.style.cursor = 'default'; return; }
+        if (player.run || !setup) { canvas.style.cursor = 'default'; return; }
         const overTip = hitTip(w.px, w.py) >= 0 || hitVertex(w.px, w.py) >= 0;
         const overBall = hitBall(w.px, w.py) >= 0;
         canvas.style.cursor = overTip ? 'pointer' : overBall ? (mode === 'velocity' || e.shiftKey ? 'crosshair' : 'grab') : 'default';
@@ -1376,7 +1226,7 @@ export function mountLab(root, engine) {
 
   function onDoubleClick(e) {
     try {
-      if (run) return;
+      if (player.run) return;
       const w = toWorld(e);
       if (!w || hitBall(w.px, w.py) >= 0) return;
       const b = addBall(setup, spotForNewBall(setup, [w.x, w.y]));
@@ -1399,7 +1249,7 @@ export function mountLab(root, engine) {
     let pending = 0;
     resizeObs = new ResizeObserver(() => {
       if (pending) return;
-      pending = requestAnimationFrame(() => { pending = 0; if (!rafId) drawAll(); });
+      pending = requestAnimationFrame(() => { pending = 0; if (!player.animating()) drawAll(); });
     });
     resizeObs.observe(canvasBox);
     resizeObs.observe(energyBox);
@@ -1409,9 +1259,9 @@ export function mountLab(root, engine) {
 
   const api = {
     scenario: () => buildScenario(setup),
-    running: () => !!run && !run.paused && !run.done,
-    time: () => (run ? run.t : 0),
-    frames: () => frames,
+    running: () => !!player.run && !player.run.paused && !player.run.done,
+    time: () => (player.run ? player.run.t : 0),
+    frames: () => player.frames,
     load: (what) => {
       if (typeof what === 'string') loadExample(what);
       else loadScenario(what, null);
