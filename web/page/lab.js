@@ -12,20 +12,19 @@
 // web/tools/bundle-examples.mjs. Test hooks: docs/web.md, "Lab test hooks".
 
 import { EXAMPLES } from './lab-examples.js';
-import { el, present, errText } from './lab-dom.js';
+import { el, errText } from './lab-dom.js';
 import { fmtSI, fmtNum, roundTo, roundSig } from './lab-format.js';
 import { ballColours } from './lab-colours.js';
 import {
-  DEFAULT_RADIUS, DEFAULT_MASS, MODELS, PHYSICS_FIELDS, FIELD_INFO, EMPTY_SCENARIO, clone, normalise,
-  buildScenario, radiusOf, defaultFor, wallDefault, setModel, tableAs, resizeTable, addVertex,
-  polygonPresets, tableStep, addBall, spotForNewBall, removeBallAt, setBallCount, renameBall, addPairRestitution,
+  EMPTY_SCENARIO, clone, normalise, buildScenario, radiusOf, tableStep, addBall, spotForNewBall,
+  removeBallAt, setBallCount,
 } from './lab-scenario.js';
 import { Player } from './lab-player.js';
 import { VEL_TAU, layoutTable, drawTable as paintTable, velocityTip } from './lab-table-drawing.js';
 import { drawEnergy as drawEnergyGraph } from './lab-energy-graph.js';
-
-// Ball rows shown in the numbers table before "show all".
-const TABLE_ROWS = 60;
+import { renderPhysicsPanel } from './lab-physics-panel.js';
+import { renderTablePanel } from './lab-table-panel.js';
+import { renderBallsPanel, markSelected, showBall } from './lab-balls-panel.js';
 
 // ------------------------------------------------------------------ mount
 
@@ -56,7 +55,15 @@ export function mountLab(root, engine) {
   let validateTimer = 0;
   let drag = null;
   let view = null;              // world -> canvas transform of the last drawing
+  let ballRows = [];            // the Balls panel's rows
   let destroyed = false;
+
+  // What the panels' fields need to report their errors (lab-form.js).
+  const form = {
+    errors: fieldErrors,
+    showErrors: () => updateError(),
+    fail: (message) => { runError = message; updateError(); },
+  };
 
   // ---- DOM
   const exampleBar = el('div', { id: 'lab-examples', class: 'bs-lab-examples' },
@@ -218,264 +225,29 @@ export function mountLab(root, engine) {
 
   // ------------------------------------------------------------ panels
 
-  function numField({ value, placeholder = '', label, required = false, onSet, cls = '' }) {
-    const inp = el('input', {
-      type: 'text', inputmode: 'decimal', spellcheck: 'false', autocomplete: 'off',
-      class: `bs-num ${cls}`, value: value == null ? '' : String(value),
-      placeholder: placeholder === '' ? '' : String(placeholder), 'aria-label': label, title: label,
-    });
-    inp.addEventListener('change', () => {
-      const s = inp.value.trim();
-      let v;
-      if (s === '') {
-        if (required) { setFieldError(inp, label, 'a number is needed'); return; }
-        v = undefined;
-      } else {
-        v = Number(s);
-        if (s.length === 0 || !Number.isFinite(v)) { setFieldError(inp, label, `"${s}" is not a number`); return; }
-      }
-      clearFieldError(inp, label);
-      try { onSet(v); } catch (e) { runError = errText(e); updateError(); }
-    });
-    return inp;
-  }
-
-  function setFieldError(inp, label, msg) {
-    inp.classList.add('bs-invalid');
-    fieldErrors.set(label, msg);
-    updateError();
-  }
-
-  function clearFieldError(inp, label) {
-    inp.classList.remove('bs-invalid');
-    if (fieldErrors.delete(label)) updateError();
-  }
-
-  function row(label, control, unit) {
-    return el('label', { class: 'bs-lab-row' }, el('span', { class: 'bs-lab-rowlabel', text: label }), control,
-      el('span', { class: 'bs-lab-unit', text: unit || '' }));
-  }
-
   function renderPanels() {
     fieldErrors.clear();
     updateError();
-    renderPhysics();
+    renderPhysicsPanel(physicsPanel, setup, form, changed);
     renderTable();
     renderBalls();
   }
 
-  function renderPhysics() {
-    const p = setup.physics;
-    const modelSel = el('select', { id: 'lab-model', 'aria-label': 'model',
-      onchange: () => {
-        setModel(setup, modelSel.value);
-        changed({ panels: true });
-      } },
-    MODELS.map((m) => el('option', { value: m, text: m })));
-    if (!MODELS.includes(p.model)) modelSel.append(el('option', { value: p.model, text: p.model }));
-    modelSel.value = p.model;
-
-    const fields = (PHYSICS_FIELDS[p.model] || []).map((f) => row(FIELD_INFO[f].label, numField({
-      value: p[f], placeholder: defaultFor(p, f), label: `physics.${f}`,
-      onSet: (v) => { if (v === undefined) delete p[f]; else p[f] = v; changed(); },
-    }), FIELD_INFO[f].unit));
-
-    // Cluster impacts (physics.ball_clusters, docs/scenario.md): off is
-    // the default, so unticking leaves the field out.
-    const clustersBox = el('input', { type: 'checkbox', id: 'lab-clusters', checked: p.ball_clusters === true,
-      'aria-label': 'physics.ball_clusters',
-      onchange: () => {
-        if (clustersBox.checked) p.ball_clusters = true;
-        else delete p.ball_clusters;
-        changed();
-      } });
-    const clustersRow = row('cluster impacts', clustersBox, '');
-    clustersRow.title = 'an impact on balls within 0.5 mm of each other is resolved at once with ' +
-      'Hertz contacts (a break spreads the rack); off: every impact is pairwise';
-
-    // Duration: a time, or "rest" for the models with friction.
-    const isRest = setup.until === 'rest' || (setup.until === undefined && p.model !== 'ideal');
-    const untilSel = el('select', { 'aria-label': 'run until',
-      onchange: () => {
-        if (untilSel.value === 'rest') setup.until = 'rest';
-        else setup.until = { time: Number(timeIn.value) > 0 ? Number(timeIn.value) : 5 };
-        changed({ panels: true });
-      } },
-    el('option', { value: 'time', text: 'a time' }),
-    el('option', { value: 'rest', text: 'every ball rests' }));
-    untilSel.value = isRest ? 'rest' : 'time';
-    const timeIn = numField({
-      value: !isRest && setup.until && typeof setup.until === 'object' ? setup.until.time : '',
-      placeholder: 5, label: 'until.time', required: true,
-      onSet: (v) => { setup.until = { time: v }; changed(); },
-    });
-    if (isRest) timeIn.disabled = true;
-
-    physicsPanel.replaceChildren(...present(
-      row('model', modelSel, ''),
-      ...fields,
-      clustersRow,
-      row('run until', untilSel, ''),
-      isRest ? null : row('time', timeIn, 's'),
-      el('div', { class: 'bs-lab-note', text: 'Blank fields take the engine\'s documented default (shown in grey).' })));
-  }
-
   function renderTable() {
-    const t = setup.table;
-    const shapeSel = el('select', { id: 'lab-shape', 'aria-label': 'table shape',
-      onchange: () => {
-        setup.table = tableAs(t, shapeSel.value);
-        changed({ panels: true });
-      } },
-    el('option', { value: 'rectangle', text: 'box (rectangle)' }),
-    el('option', { value: 'polygon', text: 'polygon' }));
-    const supported = t.shape === 'rectangle' || t.shape === 'polygon';
-    if (!supported) shapeSel.append(el('option', { value: t.shape, text: String(t.shape) }));
-    shapeSel.value = t.shape;
-
-    const parts = [row('shape', shapeSel, '')];
-    if (t.shape === 'rectangle') {
-      if (!Array.isArray(t.min)) t.min = [-0.5, -0.5];
-      if (!Array.isArray(t.max)) t.max = [0.5, 0.5];
-      const positive = (label, axis) => numField({
-        value: roundSig(t.max[axis] - t.min[axis], 12), label, required: true,
-        onSet: (v) => { if (!(v > 0)) throw new Error(`${label} must be above 0`); resizeTable(t, axis, v); changed({ panels: true }); },
-      });
-      parts.push(row('width', positive('table width', 0), 'm'));
-      parts.push(row('height', positive('table height', 1), 'm'));
-      parts.push(el('div', { class: 'bs-lab-note',
-        text: `from (${t.min[0]}, ${t.min[1]}) to (${t.max[0]}, ${t.max[1]}); resizing keeps the centre` }));
-    } else if (t.shape === 'polygon') {
-      if (!Array.isArray(t.vertices)) t.vertices = [];
-      const presetSel = el('select', { 'aria-label': 'polygon preset',
-        onchange: () => {
-          const p = polygonPresets(setup.table, EXAMPLES).find((q) => q.name === presetSel.value);
-          if (p) { t.vertices = clone(p.vertices); changed({ panels: true }); }
-        } },
-      el('option', { value: '', text: 'preset…' }),
-      polygonPresets(setup.table, EXAMPLES).map((p) => el('option', { value: p.name, text: p.name })));
-      parts.push(row('preset', presetSel, ''));
-      const list = el('table', { class: 'bs-lab-grid bs-lab-vertices' },
-        el('thead', null, el('tr', null, el('th', { text: '#' }), el('th', { text: 'x (m)' }), el('th', { text: 'y (m)' }), el('th'))));
-      const body = el('tbody');
-      t.vertices.forEach((v, k) => {
-        body.append(el('tr', null,
-          el('td', { class: 'bs-lab-idx', text: String(k) }),
-          el('td', null, numField({ value: v[0], required: true, label: `table.vertices[${k}] x`,
-            onSet: (x) => { v[0] = x; changed(); } })),
-          el('td', null, numField({ value: v[1], required: true, label: `table.vertices[${k}] y`,
-            onSet: (y) => { v[1] = y; changed(); } })),
-          el('td', null, el('button', { type: 'button', class: 'bs-lab-x', title: `remove vertex ${k}`, text: '×',
-            disabled: t.vertices.length <= 3,
-            onclick: () => { t.vertices.splice(k, 1); changed({ panels: true }); } }))));
-      });
-      list.append(body);
-      parts.push(list);
-      parts.push(el('button', { type: 'button', text: '+ vertex', title: 'add a vertex halfway along the last edge',
-        onclick: () => { addVertex(t.vertices); changed({ panels: true }); } }));
-      parts.push(el('div', { class: 'bs-lab-note', text: 'Vertices in either order; drag the white handles on the table to move them.' }));
-    } else {
-      parts.push(el('div', { class: 'bs-lab-note', text: `The lab edits boxes and polygons; this "${t.shape}" table is sent to the engine as it is and not drawn.` }));
-    }
-    tablePanel.replaceChildren(...present(parts));
+    renderTablePanel(tablePanel, setup, EXAMPLES, form, changed);
   }
-
-  let rowRefs = [];   // per shown ball row: {x, y, vx, vy, tr}
 
   function renderBalls() {
-    const balls = setup.balls;
-    const n = balls.length;
-    const countIn = numField({ value: n, label: 'ball count', required: true,
-      onSet: (v) => {
-        if (!Number.isInteger(v) || v < 0 || v > 5000) throw new Error('ball count: a whole number from 0 to 5000');
-        setCount(v);
-      } });
-    countIn.id = 'lab-count';
-    countIn.classList.add('bs-short');
-    const head = el('div', { class: 'bs-lab-ballhead' },
-      row('count', countIn, ''),
-      el('button', { type: 'button', text: '+ ball', onclick: () => { addBall(setup); changed({ panels: true, colour: true }); } }));
-
-    const cols = [['', ''], ['id', ''], ['x', 'm'], ['y', 'm'], ['vx', 'm/s'], ['vy', 'm/s'],
-      ['radius', 'm'], ['mass', 'kg'], ['wall e', ''], ['', '']];
-    const table = el('table', { class: 'bs-lab-grid bs-lab-balls', id: 'lab-balls' },
-      el('thead', null, el('tr', null, cols.map(([c, u]) => el('th', { title: u ? `${c} (${u})` : c },
-        c, u ? el('span', { class: 'bs-lab-unit', text: ` ${u}` }) : null)))));
-    const body = el('tbody');
-    rowRefs = [];
-    const shown = showAllRows ? n : Math.min(n, TABLE_ROWS);
-    const wd = wallDefault(setup);
-    for (let i = 0; i < shown; i++) {
-      const b = balls[i];
-      const name = `balls[${i}]`;
-      const idIn = el('input', { type: 'text', class: 'bs-id', value: b.id ?? '', 'aria-label': `${name}.id`, spellcheck: 'false' });
-      idIn.addEventListener('change', () => {
-        renameBall(setup, b, idIn.value);
-        changed({ panels: true, colour: true });
-      });
-      const pos = () => { if (!Array.isArray(b.position)) b.position = [0, 0]; return b.position; };
-      const vel = () => { if (!Array.isArray(b.velocity)) b.velocity = [0, 0]; return b.velocity; };
-      const x = numField({ value: b.position?.[0], required: true, label: `${name}.position x`, onSet: (v) => { pos()[0] = v; changed(); } });
-      const y = numField({ value: b.position?.[1], required: true, label: `${name}.position y`, onSet: (v) => { pos()[1] = v; changed(); } });
-      const vx = numField({ value: b.velocity?.[0], placeholder: 0, label: `${name}.velocity x`, onSet: (v) => { vel()[0] = v ?? 0; changed(); } });
-      const vy = numField({ value: b.velocity?.[1], placeholder: 0, label: `${name}.velocity y`, onSet: (v) => { vel()[1] = v ?? 0; changed(); } });
-      const opt = (key, def) => numField({ value: b[key], placeholder: def, label: `${name}.${key}`,
-        onSet: (v) => { if (v === undefined) delete b[key]; else b[key] = v; changed(); } });
-      const tr = el('tr', { class: i === selected ? 'bs-selected' : '', onclick: () => select(i) },
-        el('td', null, el('span', { class: 'bs-swatch', style: `background:${colours[i]}` })),
-        el('td', null, idIn), el('td', null, x), el('td', null, y), el('td', null, vx), el('td', null, vy),
-        el('td', null, opt('radius', DEFAULT_RADIUS)), el('td', null, opt('mass', DEFAULT_MASS)),
-        el('td', null, opt('wall_restitution', wd)),
-        el('td', null, el('button', { type: 'button', class: 'bs-lab-x', text: '×', title: `remove ball ${b.id}`,
-          onclick: (e) => { e.stopPropagation(); removeBall(i); } })));
-      rowRefs.push({ x, y, vx, vy, tr });
-      body.append(tr);
-    }
-    table.append(body);
-    const more = n > shown
-      ? el('button', { type: 'button', class: 'bs-lab-more', text: `show all ${n} balls (${n - shown} more rows)`,
-        onclick: () => { showAllRows = true; renderBalls(); } })
-      : null;
-
-    // Pair restitution: overrides of the ball-ball restitution.
-    const pairs = setup.pair_restitution || [];
-    const pairList = el('datalist', { id: 'bs-lab-ids' },
-      balls.slice(0, 200).map((b) => el('option', { value: String(b.id) })));
-    const pairRows = pairs.map((pr, k) => {
-      const idField = (j) => {
-        const inp = el('input', { type: 'text', class: 'bs-id', list: 'bs-lab-ids', value: pr.balls?.[j] ?? '',
-          'aria-label': `pair_restitution[${k}].balls[${j}]` });
-        inp.addEventListener('change', () => {
-          if (!Array.isArray(pr.balls)) pr.balls = ['', ''];
-          pr.balls[j] = inp.value; changed();
-        });
-        return inp;
-      };
-      return el('div', { class: 'bs-lab-pair' }, idField(0), '–', idField(1), ' e ',
-        numField({ value: pr.restitution, required: true, label: `pair_restitution[${k}].restitution`,
-          onSet: (v) => { pr.restitution = v; changed(); } }),
-        el('button', { type: 'button', class: 'bs-lab-x', text: '×', title: 'remove this pair',
-          onclick: () => { pairs.splice(k, 1); changed({ panels: true }); } }));
+    ballRows = renderBallsPanel(ballsPanel, setup, { colours, selected, showAllRows }, form, {
+      changed, select, removeBall, setCount,
+      showAll: () => { showAllRows = true; renderBalls(); },
     });
-    const addPair = el('button', { type: 'button', text: '+ pair restitution',
-      onclick: () => {
-        addPairRestitution(setup);
-        changed({ panels: true });
-      } });
-
-    ballsPanel.replaceChildren(...present(head, el('div', { class: 'bs-lab-tablewrap' }, table), more,
-      el('div', { class: 'bs-lab-sub', text: 'Pair restitution (overrides the ball-ball restitution for two balls)' }),
-      pairList, ...pairRows, addPair,
-      el('div', { class: 'bs-lab-note', text: `Blank radius, mass and wall e take the defaults ${DEFAULT_RADIUS} m, ${DEFAULT_MASS} kg and ${wd}.` })));
   }
 
   function select(i) {
     if (selected === i) return;
-    const old = rowRefs[selected];
-    if (old) old.tr.classList.remove('bs-selected');
+    markSelected(ballRows, selected, i);
     selected = i;
-    const cur = rowRefs[i];
-    if (cur) cur.tr.classList.add('bs-selected');
     drawAll();
   }
 
@@ -694,16 +466,14 @@ export function mountLab(root, engine) {
       if (drag.kind === 'move') {
         const b = setup.balls[drag.i];
         b.position = [roundTo(w.x - drag.dx, step), roundTo(w.y - drag.dy, step)];
-        const r = rowRefs[drag.i];
-        if (r) { r.x.value = String(b.position[0]); r.y.value = String(b.position[1]); }
+        showBall(ballRows, drag.i, b, 'position');
       } else if (drag.kind === 'velocity') {
         const b = setup.balls[drag.i];
         const p = b.position;
         const vx = (w.x - p[0]) / VEL_TAU, vy = (w.y - p[1]) / VEL_TAU;
         const vstep = 10 ** Math.ceil(Math.log10(step / VEL_TAU) - 1e-9);
         b.velocity = [roundTo(vx, vstep), roundTo(vy, vstep)];
-        const r = rowRefs[drag.i];
-        if (r) { r.vx.value = String(b.velocity[0]); r.vy.value = String(b.velocity[1]); }
+        showBall(ballRows, drag.i, b, 'velocity');
       } else if (drag.kind === 'vertex') {
         const vs = setup.table.vertices;
         vs[drag.i] = [roundTo(w.x, step), roundTo(w.y, step)];
