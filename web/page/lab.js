@@ -6,27 +6,27 @@
 //   mountLab(document.getElementById('lab'), engine);   // engine: loadEngine()'s API
 //
 // Nothing physical is computed here: positions, energies and momenta all
-// come from pb.frame(t) (docs/web.md). The scenario this file builds is the
-// contract's scenario format (../shared/contract/scenario-format.md); the
-// examples are bundled from examples/lab/*.json by
-// web/tools/bundle-examples.mjs. Test hooks: docs/web.md, "Lab test hooks".
+// come from pb.frame(t) (docs/web.md). This file builds the lab's page from
+// the lab-*.js modules and wires them: it holds the lab's state (the
+// scenario being edited, the selection, the options, the errors) and passes
+// it to them as plain data. The scenario is the contract's format
+// (lab-scenario.js); the examples are bundled from examples/lab/*.json by
+// web/tools/bundle-examples.mjs. Test hooks: docs/web.md, "The lab and its
+// test hooks".
 
 import { EXAMPLES } from './lab-examples.js';
 import { el, errText } from './lab-dom.js';
-import { fmtSI, fmtNum, roundTo, roundSig } from './lab-format.js';
 import { ballColours } from './lab-colours.js';
-import {
-  EMPTY_SCENARIO, clone, normalise, buildScenario, radiusOf, tableStep, addBall, spotForNewBall,
-  removeBallAt, setBallCount,
-} from './lab-scenario.js';
+import { EMPTY_SCENARIO, clone, normalise, buildScenario, removeBallAt, setBallCount } from './lab-scenario.js';
 import { Player } from './lab-player.js';
-import { VEL_TAU, layoutTable, drawTable as paintTable, velocityTip } from './lab-table-drawing.js';
-import { drawEnergy as drawEnergyGraph } from './lab-energy-graph.js';
+import { VEL_TAU, layoutTable, drawTable as paintTable } from './lab-table-drawing.js';
+import { drawEnergy as paintEnergy } from './lab-energy-graph.js';
+import { createToolbar } from './lab-toolbar.js';
+import { createStats } from './lab-stats.js';
 import { renderPhysicsPanel } from './lab-physics-panel.js';
 import { renderTablePanel } from './lab-table-panel.js';
 import { renderBallsPanel, markSelected, showBall } from './lab-balls-panel.js';
-
-// ------------------------------------------------------------------ mount
+import { attachEditor } from './lab-editor.js';
 
 export function mountLab(root, engine) {
   if (!root) throw new Error('mountLab: no root element');
@@ -37,11 +37,6 @@ export function mountLab(root, engine) {
   let setup = null;             // the scenario being edited (contract format)
   let colours = [];
   let example = null;           // name of the loaded example, if unchanged since
-  const player = new Player({
-    speed: () => speed(),
-    frame: () => drawAll(),
-    stop: (error) => { if (error) runError = error; finish(); },
-  });
   let speedLog = 0;             // log10 of the speed factor
   let mode = 'move';            // drag mode: 'move' or 'velocity'
   let showTraces = true;
@@ -53,11 +48,15 @@ export function mountLab(root, engine) {
   const fieldErrors = new Map();  // input label -> message
   let initialFrame = null;      // frame(0) of the setup, for the numbers and arrows
   let validateTimer = 0;
-  let drag = null;
   let view = null;              // world -> canvas transform of the last drawing
   let ballRows = [];            // the Balls panel's rows
   let destroyed = false;
 
+  const player = new Player({
+    speed: () => 10 ** speedLog,
+    frame: () => drawAll(),
+    stop: (error) => { if (error) runError = error; finish(); },
+  });
   // What the panels' fields need to report their errors (lab-form.js).
   const form = {
     errors: fieldErrors,
@@ -66,56 +65,20 @@ export function mountLab(root, engine) {
   };
 
   // ---- DOM
-  const exampleBar = el('div', { id: 'lab-examples', class: 'bs-lab-examples' },
-    el('span', { class: 'bs-lab-label', text: 'Examples:' }));
-  for (const ex of EXAMPLES) {
-    exampleBar.append(el('button', {
-      type: 'button', class: 'bs-lab-example', dataset: { example: ex.name }, text: ex.name,
-      title: `load examples/lab/${ex.name}.json`, onclick: () => loadExample(ex.name),
-    }));
-  }
-
-  const runBtn = el('button', { id: 'lab-run', type: 'button', class: 'bs-lab-primary', text: 'Run', onclick: () => startRun() });
-  const pauseBtn = el('button', { id: 'lab-pause', type: 'button', text: 'Pause', disabled: true, onclick: () => togglePause() });
-  const resetBtn = el('button', { id: 'lab-reset', type: 'button', text: 'Reset', onclick: () => resetRun() });
-  const speedInput = el('input', {
-    id: 'lab-speed', type: 'range', min: '-7', max: '1', step: '0.05', value: '0',
-    title: 'simulated seconds per real second (logarithmic)',
-    oninput: () => { speedLog = Number(speedInput.value); speedOut.textContent = speedText(); },
+  const bars = createToolbar(EXAMPLES, {
+    loadExample: (name) => loadExample(name),
+    run: () => startRun(),
+    pause: () => togglePause(),
+    reset: () => resetRun(),
+    speed: (log) => { speedLog = log; },
+    mode: (m) => { mode = m; },
+    traces: (on) => { showTraces = on; drawAll(); },
+    arrows: (on) => { showArrows = on; drawAll(); },
   });
-  const speedOut = el('output', { class: 'bs-lab-speed', text: '×1' });
-  const modeMove = el('input', { type: 'radio', name: 'bs-lab-mode', value: 'move', checked: true,
-    onchange: () => { mode = 'move'; } });
-  const modeVel = el('input', { type: 'radio', name: 'bs-lab-mode', value: 'velocity',
-    onchange: () => { mode = 'velocity'; } });
-  const tracesBox = el('input', { type: 'checkbox', checked: true,
-    onchange: () => { showTraces = tracesBox.checked; drawAll(); } });
-  const arrowsBox = el('input', { type: 'checkbox', checked: true,
-    onchange: () => { showArrows = arrowsBox.checked; drawAll(); } });
-
-  const toolbar = el('div', { class: 'bs-lab-toolbar' },
-    runBtn, pauseBtn, resetBtn,
-    el('label', { class: 'bs-lab-speedbox' }, 'speed ', speedInput, speedOut));
-  const options = el('div', { class: 'bs-lab-toolbar bs-lab-options' },
-    el('span', { class: 'bs-lab-modes', title: 'what dragging a ball does (Shift-drag always sets the velocity)' },
-      'drag: ', el('label', null, modeMove, 'move'), el('label', null, modeVel, 'velocity')),
-    el('label', null, tracesBox, 'traces'),
-    el('label', null, arrowsBox, 'arrows'));
-
   const errorBox = el('div', { id: 'lab-error', class: 'bs-lab-error', role: 'alert', 'aria-live': 'polite' });
   const canvas = el('canvas', { id: 'lab-canvas', class: 'bs-lab-canvas' });
   const canvasBox = el('div', { class: 'bs-lab-canvasbox' }, canvas);
-  const stat = (id, label, unit) => {
-    const b = el('b', { id, text: '–' });
-    return [el('span', { class: 'bs-lab-stat' }, el('span', { class: 'bs-lab-statlabel', text: label }), b,
-      unit ? el('span', { class: 'bs-lab-unit', text: unit }) : null), b];
-  };
-  const [tStat, tVal] = stat('lab-time', 't', '');
-  const [evStat, evVal] = stat('lab-events', 'events', '');
-  const [eStat, eVal] = stat('lab-energy-total', 'total kinetic energy', '');
-  const [pStat, pVal] = stat('lab-momentum', 'total momentum (px, py)', 'kg·m/s');
-  const stateVal = el('span', { class: 'bs-lab-state', text: 'setup' });
-  const stats = el('div', { class: 'bs-lab-stats' }, stateVal, tStat, evStat, eStat, pStat);
+  const stats = createStats();
   const hint = el('div', { class: 'bs-lab-hint' },
     'Drag a ball to move it; Shift-drag from its centre (or "drag: velocity") to set its velocity; ' +
     'drag an arrow tip to change it; double-click the table to add a ball. ' +
@@ -131,10 +94,10 @@ export function mountLab(root, engine) {
   const panel = (title, body) => el('details', { class: 'bs-lab-panel', open: true },
     el('summary', { text: title }), body);
 
-  const left = el('div', { class: 'bs-lab-left' }, toolbar, options, errorBox, canvasBox, stats, hint);
+  const left = el('div', { class: 'bs-lab-left' }, bars.toolbar, bars.options, errorBox, canvasBox, stats.element, hint);
   const right = el('div', { class: 'bs-lab-right' }, energyBox,
     panel('Physics', physicsPanel), panel('Table', tablePanel), panel('Balls', ballsPanel));
-  const container = el('div', { class: 'bs-lab' }, exampleBar, el('div', { class: 'bs-lab-main' }, left, right));
+  const container = el('div', { class: 'bs-lab' }, bars.exampleBar, el('div', { class: 'bs-lab-main' }, left, right));
   root.append(container);
 
   // ---------------------------------------------------------- the setup
@@ -148,14 +111,11 @@ export function mountLab(root, engine) {
     fieldErrors.clear();
     runError = null;
     colours = ballColours(setup.balls);
-    for (const b of exampleBar.querySelectorAll('button')) {
-      b.setAttribute('aria-pressed', String(b.dataset.example === example));
-    }
+    bars.markExample(example);
     // A run much shorter than a second plays slowed down so it lasts a few seconds.
     const T = setup.until && typeof setup.until === 'object' ? setup.until.time : null;
     speedLog = T > 0 && T < 0.2 ? Math.max(-7, Math.round(Math.log10(T / 4) * 20) / 20) : 0;
-    speedInput.value = String(speedLog);
-    speedOut.textContent = speedText();
+    bars.showSpeed(speedLog);
     renderPanels();
     validateNow();
     drawAll();
@@ -171,7 +131,7 @@ export function mountLab(root, engine) {
   function changed({ panels = false, colour = false } = {}) {
     if (player.run) resetRun(true);
     example = null;
-    for (const b of exampleBar.querySelectorAll('button')) b.setAttribute('aria-pressed', 'false');
+    bars.markExample(example);
     if (colour) colours = ballColours(setup.balls);
     if (panels) renderPanels();
     runError = null;
@@ -265,13 +225,6 @@ export function mountLab(root, engine) {
 
   // ---------------------------------------------------------------- runs
 
-  function speed() { return 10 ** speedLog; }
-
-  function speedText() {
-    const s = speed();
-    return `×${s >= 1 ? roundSig(s, 3) : s.toPrecision(2).replace(/\.?0+e/, 'e')}`;
-  }
-
   function startRun() {
     try {
       resetRun(true);
@@ -323,27 +276,13 @@ export function mountLab(root, engine) {
   }
 
   function updateButtons() {
-    const run = player.run;
-    const active = !!run && !run.done;
-    pauseBtn.disabled = !active;
-    pauseBtn.textContent = run && run.paused ? 'Resume' : 'Pause';
-    runBtn.textContent = run ? 'Run again' : 'Run';
-    stateVal.textContent = !run ? 'setup' : run.done ? 'finished' : run.paused ? 'paused' : 'running';
-    stateVal.dataset.state = stateVal.textContent;
+    bars.showRun(player.run);
+    stats.showState(player.run);
   }
 
   function updateStats() {
     const run = player.run;
-    const f = run ? run.frame : initialFrame;
-    const t = run ? run.t : 0;
-    tVal.textContent = fmtSI(t, 's', 6);
-    if (f) {
-      evVal.textContent = String(f.events);
-      eVal.textContent = fmtSI(f.energy, 'J', 6);
-      pVal.textContent = `(${fmtNum(f.momentum[0], 6)}, ${fmtNum(f.momentum[1], 6)})`;
-    } else {
-      evVal.textContent = '–'; eVal.textContent = '–'; pVal.textContent = '–';
-    }
+    stats.show(run ? run.frame : initialFrame, run ? run.t : 0);
   }
 
   // ------------------------------------------------------------- drawing
@@ -362,7 +301,7 @@ export function mountLab(root, engine) {
 
   // The drawing's inputs, as plain data.
   function scene() {
-    return { setup, run: player.run, colours, selected, showTraces, showArrows, drag, initialFrame };
+    return { setup, run: player.run, colours, selected, showTraces, showArrows, drag: editor.drag(), initialFrame };
   }
 
   function drawTable() {
@@ -374,147 +313,28 @@ export function mountLab(root, engine) {
   }
 
   function drawEnergy() {
-    drawEnergyGraph(energyCanvas, energyBox.clientWidth, scene());
+    paintEnergy(energyCanvas, energyBox.clientWidth, scene());
   }
 
   // ------------------------------------------------------- table editing
 
-  function toWorld(e) {
-    const r = canvas.getBoundingClientRect();
-    const px = e.clientX - r.left, py = e.clientY - r.top;
-    if (!view) return null;
-    return { px, py, x: (px - view.ox) / view.s, y: (view.oy - py) / view.s };
-  }
-
-  function hitBall(px, py) {
-    let best = -1, bestD = Infinity;
-    const balls = setup.balls;
-    for (let i = 0; i < balls.length; i++) {
-      const p = balls[i].position;
-      if (!Array.isArray(p)) continue;
-      const d = Math.hypot(view.X(p[0]) - px, view.Y(p[1]) - py);
-      const r = Math.max(7, radiusOf(balls[i]) * view.s);
-      if (d <= r && d < bestD) { best = i; bestD = d; }
-    }
-    return best;
-  }
-
-  function hitTip(px, py) {
-    const n = setup.balls.length;
-    const candidates = n <= 100 ? [...Array(n).keys()] : selected >= 0 ? [selected] : [];
-    for (const i of candidates) {
-      const b = setup.balls[i];
-      if (!Array.isArray(b.velocity) || !(Math.hypot(b.velocity[0], b.velocity[1]) > 0)) continue;
-      const t = velocityTip(view, b);
-      if (t && Math.hypot(t[0] - px, t[1] - py) <= 7) return i;
-    }
-    return -1;
-  }
-
-  function hitVertex(px, py) {
-    if (setup.table.shape !== 'polygon' || !Array.isArray(setup.table.vertices)) return -1;
-    const vs = setup.table.vertices;
-    for (let k = 0; k < vs.length; k++) {
-      if (Math.hypot(view.X(vs[k][0]) - px, view.Y(vs[k][1]) - py) <= 7) return k;
-    }
-    return -1;
-  }
-
-  function onPointerDown(e) {
-    try {
-      if (e.button !== 0) return;
-      if (player.run) { resetRun(); }
-      drawTable();
-      const w = toWorld(e);
-      if (!w) return;
-      let i = hitTip(w.px, w.py);
-      if (i >= 0) {
-        drag = { kind: 'velocity', i };
-      } else if ((i = hitBall(w.px, w.py)) >= 0) {
-        const p = setup.balls[i].position;
-        drag = mode === 'velocity' || e.shiftKey
-          ? { kind: 'velocity', i }
-          : { kind: 'move', i, dx: w.x - p[0], dy: w.y - p[1] };
-      } else if ((i = hitVertex(w.px, w.py)) >= 0) {
-        drag = { kind: 'vertex', i };
-      } else {
-        select(-1);
-        return;
-      }
-      if (drag.kind !== 'vertex') select(drag.i);
-      drag.moved = false;
-      canvas.setPointerCapture(e.pointerId);
-      e.preventDefault();
-    } catch (err) {
-      runError = errText(err);
-      updateError();
-    }
-  }
-
-  function onPointerMove(e) {
-    try {
-      const w = toWorld(e);
-      if (!w) return;
-      if (!drag) {
-        if (player.run || !setup) { canvas.style.cursor = 'default'; return; }
-        const overTip = hitTip(w.px, w.py) >= 0 || hitVertex(w.px, w.py) >= 0;
-        const overBall = hitBall(w.px, w.py) >= 0;
-        canvas.style.cursor = overTip ? 'pointer' : overBall ? (mode === 'velocity' || e.shiftKey ? 'crosshair' : 'grab') : 'default';
-        return;
-      }
-      const step = tableStep(setup);
-      if (drag.kind === 'move') {
-        const b = setup.balls[drag.i];
-        b.position = [roundTo(w.x - drag.dx, step), roundTo(w.y - drag.dy, step)];
-        showBall(ballRows, drag.i, b, 'position');
-      } else if (drag.kind === 'velocity') {
-        const b = setup.balls[drag.i];
-        const p = b.position;
-        const vx = (w.x - p[0]) / VEL_TAU, vy = (w.y - p[1]) / VEL_TAU;
-        const vstep = 10 ** Math.ceil(Math.log10(step / VEL_TAU) - 1e-9);
-        b.velocity = [roundTo(vx, vstep), roundTo(vy, vstep)];
-        showBall(ballRows, drag.i, b, 'velocity');
-      } else if (drag.kind === 'vertex') {
-        const vs = setup.table.vertices;
-        vs[drag.i] = [roundTo(w.x, step), roundTo(w.y, step)];
-      }
-      drag.moved = true;
-      changed();
-    } catch (err) {
-      runError = errText(err);
-      updateError();
-    }
-  }
-
-  function onPointerUp(e) {
-    if (!drag) return;
-    const d = drag;
-    drag = null;
-    try { canvas.releasePointerCapture(e.pointerId); } catch (err) { /* not captured */ }
-    if (d.moved && d.kind === 'vertex') renderTable();
-    if (d.moved) validateNow();
-    drawAll();
-  }
-
-  function onDoubleClick(e) {
-    try {
-      if (player.run) return;
-      const w = toWorld(e);
-      if (!w || hitBall(w.px, w.py) >= 0) return;
-      const b = addBall(setup, spotForNewBall(setup, [w.x, w.y]));
-      selected = setup.balls.indexOf(b);
-      changed({ panels: true, colour: true });
-    } catch (err) {
-      runError = errText(err);
-      updateError();
-    }
-  }
-
-  canvas.addEventListener('pointerdown', onPointerDown);
-  canvas.addEventListener('pointermove', onPointerMove);
-  canvas.addEventListener('pointerup', onPointerUp);
-  canvas.addEventListener('pointercancel', onPointerUp);
-  canvas.addEventListener('dblclick', onDoubleClick);
+  const editor = attachEditor(canvas, {
+    get setup() { return setup; },
+    get view() { return view; },
+    get mode() { return mode; },
+    get selected() { return selected; },
+    get running() { return !!player.run; },
+    endRun: () => resetRun(),
+    drawTable,
+    drawAll,
+    select,
+    changed,
+    dragged: (i, what) => showBall(ballRows, i, setup.balls[i], what),
+    vertexMoved: () => renderTable(),
+    validateNow,
+    addedBall: (i) => { selected = i; changed({ panels: true, colour: true }); },
+    fail: (err) => { runError = errText(err); updateError(); },
+  });
 
   let resizeObs = null;
   if (typeof ResizeObserver === 'function') {
