@@ -6,244 +6,27 @@
 //   mountLab(document.getElementById('lab'), engine);   // engine: loadEngine()'s API
 //
 // Nothing physical is computed here: positions, energies and momenta all
-// come from pb.frame(t) (docs/web.md). The scenario this file builds is the
-// contract's scenario format (../shared/contract/scenario-format.md); the
-// examples are bundled from examples/lab/*.json by
-// web/tools/bundle-examples.mjs. Test hooks: docs/web.md, "Lab test hooks".
+// come from pb.frame(t) (docs/web.md). This file builds the lab's page from
+// the lab-*.js modules and wires them: it holds the lab's state (the
+// scenario being edited, the selection, the options, the errors) and passes
+// it to them as plain data. The scenario is the contract's format
+// (lab-scenario.js); the examples are bundled from examples/lab/*.json by
+// web/tools/bundle-examples.mjs. Test hooks: docs/web.md, "The lab and its
+// test hooks".
 
 import { EXAMPLES } from './lab-examples.js';
-
-// Per-ball traces, per-ball energy lines and event-exact sampling are kept
-// up to this many balls; beyond it only the total energy is plotted.
-const TRACE_LIMIT = 20;
-// Ball rows shown in the numbers table before "show all".
-const TABLE_ROWS = 60;
-// A setup velocity arrow ends where the ball would be after this many seconds.
-const VEL_TAU = 0.25;
-// Width (CSS px) of the strip right of the table with the system momentum.
-const STRIP = 150;
-// History points kept before thinning by half.
-const MAX_POINTS = 40000;
-// Events in one animation frame beyond which the frame is not split at each event.
-const MAX_EVENT_SAMPLES = 64;
-
-const DEFAULT_RADIUS = 0.028575;
-const DEFAULT_MASS = 0.170;
-
-const MODELS = ['ideal', 'friction', 'pool'];
-// Physics fields shown for each model, with their documented defaults
-// (docs/scenario.md, "Defaults"). A blank field is left out of the
-// scenario, so the engine applies the default itself.
-const PHYSICS_FIELDS = {
-  ideal: ['ball_ball_restitution'],
-  friction: ['ball_ball_restitution', 'deceleration'],
-  pool: ['ball_ball_restitution', 'ball_ball_friction', 'gravity',
-         'sliding_friction', 'rolling_friction', 'spinning_friction'],
-};
-const FIELD_INFO = {
-  ball_ball_restitution: { label: 'ball-ball restitution', unit: '' },
-  ball_ball_friction: { label: 'ball-ball friction', unit: '' },
-  deceleration: { label: 'deceleration', unit: 'm/s²' },
-  gravity: { label: 'gravity', unit: 'm/s²' },
-  sliding_friction: { label: 'sliding friction', unit: '' },
-  rolling_friction: { label: 'rolling friction', unit: '' },
-  spinning_friction: { label: 'spinning friction', unit: '' },
-};
-
-const NAMED_COLOURS = {
-  white: '#f4f4ef', cue: '#f4f4ef', black: '#1c1c1c', red: '#d7263d',
-  blue: '#2a6fdb', green: '#1f9d55', yellow: '#f2c230', orange: '#f0872a',
-  purple: '#7f3fc6', violet: '#7f3fc6', pink: '#f46fae', brown: '#8d5a2e',
-  maroon: '#8a1c1c', cyan: '#1bb5c8', magenta: '#d035c0', grey: '#9aa0a6',
-  gray: '#9aa0a6', gold: '#d4a11a', silver: '#c3c6c9', navy: '#26418f',
-  teal: '#138a86', lime: '#7ccf3a',
-};
-const FELT = '#4f6b7a';
-const RAIL = '#2b3036';
-const TOTAL_COLOUR = '#e0b24a';   // the system's things (total energy, momentum) are gold
-const GRAPH_BG = '#1b2026';
-
-// ---------------------------------------------------------------- helpers
-
-function clone(x) { return x === undefined ? undefined : JSON.parse(JSON.stringify(x)); }
-
-function el(tag, props, ...kids) {
-  const e = document.createElement(tag);
-  if (props) {
-    for (const [k, v] of Object.entries(props)) {
-      if (v == null || v === false) continue;
-      if (k === 'class') e.className = v;
-      else if (k === 'text') e.textContent = v;
-      else if (k === 'dataset') Object.assign(e.dataset, v);
-      else if (k.startsWith('on') && typeof v === 'function') e.addEventListener(k.slice(2), v);
-      else if (k === 'value') e.value = v;
-      else if (k === 'checked') e.checked = v;
-      else e.setAttribute(k, v === true ? '' : String(v));
-    }
-  }
-  for (const kid of kids.flat()) {
-    if (kid == null || kid === false) continue;
-    e.append(kid.nodeType ? kid : String(kid));
-  }
-  return e;
-}
-
-function present(...kids) { return kids.flat().filter((k) => k != null && k !== false); }
-
-function errText(e) {
-  if (e == null) return 'unknown error';
-  if (typeof e === 'string') return e;
-  return e.message || String(e);
-}
-
-function hslHex(h, s, l) {
-  s /= 100; l /= 100;
-  const f = (n) => {
-    const k = (n + h / 30) % 12;
-    const c = l - s * Math.min(l, 1 - l) * Math.max(-1, Math.min(k - 3, 9 - k, 1));
-    return Math.round(255 * c).toString(16).padStart(2, '0');
-  };
-  return `#${f(0)}${f(8)}${f(4)}`;
-}
-
-function luminance(hex) {
-  const n = parseInt(hex.slice(1), 16);
-  const c = [(n >> 16) & 255, (n >> 8) & 255, n & 255].map((v) => {
-    v /= 255;
-    return v <= 0.03928 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4;
-  });
-  return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
-}
-
-// Colours: an id that names a colour gets it; the others take hues a golden
-// angle apart. Many balls share 8 colours so they can be drawn in batches.
-function ballColours(balls) {
-  const n = balls.length;
-  const out = new Array(n);
-  let k = 0;
-  for (let i = 0; i < n; i++) {
-    const id = String(balls[i].id ?? '').toLowerCase();
-    if (n <= 200 && NAMED_COLOURS[id]) { out[i] = NAMED_COLOURS[id]; continue; }
-    const j = n > 200 ? i % 8 : k++;
-    out[i] = hslHex((j * 137.508 + 15) % 360, 68, j % 2 ? 42 : 55);
-  }
-  return out;
-}
-
-// 1, 2 or 5 times a power of ten, at least x.
-function niceCeil(x) {
-  if (!(x > 0)) return 1;
-  const p = 10 ** Math.floor(Math.log10(x));
-  for (const m of [1, 2, 2.5, 5, 10]) if (m * p >= x * (1 - 1e-12)) return m * p;
-  return 10 * p;
-}
-
-// A round axis end at least x, with less headroom than niceCeil.
-function niceAxis(x) {
-  if (!(x > 0)) return 1;
-  const p = 10 ** Math.floor(Math.log10(x));
-  for (const m of [1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10]) if (m * p >= x * (1 - 1e-12)) return m * p;
-  return 10 * p;
-}
-
-function niceStep(range, maxTicks) {
-  const raw = range / Math.max(1, maxTicks);
-  const p = 10 ** Math.floor(Math.log10(raw));
-  for (const m of [1, 2, 5, 10]) if (m * p >= raw) return m * p;
-  return 10 * p;
-}
-
-const PREFIXES = [[1e3, 'k'], [1, ''], [1e-3, 'm'], [1e-6, 'µ'], [1e-9, 'n'], [1e-12, 'p']];
-function prefixFor(maxAbs) {
-  for (const [f, p] of PREFIXES) if (maxAbs >= f * 0.9995) return [f, p];
-  return PREFIXES[PREFIXES.length - 1];
-}
-
-function tickLabel(v, step) {
-  const digits = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
-  return v.toFixed(Math.min(digits, 6));
-}
-
-// A number with an SI prefix on its unit: 0.0009 J -> "0.900000 mJ".
-function fmtSI(v, unit, digits = 6) {
-  if (!Number.isFinite(v)) return `${v} ${unit}`;
-  if (v === 0) return `0 ${unit}`;
-  const [f, p] = prefixFor(Math.abs(v));
-  return `${(v / f).toPrecision(digits)} ${p}${unit}`;
-}
-
-function fmtNum(v, digits = 5) {
-  if (!Number.isFinite(v)) return String(v);
-  if (v === 0) return '0';
-  const a = Math.abs(v);
-  if (a >= 1e5 || a < 1e-3) return v.toExponential(digits - 1);
-  return v.toPrecision(digits);
-}
-
-// Rounds a dragged coordinate to a step that suits the table's size.
-function roundTo(v, step) {
-  const r = Math.round(v / step) * step;
-  const d = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
-  return Number(r.toFixed(Math.min(d, 12)));
-}
-
-function roundSig(v, sig) {
-  if (v === 0 || !Number.isFinite(v)) return v;
-  return Number(v.toPrecision(sig));
-}
-
-// --------------------------------------------------------------- geometry
-// (of the drawing and of placing a new ball, never of the motion)
-
-function tableVertices(table) {
-  if (!table) return null;
-  if (table.shape === 'rectangle' && Array.isArray(table.min) && Array.isArray(table.max)) {
-    const [x0, y0] = table.min, [x1, y1] = table.max;
-    return [[x0, y0], [x1, y0], [x1, y1], [x0, y1]];
-  }
-  if (table.shape === 'polygon' && Array.isArray(table.vertices)) return table.vertices;
-  return null;
-}
-
-function bbox(pts) {
-  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-  for (const p of pts) {
-    if (!Array.isArray(p) || !Number.isFinite(p[0]) || !Number.isFinite(p[1])) continue;
-    x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
-    y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
-  }
-  if (!(x1 > x0)) { x0 = Number.isFinite(x0) ? x0 - 0.5 : -0.5; x1 = x0 + 1; }
-  if (!(y1 > y0)) { y0 = Number.isFinite(y0) ? y0 - 0.5 : -0.5; y1 = y0 + 1; }
-  return { x0, y0, x1, y1 };
-}
-
-function insidePolygon(x, y, vs) {
-  let inside = false;
-  for (let i = 0, j = vs.length - 1; i < vs.length; j = i++) {
-    const [xi, yi] = vs[i], [xj, yj] = vs[j];
-    if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
-  }
-  return inside;
-}
-
-function segDist(x, y, a, b) {
-  const dx = b[0] - a[0], dy = b[1] - a[1];
-  const l2 = dx * dx + dy * dy;
-  let t = l2 > 0 ? ((x - a[0]) * dx + (y - a[1]) * dy) / l2 : 0;
-  t = Math.max(0, Math.min(1, t));
-  return Math.hypot(x - a[0] - t * dx, y - a[1] - t * dy);
-}
-
-function regularPolygon(n, r, phase) {
-  const out = [];
-  for (let k = 0; k < n; k++) {
-    const a = phase + (2 * Math.PI * k) / n;
-    out.push([roundSig(r * Math.cos(a), 4) + 0, roundSig(r * Math.sin(a), 4) + 0]);
-  }
-  return out;
-}
-
-// ------------------------------------------------------------------ mount
+import { el, errText } from './lab-dom.js';
+import { ballColours } from './lab-colours.js';
+import { EMPTY_SCENARIO, clone, normalise, buildScenario, removeBallAt, setBallCount } from './lab-scenario.js';
+import { Player } from './lab-player.js';
+import { VEL_TAU, layoutTable, drawTable as paintTable } from './lab-table-drawing.js';
+import { drawEnergy as paintEnergy } from './lab-energy-graph.js';
+import { createToolbar } from './lab-toolbar.js';
+import { createStats } from './lab-stats.js';
+import { renderPhysicsPanel } from './lab-physics-panel.js';
+import { renderTablePanel } from './lab-table-panel.js';
+import { renderBallsPanel, markSelected, showBall } from './lab-balls-panel.js';
+import { attachEditor } from './lab-editor.js';
 
 export function mountLab(root, engine) {
   if (!root) throw new Error('mountLab: no root element');
@@ -254,9 +37,6 @@ export function mountLab(root, engine) {
   let setup = null;             // the scenario being edited (contract format)
   let colours = [];
   let example = null;           // name of the loaded example, if unchanged since
-  let run = null;               // the current run, see startRun()
-  let frames = 0;               // frames drawn since the last Run
-  let rafId = 0;
   let speedLog = 0;             // log10 of the speed factor
   let mode = 'move';            // drag mode: 'move' or 'velocity'
   let showTraces = true;
@@ -268,61 +48,37 @@ export function mountLab(root, engine) {
   const fieldErrors = new Map();  // input label -> message
   let initialFrame = null;      // frame(0) of the setup, for the numbers and arrows
   let validateTimer = 0;
-  let drag = null;
   let view = null;              // world -> canvas transform of the last drawing
+  let ballRows = [];            // the Balls panel's rows
   let destroyed = false;
 
-  // ---- DOM
-  const exampleBar = el('div', { id: 'lab-examples', class: 'bs-lab-examples' },
-    el('span', { class: 'bs-lab-label', text: 'Examples:' }));
-  for (const ex of EXAMPLES) {
-    exampleBar.append(el('button', {
-      type: 'button', class: 'bs-lab-example', dataset: { example: ex.name }, text: ex.name,
-      title: `load examples/lab/${ex.name}.json`, onclick: () => loadExample(ex.name),
-    }));
-  }
-
-  const runBtn = el('button', { id: 'lab-run', type: 'button', class: 'bs-lab-primary', text: 'Run', onclick: () => startRun() });
-  const pauseBtn = el('button', { id: 'lab-pause', type: 'button', text: 'Pause', disabled: true, onclick: () => togglePause() });
-  const resetBtn = el('button', { id: 'lab-reset', type: 'button', text: 'Reset', onclick: () => resetRun() });
-  const speedInput = el('input', {
-    id: 'lab-speed', type: 'range', min: '-7', max: '1', step: '0.05', value: '0',
-    title: 'simulated seconds per real second (logarithmic)',
-    oninput: () => { speedLog = Number(speedInput.value); speedOut.textContent = speedText(); },
+  const player = new Player({
+    speed: () => 10 ** speedLog,
+    frame: () => drawAll(),
+    stop: (error) => { if (error) runError = error; finish(); },
   });
-  const speedOut = el('output', { class: 'bs-lab-speed', text: '×1' });
-  const modeMove = el('input', { type: 'radio', name: 'bs-lab-mode', value: 'move', checked: true,
-    onchange: () => { mode = 'move'; } });
-  const modeVel = el('input', { type: 'radio', name: 'bs-lab-mode', value: 'velocity',
-    onchange: () => { mode = 'velocity'; } });
-  const tracesBox = el('input', { type: 'checkbox', checked: true,
-    onchange: () => { showTraces = tracesBox.checked; drawAll(); } });
-  const arrowsBox = el('input', { type: 'checkbox', checked: true,
-    onchange: () => { showArrows = arrowsBox.checked; drawAll(); } });
+  // What the panels' fields need to report their errors (lab-form.js).
+  const form = {
+    errors: fieldErrors,
+    showErrors: () => updateError(),
+    fail: (message) => { runError = message; updateError(); },
+  };
 
-  const toolbar = el('div', { class: 'bs-lab-toolbar' },
-    runBtn, pauseBtn, resetBtn,
-    el('label', { class: 'bs-lab-speedbox' }, 'speed ', speedInput, speedOut));
-  const options = el('div', { class: 'bs-lab-toolbar bs-lab-options' },
-    el('span', { class: 'bs-lab-modes', title: 'what dragging a ball does (Shift-drag always sets the velocity)' },
-      'drag: ', el('label', null, modeMove, 'move'), el('label', null, modeVel, 'velocity')),
-    el('label', null, tracesBox, 'traces'),
-    el('label', null, arrowsBox, 'arrows'));
-
+  // ---- DOM
+  const bars = createToolbar(EXAMPLES, {
+    loadExample: (name) => loadExample(name),
+    run: () => startRun(),
+    pause: () => togglePause(),
+    reset: () => resetRun(),
+    speed: (log) => { speedLog = log; },
+    mode: (m) => { mode = m; },
+    traces: (on) => { showTraces = on; drawAll(); },
+    arrows: (on) => { showArrows = on; drawAll(); },
+  });
   const errorBox = el('div', { id: 'lab-error', class: 'bs-lab-error', role: 'alert', 'aria-live': 'polite' });
   const canvas = el('canvas', { id: 'lab-canvas', class: 'bs-lab-canvas' });
   const canvasBox = el('div', { class: 'bs-lab-canvasbox' }, canvas);
-  const stat = (id, label, unit) => {
-    const b = el('b', { id, text: '–' });
-    return [el('span', { class: 'bs-lab-stat' }, el('span', { class: 'bs-lab-statlabel', text: label }), b,
-      unit ? el('span', { class: 'bs-lab-unit', text: unit }) : null), b];
-  };
-  const [tStat, tVal] = stat('lab-time', 't', '');
-  const [evStat, evVal] = stat('lab-events', 'events', '');
-  const [eStat, eVal] = stat('lab-energy-total', 'total kinetic energy', '');
-  const [pStat, pVal] = stat('lab-momentum', 'total momentum (px, py)', 'kg·m/s');
-  const stateVal = el('span', { class: 'bs-lab-state', text: 'setup' });
-  const stats = el('div', { class: 'bs-lab-stats' }, stateVal, tStat, evStat, eStat, pStat);
+  const stats = createStats();
   const hint = el('div', { class: 'bs-lab-hint' },
     'Drag a ball to move it; Shift-drag from its centre (or "drag: velocity") to set its velocity; ' +
     'drag an arrow tip to change it; double-click the table to add a ball. ' +
@@ -338,10 +94,10 @@ export function mountLab(root, engine) {
   const panel = (title, body) => el('details', { class: 'bs-lab-panel', open: true },
     el('summary', { text: title }), body);
 
-  const left = el('div', { class: 'bs-lab-left' }, toolbar, options, errorBox, canvasBox, stats, hint);
+  const left = el('div', { class: 'bs-lab-left' }, bars.toolbar, bars.options, errorBox, canvasBox, stats.element, hint);
   const right = el('div', { class: 'bs-lab-right' }, energyBox,
     panel('Physics', physicsPanel), panel('Table', tablePanel), panel('Balls', ballsPanel));
-  const container = el('div', { class: 'bs-lab' }, exampleBar, el('div', { class: 'bs-lab-main' }, left, right));
+  const container = el('div', { class: 'bs-lab' }, bars.exampleBar, el('div', { class: 'bs-lab-main' }, left, right));
   root.append(container);
 
   // ---------------------------------------------------------- the setup
@@ -355,14 +111,11 @@ export function mountLab(root, engine) {
     fieldErrors.clear();
     runError = null;
     colours = ballColours(setup.balls);
-    for (const b of exampleBar.querySelectorAll('button')) {
-      b.setAttribute('aria-pressed', String(b.dataset.example === example));
-    }
+    bars.markExample(example);
     // A run much shorter than a second plays slowed down so it lasts a few seconds.
     const T = setup.until && typeof setup.until === 'object' ? setup.until.time : null;
     speedLog = T > 0 && T < 0.2 ? Math.max(-7, Math.round(Math.log10(T / 4) * 20) / 20) : 0;
-    speedInput.value = String(speedLog);
-    speedOut.textContent = speedText();
+    bars.showSpeed(speedLog);
     renderPanels();
     validateNow();
     drawAll();
@@ -374,28 +127,11 @@ export function mountLab(root, engine) {
     loadScenario(ex.scenario, name);
   }
 
-  // Makes the editable parts present; everything else passes through.
-  function normalise(sc) {
-    if (!sc || typeof sc !== 'object' || Array.isArray(sc)) sc = {};
-    if (!sc.physics || typeof sc.physics !== 'object') sc.physics = { model: 'ideal' };
-    if (!sc.physics.model) sc.physics.model = 'ideal';
-    if (!sc.table || typeof sc.table !== 'object') sc.table = { shape: 'rectangle', min: [-0.5, -0.5], max: [0.5, 0.5] };
-    if (!Array.isArray(sc.balls)) sc.balls = [];
-    if (sc.until === undefined && sc.physics.model === 'ideal') sc.until = { time: 5 };
-    return sc;
-  }
-
-  function buildScenario() {
-    const sc = clone(setup);
-    if (Array.isArray(sc.pair_restitution) && sc.pair_restitution.length === 0) delete sc.pair_restitution;
-    return sc;
-  }
-
   // Called after every edit of the setup.
   function changed({ panels = false, colour = false } = {}) {
-    if (run) resetRun(true);
+    if (player.run) resetRun(true);
     example = null;
-    for (const b of exampleBar.querySelectorAll('button')) b.setAttribute('aria-pressed', 'false');
+    bars.markExample(example);
     if (colour) colours = ballColours(setup.balls);
     if (panels) renderPanels();
     runError = null;
@@ -419,7 +155,7 @@ export function mountLab(root, engine) {
     } else {
       let pb = null;
       try {
-        pb = engine.playback(buildScenario());
+        pb = engine.playback(buildScenario(setup));
         initialFrame = pb.frame(0);
         engineError = null;
       } catch (e) {
@@ -449,441 +185,45 @@ export function mountLab(root, engine) {
 
   // ------------------------------------------------------------ panels
 
-  function numField({ value, placeholder = '', label, required = false, onSet, cls = '' }) {
-    const inp = el('input', {
-      type: 'text', inputmode: 'decimal', spellcheck: 'false', autocomplete: 'off',
-      class: `bs-num ${cls}`, value: value == null ? '' : String(value),
-      placeholder: placeholder === '' ? '' : String(placeholder), 'aria-label': label, title: label,
-    });
-    inp.addEventListener('change', () => {
-      const s = inp.value.trim();
-      let v;
-      if (s === '') {
-        if (required) { setFieldError(inp, label, 'a number is needed'); return; }
-        v = undefined;
-      } else {
-        v = Number(s);
-        if (s.length === 0 || !Number.isFinite(v)) { setFieldError(inp, label, `"${s}" is not a number`); return; }
-      }
-      clearFieldError(inp, label);
-      try { onSet(v); } catch (e) { runError = errText(e); updateError(); }
-    });
-    return inp;
-  }
-
-  function setFieldError(inp, label, msg) {
-    inp.classList.add('bs-invalid');
-    fieldErrors.set(label, msg);
-    updateError();
-  }
-
-  function clearFieldError(inp, label) {
-    inp.classList.remove('bs-invalid');
-    if (fieldErrors.delete(label)) updateError();
-  }
-
-  function row(label, control, unit) {
-    return el('label', { class: 'bs-lab-row' }, el('span', { class: 'bs-lab-rowlabel', text: label }), control,
-      el('span', { class: 'bs-lab-unit', text: unit || '' }));
-  }
-
   function renderPanels() {
     fieldErrors.clear();
     updateError();
-    renderPhysics();
+    renderPhysicsPanel(physicsPanel, setup, form, changed);
     renderTable();
     renderBalls();
   }
 
-  function defaultFor(field) {
-    const p = setup.physics;
-    switch (field) {
-      case 'ball_ball_restitution': return p.model === 'pool' ? 0.95 : 1.0;
-      case 'ball_ball_friction': return p.model === 'pool' ? 'mu(v) fit' : 0;
-      case 'gravity': return 9.81;
-      case 'sliding_friction': return 0.2;
-      case 'rolling_friction': return 0.01;
-      case 'spinning_friction': return 0.044;
-      case 'deceleration': return `${roundSig((p.rolling_friction ?? 0.01) * (p.gravity ?? 9.81), 6)}`;
-      default: return '';
-    }
-  }
-
-  function renderPhysics() {
-    const p = setup.physics;
-    const modelSel = el('select', { id: 'lab-model', 'aria-label': 'model',
-      onchange: () => {
-        p.model = modelSel.value;
-        if (p.model === 'ideal' && (setup.until === 'rest' || setup.until === undefined)) setup.until = { time: 5 };
-        changed({ panels: true });
-      } },
-    MODELS.map((m) => el('option', { value: m, text: m })));
-    if (!MODELS.includes(p.model)) modelSel.append(el('option', { value: p.model, text: p.model }));
-    modelSel.value = p.model;
-
-    const fields = (PHYSICS_FIELDS[p.model] || []).map((f) => row(FIELD_INFO[f].label, numField({
-      value: p[f], placeholder: defaultFor(f), label: `physics.${f}`,
-      onSet: (v) => { if (v === undefined) delete p[f]; else p[f] = v; changed(); },
-    }), FIELD_INFO[f].unit));
-
-    // Cluster impacts (physics.ball_clusters, docs/scenario.md): off is
-    // the default, so unticking leaves the field out.
-    const clustersBox = el('input', { type: 'checkbox', id: 'lab-clusters', checked: p.ball_clusters === true,
-      'aria-label': 'physics.ball_clusters',
-      onchange: () => {
-        if (clustersBox.checked) p.ball_clusters = true;
-        else delete p.ball_clusters;
-        changed();
-      } });
-    const clustersRow = row('cluster impacts', clustersBox, '');
-    clustersRow.title = 'an impact on balls within 0.5 mm of each other is resolved at once with ' +
-      'Hertz contacts (a break spreads the rack); off: every impact is pairwise';
-
-    // Duration: a time, or "rest" for the models with friction.
-    const isRest = setup.until === 'rest' || (setup.until === undefined && p.model !== 'ideal');
-    const untilSel = el('select', { 'aria-label': 'run until',
-      onchange: () => {
-        if (untilSel.value === 'rest') setup.until = 'rest';
-        else setup.until = { time: Number(timeIn.value) > 0 ? Number(timeIn.value) : 5 };
-        changed({ panels: true });
-      } },
-    el('option', { value: 'time', text: 'a time' }),
-    el('option', { value: 'rest', text: 'every ball rests' }));
-    untilSel.value = isRest ? 'rest' : 'time';
-    const timeIn = numField({
-      value: !isRest && setup.until && typeof setup.until === 'object' ? setup.until.time : '',
-      placeholder: 5, label: 'until.time', required: true,
-      onSet: (v) => { setup.until = { time: v }; changed(); },
-    });
-    if (isRest) timeIn.disabled = true;
-
-    physicsPanel.replaceChildren(...present(
-      row('model', modelSel, ''),
-      ...fields,
-      clustersRow,
-      row('run until', untilSel, ''),
-      isRest ? null : row('time', timeIn, 's'),
-      el('div', { class: 'bs-lab-note', text: 'Blank fields take the engine\'s documented default (shown in grey).' })));
-  }
-
-  function presets() {
-    const list = [];
-    for (const ex of EXAMPLES) {
-      const t = ex.scenario && ex.scenario.table;
-      if (t && t.shape === 'polygon' && Array.isArray(t.vertices)) {
-        const name = /star/.test(ex.name) ? 'star' : /l_shape/.test(ex.name) ? 'L shape' : ex.name;
-        list.push({ name: `${name} (${ex.name})`, vertices: t.vertices });
-      }
-    }
-    const bb = bbox(tableVertices(setup.table) || [[-0.5, -0.5], [0.5, 0.5]]);
-    const r = Math.min(bb.x1 - bb.x0, bb.y1 - bb.y0) / 2;
-    const cx = (bb.x0 + bb.x1) / 2, cy = (bb.y0 + bb.y1) / 2;
-    const shift = (vs) => vs.map(([x, y]) => [roundSig(x + cx, 6) + 0, roundSig(y + cy, 6) + 0]);
-    list.push({ name: 'triangle', vertices: shift(regularPolygon(3, r, Math.PI / 2)) });
-    list.push({ name: 'hexagon', vertices: shift(regularPolygon(6, r, 0)) });
-    list.push({ name: 'octagon', vertices: shift(regularPolygon(8, r, Math.PI / 8)) });
-    list.push({ name: 'box (current bounds)', vertices: [[bb.x0, bb.y0], [bb.x1, bb.y0], [bb.x1, bb.y1], [bb.x0, bb.y1]] });
-    return list;
-  }
-
   function renderTable() {
-    const t = setup.table;
-    const shapeSel = el('select', { id: 'lab-shape', 'aria-label': 'table shape',
-      onchange: () => {
-        const vs = tableVertices(t);
-        const keep = { ...t };
-        delete keep.shape; delete keep.min; delete keep.max; delete keep.vertices; delete keep.size;
-        if (shapeSel.value === 'polygon') {
-          setup.table = { shape: 'polygon', vertices: clone(vs || [[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]), ...keep };
-        } else {
-          const bb = bbox(vs || [[-0.5, -0.5], [0.5, 0.5]]);
-          setup.table = { shape: 'rectangle', min: [bb.x0, bb.y0], max: [bb.x1, bb.y1], ...keep };
-        }
-        changed({ panels: true });
-      } },
-    el('option', { value: 'rectangle', text: 'box (rectangle)' }),
-    el('option', { value: 'polygon', text: 'polygon' }));
-    const supported = t.shape === 'rectangle' || t.shape === 'polygon';
-    if (!supported) shapeSel.append(el('option', { value: t.shape, text: String(t.shape) }));
-    shapeSel.value = t.shape;
-
-    const parts = [row('shape', shapeSel, '')];
-    if (t.shape === 'rectangle') {
-      if (!Array.isArray(t.min)) t.min = [-0.5, -0.5];
-      if (!Array.isArray(t.max)) t.max = [0.5, 0.5];
-      const setSize = (axis, v) => {
-        const c = (t.min[axis] + t.max[axis]) / 2;
-        t.min[axis] = roundSig(c - v / 2, 12) + 0;
-        t.max[axis] = roundSig(c + v / 2, 12) + 0;
-        changed({ panels: true });
-      };
-      const positive = (label, axis) => numField({
-        value: roundSig(t.max[axis] - t.min[axis], 12), label, required: true,
-        onSet: (v) => { if (!(v > 0)) throw new Error(`${label} must be above 0`); setSize(axis, v); },
-      });
-      parts.push(row('width', positive('table width', 0), 'm'));
-      parts.push(row('height', positive('table height', 1), 'm'));
-      parts.push(el('div', { class: 'bs-lab-note',
-        text: `from (${t.min[0]}, ${t.min[1]}) to (${t.max[0]}, ${t.max[1]}); resizing keeps the centre` }));
-    } else if (t.shape === 'polygon') {
-      if (!Array.isArray(t.vertices)) t.vertices = [];
-      const presetSel = el('select', { 'aria-label': 'polygon preset',
-        onchange: () => {
-          const p = presets().find((q) => q.name === presetSel.value);
-          if (p) { t.vertices = clone(p.vertices); changed({ panels: true }); }
-        } },
-      el('option', { value: '', text: 'preset…' }),
-      presets().map((p) => el('option', { value: p.name, text: p.name })));
-      parts.push(row('preset', presetSel, ''));
-      const list = el('table', { class: 'bs-lab-grid bs-lab-vertices' },
-        el('thead', null, el('tr', null, el('th', { text: '#' }), el('th', { text: 'x (m)' }), el('th', { text: 'y (m)' }), el('th'))));
-      const body = el('tbody');
-      t.vertices.forEach((v, k) => {
-        body.append(el('tr', null,
-          el('td', { class: 'bs-lab-idx', text: String(k) }),
-          el('td', null, numField({ value: v[0], required: true, label: `table.vertices[${k}] x`,
-            onSet: (x) => { v[0] = x; changed(); } })),
-          el('td', null, numField({ value: v[1], required: true, label: `table.vertices[${k}] y`,
-            onSet: (y) => { v[1] = y; changed(); } })),
-          el('td', null, el('button', { type: 'button', class: 'bs-lab-x', title: `remove vertex ${k}`, text: '×',
-            disabled: t.vertices.length <= 3,
-            onclick: () => { t.vertices.splice(k, 1); changed({ panels: true }); } }))));
-      });
-      list.append(body);
-      parts.push(list);
-      parts.push(el('button', { type: 'button', text: '+ vertex', title: 'add a vertex halfway along the last edge',
-        onclick: () => {
-          const vs = t.vertices;
-          if (vs.length === 0) { vs.push([0, 0]); } else {
-            const a = vs[vs.length - 1], b = vs[0];
-            vs.push([roundSig((a[0] + b[0]) / 2, 8) + 0, roundSig((a[1] + b[1]) / 2, 8) + 0]);
-          }
-          changed({ panels: true });
-        } }));
-      parts.push(el('div', { class: 'bs-lab-note', text: 'Vertices in either order; drag the white handles on the table to move them.' }));
-    } else {
-      parts.push(el('div', { class: 'bs-lab-note', text: `The lab edits boxes and polygons; this "${t.shape}" table is sent to the engine as it is and not drawn.` }));
-    }
-    tablePanel.replaceChildren(...present(parts));
+    renderTablePanel(tablePanel, setup, EXAMPLES, form, changed);
   }
-
-  function wallDefault() {
-    if (setup.table && typeof setup.table.cushion_restitution === 'number') return setup.table.cushion_restitution;
-    return setup.physics.model === 'pool' ? 0.75 : 1.0;
-  }
-
-  let rowRefs = [];   // per shown ball row: {x, y, vx, vy, tr}
 
   function renderBalls() {
-    const balls = setup.balls;
-    const n = balls.length;
-    const countIn = numField({ value: n, label: 'ball count', required: true,
-      onSet: (v) => {
-        if (!Number.isInteger(v) || v < 0 || v > 5000) throw new Error('ball count: a whole number from 0 to 5000');
-        setCount(v);
-      } });
-    countIn.id = 'lab-count';
-    countIn.classList.add('bs-short');
-    const head = el('div', { class: 'bs-lab-ballhead' },
-      row('count', countIn, ''),
-      el('button', { type: 'button', text: '+ ball', onclick: () => { addBall(); changed({ panels: true, colour: true }); } }));
-
-    const cols = [['', ''], ['id', ''], ['x', 'm'], ['y', 'm'], ['vx', 'm/s'], ['vy', 'm/s'],
-      ['radius', 'm'], ['mass', 'kg'], ['wall e', ''], ['', '']];
-    const table = el('table', { class: 'bs-lab-grid bs-lab-balls', id: 'lab-balls' },
-      el('thead', null, el('tr', null, cols.map(([c, u]) => el('th', { title: u ? `${c} (${u})` : c },
-        c, u ? el('span', { class: 'bs-lab-unit', text: ` ${u}` }) : null)))));
-    const body = el('tbody');
-    rowRefs = [];
-    const shown = showAllRows ? n : Math.min(n, TABLE_ROWS);
-    const wd = wallDefault();
-    for (let i = 0; i < shown; i++) {
-      const b = balls[i];
-      const name = `balls[${i}]`;
-      const idIn = el('input', { type: 'text', class: 'bs-id', value: b.id ?? '', 'aria-label': `${name}.id`, spellcheck: 'false' });
-      idIn.addEventListener('change', () => {
-        const old = b.id;
-        b.id = idIn.value;
-        for (const pr of setup.pair_restitution || []) {
-          if (Array.isArray(pr.balls)) pr.balls = pr.balls.map((x) => (x === old ? b.id : x));
-        }
-        changed({ panels: true, colour: true });
-      });
-      const pos = () => { if (!Array.isArray(b.position)) b.position = [0, 0]; return b.position; };
-      const vel = () => { if (!Array.isArray(b.velocity)) b.velocity = [0, 0]; return b.velocity; };
-      const x = numField({ value: b.position?.[0], required: true, label: `${name}.position x`, onSet: (v) => { pos()[0] = v; changed(); } });
-      const y = numField({ value: b.position?.[1], required: true, label: `${name}.position y`, onSet: (v) => { pos()[1] = v; changed(); } });
-      const vx = numField({ value: b.velocity?.[0], placeholder: 0, label: `${name}.velocity x`, onSet: (v) => { vel()[0] = v ?? 0; changed(); } });
-      const vy = numField({ value: b.velocity?.[1], placeholder: 0, label: `${name}.velocity y`, onSet: (v) => { vel()[1] = v ?? 0; changed(); } });
-      const opt = (key, def) => numField({ value: b[key], placeholder: def, label: `${name}.${key}`,
-        onSet: (v) => { if (v === undefined) delete b[key]; else b[key] = v; changed(); } });
-      const tr = el('tr', { class: i === selected ? 'bs-selected' : '', onclick: () => select(i) },
-        el('td', null, el('span', { class: 'bs-swatch', style: `background:${colours[i]}` })),
-        el('td', null, idIn), el('td', null, x), el('td', null, y), el('td', null, vx), el('td', null, vy),
-        el('td', null, opt('radius', DEFAULT_RADIUS)), el('td', null, opt('mass', DEFAULT_MASS)),
-        el('td', null, opt('wall_restitution', wd)),
-        el('td', null, el('button', { type: 'button', class: 'bs-lab-x', text: '×', title: `remove ball ${b.id}`,
-          onclick: (e) => { e.stopPropagation(); removeBall(i); } })));
-      rowRefs.push({ x, y, vx, vy, tr });
-      body.append(tr);
-    }
-    table.append(body);
-    const more = n > shown
-      ? el('button', { type: 'button', class: 'bs-lab-more', text: `show all ${n} balls (${n - shown} more rows)`,
-        onclick: () => { showAllRows = true; renderBalls(); } })
-      : null;
-
-    // Pair restitution: overrides of the ball-ball restitution.
-    const pairs = setup.pair_restitution || [];
-    const pairList = el('datalist', { id: 'bs-lab-ids' },
-      balls.slice(0, 200).map((b) => el('option', { value: String(b.id) })));
-    const pairRows = pairs.map((pr, k) => {
-      const idField = (j) => {
-        const inp = el('input', { type: 'text', class: 'bs-id', list: 'bs-lab-ids', value: pr.balls?.[j] ?? '',
-          'aria-label': `pair_restitution[${k}].balls[${j}]` });
-        inp.addEventListener('change', () => {
-          if (!Array.isArray(pr.balls)) pr.balls = ['', ''];
-          pr.balls[j] = inp.value; changed();
-        });
-        return inp;
-      };
-      return el('div', { class: 'bs-lab-pair' }, idField(0), '–', idField(1), ' e ',
-        numField({ value: pr.restitution, required: true, label: `pair_restitution[${k}].restitution`,
-          onSet: (v) => { pr.restitution = v; changed(); } }),
-        el('button', { type: 'button', class: 'bs-lab-x', text: '×', title: 'remove this pair',
-          onclick: () => { pairs.splice(k, 1); changed({ panels: true }); } }));
+    ballRows = renderBallsPanel(ballsPanel, setup, { colours, selected, showAllRows }, form, {
+      changed, select, removeBall, setCount,
+      showAll: () => { showAllRows = true; renderBalls(); },
     });
-    const addPair = el('button', { type: 'button', text: '+ pair restitution',
-      onclick: () => {
-        if (!setup.pair_restitution) setup.pair_restitution = [];
-        setup.pair_restitution.push({ balls: [balls[0]?.id ?? '', balls[1]?.id ?? ''],
-          restitution: setup.physics.ball_ball_restitution ?? defaultFor('ball_ball_restitution') });
-        changed({ panels: true });
-      } });
-
-    ballsPanel.replaceChildren(...present(head, el('div', { class: 'bs-lab-tablewrap' }, table), more,
-      el('div', { class: 'bs-lab-sub', text: 'Pair restitution (overrides the ball-ball restitution for two balls)' }),
-      pairList, ...pairRows, addPair,
-      el('div', { class: 'bs-lab-note', text: `Blank radius, mass and wall e take the defaults ${DEFAULT_RADIUS} m, ${DEFAULT_MASS} kg and ${wd}.` })));
   }
 
   function select(i) {
     if (selected === i) return;
-    const old = rowRefs[selected];
-    if (old) old.tr.classList.remove('bs-selected');
+    markSelected(ballRows, selected, i);
     selected = i;
-    const cur = rowRefs[i];
-    if (cur) cur.tr.classList.add('bs-selected');
     drawAll();
   }
 
-  function radiusOf(b) { return Number.isFinite(b.radius) && b.radius > 0 ? b.radius : DEFAULT_RADIUS; }
-
-  function uniqueId() {
-    const ids = new Set(setup.balls.map((b) => String(b.id)));
-    for (let k = setup.balls.length + 1; ; k++) if (!ids.has(`b${k}`)) return `b${k}`;
-  }
-
-  // Spots inside the table clear of the walls, of the other balls and of
-  // each other, nearest the table's centre first (geometry only).
-  function freeSpots(r, count) {
-    const vs = tableVertices(setup.table);
-    const bb = bbox(vs || [[-0.5, -0.5], [0.5, 0.5]]);
-    const gap = r * 0.2;
-    const step = Math.max(2 * r + gap, Math.min(bb.x1 - bb.x0, bb.y1 - bb.y0) / 60);
-    const cx = (bb.x0 + bb.x1) / 2, cy = (bb.y0 + bb.y1) / 2;
-    const cands = [];
-    for (let x = bb.x0 + r + gap; x <= bb.x1 - r - gap; x += step) {
-      for (let y = bb.y0 + r + gap; y <= bb.y1 - r - gap; y += step) cands.push([x, y]);
-    }
-    cands.sort((a, b) => Math.hypot(a[0] - cx, a[1] - cy) - Math.hypot(b[0] - cx, b[1] - cy));
-    const taken = [];
-    for (const b of setup.balls) {
-      if (Array.isArray(b.position)) taken.push([b.position[0], b.position[1], radiusOf(b)]);
-    }
-    const out = [];
-    for (const [x, y] of cands) {
-      if (out.length >= count) break;
-      if (vs && !fits(x, y, r + gap, vs)) continue;
-      let clear = true;
-      for (const [bx, by, br] of taken) {
-        if (Math.hypot(bx - x, by - y) < r + br + gap) { clear = false; break; }
-      }
-      if (!clear) continue;
-      out.push([x, y]);
-      taken.push([x, y, r]);
-    }
-    while (out.length < count) out.push([cx, cy]);  // no room: the engine will say so
-    return out;
-  }
-
-  function fits(x, y, r, vs) {
-    if (!insidePolygon(x, y, vs)) return false;
-    for (let k = 0; k < vs.length; k++) if (segDist(x, y, vs[k], vs[(k + 1) % vs.length]) < r) return false;
-    return true;
-  }
-
-  // Adds `count` balls like the last one, at rest, at the given point or in free spots.
-  function addBalls(count, at) {
-    const last = setup.balls[setup.balls.length - 1];
-    const proto = {};
-    if (last && last.radius !== undefined) proto.radius = last.radius;
-    if (last && last.mass !== undefined) proto.mass = last.mass;
-    const r = radiusOf(proto);
-    const step = posStep(bbox(tableVertices(setup.table) || [[-0.5, -0.5], [0.5, 0.5]]));
-    const spots = at ? [at] : freeSpots(r, count);
-    const added = [];
-    for (const p of spots) {
-      const b = { id: uniqueId(), position: [roundTo(p[0], step), roundTo(p[1], step)], velocity: [0, 0], ...proto };
-      setup.balls.push(b);
-      added.push(b);
-    }
-    return added;
-  }
-
-  function addBall(at) { return addBalls(1, at)[0]; }
-
   function removeBall(i) {
-    const [b] = setup.balls.splice(i, 1);
-    if (setup.pair_restitution && b) {
-      setup.pair_restitution = setup.pair_restitution.filter((pr) => !(Array.isArray(pr.balls) && pr.balls.includes(b.id)));
-    }
+    removeBallAt(setup, i);
     if (selected === i) selected = -1; else if (selected > i) selected--;
     changed({ panels: true, colour: true });
   }
 
   function setCount(n) {
-    const balls = setup.balls;
-    while (balls.length > n) {
-      const b = balls.pop();
-      if (setup.pair_restitution) {
-        setup.pair_restitution = setup.pair_restitution.filter((pr) => !(Array.isArray(pr.balls) && pr.balls.includes(b.id)));
-      }
-    }
-    if (balls.length < n) addBalls(n - balls.length);
+    setBallCount(setup, n);
     if (selected >= n) selected = -1;
     changed({ panels: true, colour: true });
   }
 
-  function posStep(bb) {
-    const size = Math.max(bb.x1 - bb.x0, bb.y1 - bb.y0);
-    return 10 ** Math.floor(Math.log10(size / 2000));
-  }
-
   // ---------------------------------------------------------------- runs
-
-  function speed() { return 10 ** speedLog; }
-
-  function speedText() {
-    const s = speed();
-    return `×${s >= 1 ? roundSig(s, 3) : s.toPrecision(2).replace(/\.?0+e/, 'e')}`;
-  }
-
-  function untilOf(sc) {
-    if (sc.until === 'rest') return { T: null, rest: true };
-    if (sc.until && typeof sc.until === 'object' && Number.isFinite(sc.until.time)) return { T: sc.until.time, rest: false };
-    return { T: null, rest: sc.physics && sc.physics.model !== 'ideal' };
-  }
 
   function startRun() {
     try {
@@ -891,7 +231,7 @@ export function mountLab(root, engine) {
       runError = null;
       if (fieldErrors.size) { updateError(); return; }
       if (!engine || typeof engine.playback !== 'function') { engineError = 'the engine is not loaded'; updateError(); return; }
-      const sc = buildScenario();
+      const sc = buildScenario(setup);
       let pb;
       try {
         pb = engine.playback(sc);
@@ -902,228 +242,50 @@ export function mountLab(root, engine) {
         return;
       }
       engineError = null;
-      const n = sc.balls.length;
-      let ahead = null;
-      if (n <= TRACE_LIMIT) {
-        try { ahead = engine.playback(sc); } catch (e) { ahead = null; }
-      }
-      const { T, rest } = untilOf(sc);
-      run = {
-        pb, ahead, sc, n, T, rest, pool: sc.physics.model === 'pool',
-        t: 0, sampled: -Infinity, last: null, paused: false, done: false,
-        frame: null, aheadEvents: 0,
-        traces: n <= TRACE_LIMIT ? Array.from({ length: n }, () => []) : null,
-        hist: { t: [], E: [], e: n <= TRACE_LIMIT ? Array.from({ length: n }, () => []) : null },
-        eMax: 0, pRef: 0, pSys: 0,
-      };
-      frames = 0;
-      const f0 = sample(0);
-      run.frame = f0;
-      run.t = 0;
-      setMomentumScale(f0);
+      const f0 = player.begin(engine, pb, sc);
       updateError();
       updateButtons();
       drawAll();
-      if (rest && f0.at_rest) { finish(); return; }
-      rafId = requestAnimationFrame(tick);
+      if (player.run.rest && f0.at_rest) { finish(); return; }
+      player.play();
     } catch (e) {
       runError = `run failed: ${errText(e)}`;
       finish();
     }
   }
 
-  function setMomentumScale(f) {
-    let m = 0;
-    for (const b of f.balls) m = Math.max(m, Math.hypot(b[6], b[7]));
-    run.pRef = m > 0 ? niceCeil(m) : 0;
-    const P = Math.hypot(f.momentum[0], f.momentum[1]);
-    run.pSys = Math.max(run.n <= TRACE_LIMIT ? run.pRef : 0, P > 0 ? niceCeil(P) : 0);
-  }
-
-  function sample(t) {
-    const f = run.pb.frame(t);
-    run.sampled = t;
-    const h = run.hist;
-    h.t.push(f.t ?? t);
-    h.E.push(f.energy);
-    let eMax = Math.max(run.eMax, f.energy);
-    if (h.e) {
-      for (let i = 0; i < run.n; i++) {
-        const e = f.balls[i][5];
-        h.e[i].push(e);
-        if (e > eMax) eMax = e;
-      }
-    }
-    run.eMax = eMax;
-    if (run.traces) {
-      for (let i = 0; i < run.n; i++) {
-        const b = f.balls[i];
-        if (b[2]) run.traces[i].push(b[0], b[1]);
-      }
-    }
-    if (h.t.length > MAX_POINTS) thin();
-    return f;
-  }
-
-  function thin() {
-    const h = run.hist;
-    const keep = (a) => a.filter((_, k) => k % 2 === 0 || k === a.length - 1);
-    h.t = keep(h.t); h.E = keep(h.E);
-    if (h.e) h.e = h.e.map(keep);
-    if (run.traces) {
-      run.traces = run.traces.map((tr) => {
-        if (tr.length <= 2 * MAX_POINTS) return tr;
-        const out = [];
-        for (let k = 0; k < tr.length; k += 4) out.push(tr[k], tr[k + 1]);
-        out.push(tr[tr.length - 2], tr[tr.length - 1]);
-        return out;
-      });
-    }
-  }
-
-  // Moves the run to `target`, sampling just before and at every event on
-  // the way (found by the look-ahead playback) so that traces turn exactly
-  // at the collisions and the energy graph jumps where the energy does.
-  function advance(target) {
-    const times = [];
-    if (run.ahead) {
-      const fa = run.ahead.frame(target);
-      if (fa.events > run.aheadEvents) {
-        if (fa.events - run.aheadEvents <= MAX_EVENT_SAMPLES) {
-          const reply = run.ahead.events(run.aheadEvents);
-          const evs = Array.isArray(reply) ? reply : (reply && reply.events) || [];
-          for (const ev of evs) {
-            const te = ev && ev.time;
-            if (Number.isFinite(te) && te > run.t && te <= target && !(times.length && te <= times[times.length - 1])) {
-              times.push(te);
-            }
-          }
-        }
-        run.aheadEvents = fa.events;
-      }
-    }
-    const list = [];
-    const push = (t) => { if (t > (list.length ? list[list.length - 1] : run.sampled)) list.push(t); };
-    if (run.pool && run.traces) {
-      // Curved paths: a few evenly spaced points between frames too.
-      const steps = 3;
-      const t0 = run.t;
-      let k = 0;
-      for (let s = 1; s < steps; s++) {
-        const ts = t0 + ((target - t0) * s) / steps;
-        while (k < times.length && times[k] <= ts) { push(times[k] - Math.abs(times[k]) * 1e-12); push(times[k]); k++; }
-        push(ts);
-      }
-      while (k < times.length) { push(times[k] - Math.abs(times[k]) * 1e-12); push(times[k]); k++; }
-    } else {
-      for (const te of times) { push(te - Math.abs(te) * 1e-12); push(te); }
-    }
-    push(target);
-    let f = run.frame;
-    for (const t of list) f = sample(t);
-    run.frame = f;
-    run.t = target;
-    if (run.pRef === 0 || run.pSys === 0) setMomentumScale(f);
-    const P = Math.hypot(f.momentum[0], f.momentum[1]);
-    if (P > run.pSys) run.pSys = niceCeil(P);
-  }
-
-  function tick(now) {
-    rafId = 0;
-    if (destroyed || !run || run.paused || run.done) return;
-    try {
-      if (run.last == null) run.last = now;
-      const dt = Math.min(Math.max(now - run.last, 0), 100) / 1000;
-      run.last = now;
-      let target = run.t + dt * speed();
-      if (run.T != null && target >= run.T) target = run.T;
-      if (target > run.t) advance(target);
-      if (run.frame && run.frame.complete === false) {
-        runError = `The run stopped at the max_events guard, after ${run.frame.events} events, at t = ${fmtSI(run.frame.t ?? run.t, 's', 6)}.`;
-        finish();
-      } else if (run.T != null && run.t >= run.T) finish();
-      else if (run.rest && run.frame && run.frame.at_rest) finish();
-    } catch (e) {
-      runError = `The engine stopped: ${errText(e)}`;
-      finish();
-    }
-    frames++;
-    drawAll();
-    if (run && !run.done && !run.paused) rafId = requestAnimationFrame(tick);
-  }
-
   function finish() {
-    if (!run) { updateButtons(); updateError(); return; }
-    run.done = true;
-    freePlaybacks();
-    if (rafId) { cancelAnimationFrame(rafId); rafId = 0; }
+    if (!player.finish()) { updateButtons(); updateError(); return; }
     updateButtons();
     updateError();
     drawAll();
   }
 
-  function freePlaybacks() {
-    if (!run) return;
-    for (const k of ['pb', 'ahead']) {
-      if (run[k]) { try { run[k].free(); } catch (e) { /* ignore */ } run[k] = null; }
-    }
-  }
-
   function togglePause() {
-    if (!run || run.done) return;
-    run.paused = !run.paused;
-    run.last = null;
-    if (!run.paused && !rafId) rafId = requestAnimationFrame(tick);
+    if (!player.togglePause()) return;
     updateButtons();
     drawAll();
   }
 
   // Back to the setup. `quiet` skips the redraw (the caller draws).
   function resetRun(quiet) {
-    if (rafId) { cancelAnimationFrame(rafId); rafId = 0; }
-    if (run) { freePlaybacks(); run = null; }
-    frames = 0;
+    player.reset();
     if (!quiet) { runError = null; updateError(); }
     updateButtons();
     if (!quiet) drawAll();
   }
 
   function updateButtons() {
-    const active = !!run && !run.done;
-    pauseBtn.disabled = !active;
-    pauseBtn.textContent = run && run.paused ? 'Resume' : 'Pause';
-    runBtn.textContent = run ? 'Run again' : 'Run';
-    stateVal.textContent = !run ? 'setup' : run.done ? 'finished' : run.paused ? 'paused' : 'running';
-    stateVal.dataset.state = stateVal.textContent;
+    bars.showRun(player.run);
+    stats.showState(player.run);
   }
 
   function updateStats() {
-    const f = run ? run.frame : initialFrame;
-    const t = run ? run.t : 0;
-    tVal.textContent = fmtSI(t, 's', 6);
-    if (f) {
-      evVal.textContent = String(f.events);
-      eVal.textContent = fmtSI(f.energy, 'J', 6);
-      pVal.textContent = `(${fmtNum(f.momentum[0], 6)}, ${fmtNum(f.momentum[1], 6)})`;
-    } else {
-      evVal.textContent = '–'; eVal.textContent = '–'; pVal.textContent = '–';
-    }
+    const run = player.run;
+    stats.show(run ? run.frame : initialFrame, run ? run.t : 0);
   }
 
   // ------------------------------------------------------------- drawing
-
-  function fitCanvas(c, cssW, cssH) {
-    const dpr = window.devicePixelRatio || 1;
-    const w = Math.max(1, Math.round(cssW)), h = Math.max(1, Math.round(cssH));
-    if (c.width !== Math.round(w * dpr) || c.height !== Math.round(h * dpr)) {
-      c.width = Math.round(w * dpr);
-      c.height = Math.round(h * dpr);
-    }
-    c.style.height = `${h}px`;
-    const ctx = c.getContext('2d');
-    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    return { ctx, w, h };
-  }
 
   function drawAll() {
     if (destroyed || !setup) return;
@@ -1137,670 +299,49 @@ export function mountLab(root, engine) {
     }
   }
 
-  function computeView(w, h, bb) {
-    const pad = 22;
-    const aw = Math.max(10, w - STRIP - 2 * pad), ah = Math.max(10, h - 2 * pad);
-    const s = Math.min(aw / (bb.x1 - bb.x0), ah / (bb.y1 - bb.y0));
-    const ox = pad + (aw - s * (bb.x1 - bb.x0)) / 2 - s * bb.x0;
-    const oy = pad + (ah - s * (bb.y1 - bb.y0)) / 2 + s * bb.y1;
-    return { s, ox, oy, X: (x) => ox + s * x, Y: (y) => oy - s * y };
+  // The drawing's inputs, as plain data.
+  function scene() {
+    return { setup, run: player.run, colours, selected, showTraces, showArrows, drag: editor.drag(), initialFrame };
   }
 
   function drawTable() {
     const cssW = canvasBox.clientWidth;
     if (!cssW) return;
-    const vs = tableVertices(setup.table);
-    const bb = bbox(vs || setup.balls.map((b) => b.position || [0, 0]));
-    const aspect = (bb.y1 - bb.y0) / (bb.x1 - bb.x0);
-    const cssH = Math.max(240, Math.min(560, (cssW - STRIP - 44) * aspect + 44));
-    const { ctx, w, h } = fitCanvas(canvas, cssW, cssH);
-    const v = computeView(w, h, bb);
+    const { ctx, w, h, view: v } = layoutTable(canvas, cssW, setup);
     view = v;
-    ctx.clearRect(0, 0, w, h);
-    ctx.fillStyle = RAIL;
-    ctx.fillRect(0, 0, w, h);
-
-    if (vs && vs.length >= 3) {
-      ctx.beginPath();
-      vs.forEach((p, k) => (k ? ctx.lineTo(v.X(p[0]), v.Y(p[1])) : ctx.moveTo(v.X(p[0]), v.Y(p[1]))));
-      ctx.closePath();
-      ctx.fillStyle = FELT;
-      ctx.fill();
-      ctx.lineWidth = 2;
-      ctx.strokeStyle = '#c9d3da';
-      ctx.lineJoin = 'round';
-      ctx.stroke();
-    }
-    const inSetup = !run;
-    if (inSetup && setup.table.shape === 'polygon' && vs) {
-      ctx.fillStyle = '#ffffff';
-      ctx.strokeStyle = '#222';
-      ctx.lineWidth = 1;
-      for (const p of vs) {
-        ctx.beginPath();
-        ctx.rect(v.X(p[0]) - 3.5, v.Y(p[1]) - 3.5, 7, 7);
-        ctx.fill(); ctx.stroke();
-      }
-    }
-
-    const n = run ? run.n : setup.balls.length;
-    const radii = (run ? run.sc.balls : setup.balls).map(radiusOf);
-
-    // traces
-    if (run && run.traces && showTraces) {
-      ctx.lineJoin = 'round';
-      ctx.lineCap = 'round';
-      for (let i = 0; i < n; i++) {
-        const tr = run.traces[i];
-        if (tr.length < 4) continue;
-        ctx.beginPath();
-        ctx.moveTo(v.X(tr[0]), v.Y(tr[1]));
-        for (let k = 2; k < tr.length; k += 2) ctx.lineTo(v.X(tr[k]), v.Y(tr[k + 1]));
-        ctx.strokeStyle = colours[i];
-        ctx.globalAlpha = 0.9;
-        ctx.lineWidth = 1.6;
-        ctx.stroke();
-        ctx.globalAlpha = 1;
-      }
-    }
-
-    // balls
-    const pos = (i) => {
-      if (run && run.frame) { const b = run.frame.balls[i]; return b[2] ? [b[0], b[1]] : null; }
-      const p = setup.balls[i].position;
-      return Array.isArray(p) && Number.isFinite(p[0]) && Number.isFinite(p[1]) ? p : null;
-    };
-    if (n > 200) {
-      const groups = new Map();
-      for (let i = 0; i < n; i++) {
-        if (!groups.has(colours[i])) groups.set(colours[i], []);
-        groups.get(colours[i]).push(i);
-      }
-      for (const [c, idx] of groups) {
-        ctx.beginPath();
-        for (const i of idx) {
-          const p = pos(i);
-          if (!p) continue;
-          const x = v.X(p[0]), y = v.Y(p[1]), r = Math.max(1.2, radii[i] * v.s);
-          ctx.moveTo(x + r, y);
-          ctx.arc(x, y, r, 0, 2 * Math.PI);
-        }
-        ctx.fillStyle = c;
-        ctx.fill();
-      }
-    } else {
-      for (let i = 0; i < n; i++) {
-        const p = pos(i);
-        if (!p) continue;
-        const x = v.X(p[0]), y = v.Y(p[1]), r = Math.max(1.5, radii[i] * v.s);
-        ctx.beginPath();
-        ctx.arc(x, y, r, 0, 2 * Math.PI);
-        ctx.fillStyle = colours[i];
-        ctx.fill();
-        ctx.lineWidth = i === selected && inSetup ? 2.5 : 1;
-        ctx.strokeStyle = i === selected && inSetup ? '#ffe14d' : (luminance(colours[i]) < 0.2 ? '#d0d6db' : '#15191d');
-        ctx.stroke();
-      }
-      if (n <= 12) {
-        ctx.font = '11px system-ui, sans-serif';
-        ctx.textBaseline = 'bottom';
-        for (let i = 0; i < n; i++) {
-          const p = pos(i);
-          if (!p) continue;
-          const r = Math.max(1.5, radii[i] * v.s);
-          const label = String((run ? run.sc : setup).balls[i].id ?? i);
-          const x = v.X(p[0]) + r * 0.75 + 2, y = v.Y(p[1]) - r * 0.75 - 1;
-          ctx.lineWidth = 3;
-          ctx.strokeStyle = 'rgba(0,0,0,0.6)';
-          ctx.strokeText(label, x, y);
-          ctx.fillStyle = '#ffffff';
-          ctx.fillText(label, x, y);
-        }
-      }
-    }
-
-    // arrows
-    if (showArrows) {
-      if (inSetup) drawVelocityArrows(ctx, v, n, radii);
-      else drawMomentumArrows(ctx, v, n, radii);
-    }
-    if (drag && drag.kind === 'velocity') drawVelocityArrow(ctx, v, drag.i, true);
-
-    drawStrip(ctx, w, h);
-  }
-
-  function arrow(ctx, x0, y0, x1, y1, colour, width, head) {
-    const dx = x1 - x0, dy = y1 - y0;
-    const L = Math.hypot(dx, dy);
-    if (L < 0.5) return;
-    const hl = Math.min(head, L * 0.6);
-    const ux = dx / L, uy = dy / L;
-    const bx = x1 - ux * hl, by = y1 - uy * hl;
-    const path = () => {
-      ctx.beginPath();
-      ctx.moveTo(x0, y0);
-      ctx.lineTo(bx, by);
-      ctx.moveTo(x1, y1);
-      ctx.lineTo(bx - uy * hl * 0.5, by + ux * hl * 0.5);
-      ctx.lineTo(bx + uy * hl * 0.5, by - ux * hl * 0.5);
-      ctx.closePath();
-    };
-    ctx.lineCap = 'round';
-    ctx.lineJoin = 'round';
-    path();
-    ctx.lineWidth = width + 2.5;
-    ctx.strokeStyle = luminance(colour) < 0.2 ? 'rgba(255,255,255,0.8)' : 'rgba(0,0,0,0.7)';
-    ctx.stroke();
-    ctx.fillStyle = ctx.strokeStyle;
-    ctx.fill();
-    path();
-    ctx.lineWidth = width;
-    ctx.strokeStyle = colour;
-    ctx.stroke();
-    ctx.fillStyle = colour;
-    ctx.fill();
-  }
-
-  function velocityTip(v, i) {
-    const b = setup.balls[i];
-    const p = b.position, vel = Array.isArray(b.velocity) ? b.velocity : [0, 0];
-    if (!Array.isArray(p)) return null;
-    return [v.X(p[0] + vel[0] * VEL_TAU), v.Y(p[1] + vel[1] * VEL_TAU), v.X(p[0]), v.Y(p[1])];
-  }
-
-  function drawVelocityArrow(ctx, v, i, active) {
-    const tip = velocityTip(v, i);
-    if (!tip) return;
-    const [x1, y1, x0, y0] = tip;
-    if (Math.hypot(x1 - x0, y1 - y0) < 0.5) return;
-    ctx.save();
-    ctx.setLineDash(active ? [] : [5, 3]);
-    arrow(ctx, x0, y0, x1, y1, active ? '#ffe14d' : '#ffffff', active ? 2 : 1.5, 9);
-    ctx.restore();
-  }
-
-  function drawVelocityArrows(ctx, v, n, radii) {
-    if (n <= 100) {
-      for (let i = 0; i < n; i++) if (!(drag && drag.kind === 'velocity' && drag.i === i)) drawVelocityArrow(ctx, v, i, false);
-    } else {
-      ctx.beginPath();
-      for (let i = 0; i < n; i++) {
-        const b = setup.balls[i];
-        if (!Array.isArray(b.position) || !Array.isArray(b.velocity)) continue;
-        const sp = Math.hypot(b.velocity[0], b.velocity[1]);
-        if (!(sp > 0)) continue;
-        const L = Math.max(4, radii[i] * v.s * 2.5);
-        const x = v.X(b.position[0]), y = v.Y(b.position[1]);
-        ctx.moveTo(x, y);
-        ctx.lineTo(x + (b.velocity[0] / sp) * L, y - (b.velocity[1] / sp) * L);
-      }
-      ctx.strokeStyle = 'rgba(255,255,255,0.7)';
-      ctx.lineWidth = 1;
-      ctx.stroke();
-      if (selected >= 0 && selected < n) drawVelocityArrow(ctx, v, selected, false);
-    }
-  }
-
-  function ballArrowLength(w, h) {
-    return Math.max(40, Math.min(140, 0.2 * Math.min(w - STRIP, h)));
-  }
-
-  function drawMomentumArrows(ctx, v, n, radii) {
-    const f = run.frame;
-    if (!f || !(run.pRef > 0)) return;
-    const canvasW = canvas.width / (window.devicePixelRatio || 1), canvasH = canvas.height / (window.devicePixelRatio || 1);
-    if (n <= TRACE_LIMIT) {
-      const k = ballArrowLength(canvasW, canvasH) / run.pRef;   // px per kg m/s
-      for (let i = 0; i < n; i++) {
-        const b = f.balls[i];
-        if (!b[2]) continue;
-        const x = v.X(b[0]), y = v.Y(b[1]);
-        arrow(ctx, x, y, x + b[6] * k, y - b[7] * k, colours[i], 2, 8);
-      }
-    } else {
-      // Many balls: thin lines without heads, one path.
-      ctx.beginPath();
-      for (let i = 0; i < n; i++) {
-        const b = f.balls[i];
-        if (!b[2]) continue;
-        const k = Math.max(5, radii[i] * v.s * 2.5) / run.pRef;
-        const x = v.X(b[0]), y = v.Y(b[1]);
-        ctx.moveTo(x, y);
-        ctx.lineTo(x + b[6] * k, y - b[7] * k);
-      }
-      ctx.strokeStyle = 'rgba(255,255,255,0.75)';
-      ctx.lineWidth = 1;
-      ctx.stroke();
-    }
-  }
-
-  // The strip right of the table: the system's momentum on a dial, and the scales.
-  function drawStrip(ctx, w, h) {
-    const x0 = w - STRIP;
-    ctx.fillStyle = '#1f2327';
-    ctx.fillRect(x0, 0, STRIP, h);
-    ctx.fillStyle = '#e8ecef';
-    ctx.font = '600 12px system-ui, sans-serif';
-    ctx.textBaseline = 'top';
-    ctx.textAlign = 'center';
-    const cx = x0 + STRIP / 2;
-    ctx.fillText('system momentum', cx, 10);
-    const R = Math.min(52, (STRIP - 24) / 2, (h - 110) / 2);
-    const cy = 30 + R + 6;
-    ctx.strokeStyle = '#59626b';
-    ctx.lineWidth = 1;
-    ctx.beginPath();
-    ctx.arc(cx, cy, R, 0, 2 * Math.PI);
-    ctx.moveTo(cx - R, cy); ctx.lineTo(cx + R, cy);
-    ctx.moveTo(cx, cy - R); ctx.lineTo(cx, cy + R);
-    ctx.stroke();
-    ctx.font = '11px system-ui, sans-serif';
-    ctx.fillStyle = '#aab3bb';
-    const f = run ? run.frame : initialFrame;
-    const lines = [];
-    let barLength = 0;
-    if (f) {
-      const P = f.momentum;
-      let ref = run ? run.pSys : 0;
-      if (!run) {
-        let m = 0;
-        for (const b of f.balls) m = Math.max(m, Math.hypot(b[6], b[7]));
-        ref = Math.max(niceCeil(Math.max(m, Math.hypot(P[0], P[1]))), 0);
-      }
-      if (ref > 0) {
-        const k = R / ref;
-        arrow(ctx, cx, cy, cx + P[0] * k, cy - P[1] * k, TOTAL_COLOUR, 2.5, 10);
-        lines.push(`circle: ${fmtNum(ref, 3)} kg·m/s`);
-      }
-      lines.push(`px ${fmtNum(P[0], 4)}`, `py ${fmtNum(P[1], 4)}`);
-    } else {
-      lines.push('(no valid setup)');
-    }
-    if (run && run.pRef > 0) {
-      const L = run.n <= TRACE_LIMIT ? ballArrowLength(w, h) : null;
-      lines.push('', 'ball arrows: momentum');
-      lines.push(L ? `${Math.round(L)} px = ${fmtNum(run.pRef, 3)} kg·m/s` : `scaled to ball size`);
-      if (L) barLength = Math.min(L, STRIP - 16);
-    } else if (!run) {
-      lines.push('', 'arrows on the table:', 'velocity (setup)', `tip = position after ${VEL_TAU} s`);
-    }
-    let y = cy + R + 10;
-    for (const s of lines) { ctx.fillText(s, cx, y); y += 14; }
-    if (barLength) {
-      ctx.strokeStyle = '#cfd6dc';
-      ctx.lineWidth = 2;
-      const by = y + 4, bx = cx - barLength / 2;
-      ctx.beginPath();
-      ctx.moveTo(bx, by); ctx.lineTo(bx + barLength, by);
-      ctx.moveTo(bx, by - 4); ctx.lineTo(bx, by + 4);
-      ctx.moveTo(bx + barLength, by - 4); ctx.lineTo(bx + barLength, by + 4);
-      ctx.stroke();
-    }
-    ctx.textAlign = 'left';
+    paintTable(ctx, w, h, v, scene());
   }
 
   function drawEnergy() {
-    const cssW = energyBox.clientWidth;
-    if (!cssW) return;
-    const { ctx, w, h } = fitCanvas(energyCanvas, cssW, 270);
-    ctx.clearRect(0, 0, w, h);
-    ctx.fillStyle = GRAPH_BG;
-    ctx.fillRect(0, 0, w, h);
-
-    const sc = run ? run.sc : setup;
-    const n = sc.balls.length;
-    const perBall = n <= TRACE_LIMIT;
-    const f0 = run ? null : initialFrame;
-
-    // Legend (wrapping rows at the top).
-    ctx.font = '11px system-ui, sans-serif';
-    ctx.textBaseline = 'middle';
-    const entries = [];
-    if (perBall) for (let i = 0; i < n; i++) entries.push({ label: String(sc.balls[i].id ?? i), colour: colours[i], width: 2 });
-    entries.push({ label: 'total', colour: TOTAL_COLOUR, width: 3.5 });
-    let lx = 48, ly = 10;
-    const rowsY = [];
-    for (const e of entries) {
-      const tw = ctx.measureText(e.label).width + 30;
-      if (lx + tw > w - 8) { lx = 48; ly += 16; }
-      e.x = lx; e.y = ly;
-      lx += tw + 6;
-      rowsY.push(ly);
-    }
-    for (const e of entries) {
-      drawLineSample(ctx, e.x, e.y, e.colour, e.width);
-      ctx.fillStyle = '#dfe4e8';
-      ctx.fillText(e.label, e.x + 24, e.y);
-    }
-    if (!perBall) {
-      ctx.fillStyle = '#9aa5b1';
-      ctx.fillText(`(${n} balls: per-ball lines only up to ${TRACE_LIMIT})`, lx, ly);
-    }
-
-    // Ball ids at the ends of their lines, when there are few.
-    const endLabels = run && perBall && n <= 8;
-    let labelW = 0;
-    if (endLabels) {
-      ctx.font = '11px system-ui, sans-serif';
-      labelW = ctx.measureText('total').width;
-      for (let i = 0; i < n; i++) labelW = Math.max(labelW, ctx.measureText(String(sc.balls[i].id ?? i)).width);
-    }
-    const top = ly + 16, left = 62, right = endLabels ? Math.min(96, labelW + 14) : 14, bottom = 40;
-    const pw = w - left - right, ph = h - top - bottom;
-    if (pw < 20 || ph < 20) return;
-
-    const { T } = untilOf(sc);
-    const tNow = run ? run.t : 0;
-    const tMax = T != null ? T : niceAxis(Math.max(tNow, 1e-9) * 1.05);
-    let eMax = run ? run.eMax : f0 ? f0.energy : 0;
-    if (f0) for (const b of f0.balls) eMax = Math.max(eMax, b[5]);
-    const yMax = niceAxis(eMax > 0 ? eMax * 1.05 : 1);
-
-    const [tf, tp] = prefixFor(tMax);
-    const [ef, ep] = prefixFor(yMax);
-    const X = (t) => left + (t / tMax) * pw;
-    const Y = (e) => top + ph - (e / yMax) * ph;
-
-    // plot area (the felt's colour, where white and black lines both show), grid and ticks
-    ctx.fillStyle = FELT;
-    ctx.fillRect(left, top, pw, ph);
-    ctx.strokeStyle = 'rgba(255,255,255,0.12)';
-    ctx.lineWidth = 1;
-    ctx.fillStyle = '#b7c0c8';
-    const xs = niceStep(tMax, Math.max(2, Math.floor(pw / 70)));
-    const ys = niceStep(yMax, Math.max(2, Math.floor(ph / 40)));
-    ctx.textAlign = 'center';
-    ctx.textBaseline = 'top';
-    for (let k = 0; k * xs <= tMax * (1 + 1e-9); k++) {
-      const t = k * xs, x = X(t);
-      ctx.beginPath(); ctx.moveTo(x + 0.5, top); ctx.lineTo(x + 0.5, top + ph); ctx.stroke();
-      ctx.fillText(tickLabel(t / tf, xs / tf), x, top + ph + 4);
-    }
-    ctx.textAlign = 'right';
-    ctx.textBaseline = 'middle';
-    for (let k = 0; k * ys <= yMax * (1 + 1e-9); k++) {
-      const e = k * ys, y = Y(e);
-      ctx.beginPath(); ctx.moveTo(left, y + 0.5); ctx.lineTo(left + pw, y + 0.5); ctx.stroke();
-      ctx.fillText(tickLabel(e / ef, ys / ef), left - 5, y);
-    }
-    ctx.strokeStyle = '#7d8893';
-    ctx.beginPath();
-    ctx.moveTo(left + 0.5, top); ctx.lineTo(left + 0.5, top + ph + 0.5); ctx.lineTo(left + pw, top + ph + 0.5);
-    ctx.stroke();
-    ctx.fillStyle = '#dfe4e8';
-    ctx.textAlign = 'center';
-    ctx.textBaseline = 'bottom';
-    ctx.font = '12px system-ui, sans-serif';
-    ctx.fillText(`time (${tp}s)`, left + pw / 2, h - 4);
-    ctx.save();
-    ctx.translate(13, top + ph / 2);
-    ctx.rotate(-Math.PI / 2);
-    ctx.textBaseline = 'middle';
-    ctx.fillText(`kinetic energy (${ep}J)`, 0, 0);
-    ctx.restore();
-
-    ctx.save();
-    ctx.beginPath();
-    ctx.rect(left, top - 2, pw + 2, ph + 4);
-    ctx.clip();
-    if (run) {
-      const h0 = run.hist;
-      if (h0.e) for (let i = 0; i < n; i++) plotLine(ctx, h0.t, h0.e[i], X, Y, colours[i], 2);
-      plotLine(ctx, h0.t, h0.E, X, Y, TOTAL_COLOUR, 3.5);
-      ctx.strokeStyle = 'rgba(255,255,255,0.3)';
-      ctx.setLineDash([3, 3]);
-      ctx.lineWidth = 1;
-      ctx.beginPath();
-      ctx.moveTo(X(run.t) + 0.5, top); ctx.lineTo(X(run.t) + 0.5, top + ph);
-      ctx.stroke();
-      ctx.setLineDash([]);
-    } else if (f0) {
-      // The setup: the energies at t = 0 as dots.
-      const dot = (e, c, r) => {
-        ctx.beginPath(); ctx.arc(X(0) + 1, Y(e), r, 0, 2 * Math.PI);
-        ctx.fillStyle = c; ctx.fill(); ctx.strokeStyle = '#dfe4e8'; ctx.lineWidth = 1; ctx.stroke();
-      };
-      if (perBall) f0.balls.forEach((b, i) => dot(b[5], colours[i], 3.5));
-      dot(f0.energy, TOTAL_COLOUR, 4.5);
-    }
-    ctx.restore();
-    if (endLabels && run.hist.t.length) {
-      const k = run.hist.t.length - 1;
-      const xs0 = X(run.hist.t[k]) + 5;
-      const items = [];
-      for (let i = 0; i < n; i++) items.push({ y: Y(run.hist.e[i][k]), text: String(sc.balls[i].id ?? i), colour: colours[i] });
-      items.push({ y: Y(run.hist.E[k]), text: 'total', colour: TOTAL_COLOUR });
-      items.sort((a, b) => a.y - b.y);
-      for (let j = 1; j < items.length; j++) items[j].y = Math.max(items[j].y, items[j - 1].y + 11);
-      const over = items.length ? items[items.length - 1].y - (top + ph) : 0;
-      if (over > 0) for (const it of items) it.y -= over;
-      ctx.font = '11px system-ui, sans-serif';
-      ctx.textAlign = 'left';
-      ctx.textBaseline = 'middle';
-      for (const it of items) {
-        ctx.lineWidth = 3;
-        ctx.strokeStyle = 'rgba(20,24,28,0.85)';
-        ctx.strokeText(it.text, xs0, it.y);
-        ctx.fillStyle = luminance(it.colour) < 0.03 ? '#c9d1d8' : it.colour;
-        ctx.fillText(it.text, xs0, it.y);
-      }
-    }
-    if (!run) {
-      ctx.fillStyle = '#d5dce2';
-      ctx.textAlign = 'center';
-      ctx.textBaseline = 'middle';
-      ctx.font = '13px system-ui, sans-serif';
-      ctx.fillText('Run to plot the kinetic energy against time', left + pw / 2, top + ph / 2);
-    }
-    ctx.textAlign = 'left';
-  }
-
-  function drawLineSample(ctx, x, y, colour, width) {
-    if (luminance(colour) < 0.03) {
-      ctx.strokeStyle = FELT;
-      ctx.lineWidth = width + 4;
-      ctx.beginPath(); ctx.moveTo(x, y); ctx.lineTo(x + 20, y); ctx.stroke();
-    }
-    ctx.strokeStyle = colour;
-    ctx.lineWidth = width;
-    ctx.beginPath(); ctx.moveTo(x, y); ctx.lineTo(x + 20, y); ctx.stroke();
-  }
-
-  // A polyline of (t, e), thinned to at most four points per pixel column
-  // (first, lowest, highest, last) so long histories draw fast and jumps stay sharp.
-  function plotLine(ctx, ts, es, X, Y, colour, width) {
-    const m = ts.length;
-    if (m === 0) return;
-    ctx.beginPath();
-    let col = null, first = 0, lo = 0, hi = 0, last = 0, started = false;
-    const flush = () => {
-      const x = col;
-      const pts = [first, lo, hi, last].sort((a, b) => a - b);
-      let prev = -1;
-      for (const k of pts) {
-        if (k === prev) continue;
-        prev = k;
-        const px = X(ts[k]), py = Y(es[k]);
-        if (!started) { ctx.moveTo(px, py); started = true; } else ctx.lineTo(px, py);
-      }
-      return x;
-    };
-    for (let k = 0; k < m; k++) {
-      const c = Math.floor(X(ts[k]));
-      if (c !== col) {
-        if (col !== null) flush();
-        col = c; first = lo = hi = last = k;
-      } else {
-        if (es[k] < es[lo]) lo = k;
-        if (es[k] > es[hi]) hi = k;
-        last = k;
-      }
-    }
-    flush();
-    ctx.lineJoin = 'round';
-    ctx.lineCap = 'round';
-    ctx.strokeStyle = colour;
-    ctx.lineWidth = width;
-    ctx.stroke();
+    paintEnergy(energyCanvas, energyBox.clientWidth, scene());
   }
 
   // ------------------------------------------------------- table editing
 
-  function toWorld(e) {
-    const r = canvas.getBoundingClientRect();
-    const px = e.clientX - r.left, py = e.clientY - r.top;
-    if (!view) return null;
-    return { px, py, x: (px - view.ox) / view.s, y: (view.oy - py) / view.s };
-  }
-
-  function hitBall(px, py) {
-    let best = -1, bestD = Infinity;
-    const balls = setup.balls;
-    for (let i = 0; i < balls.length; i++) {
-      const p = balls[i].position;
-      if (!Array.isArray(p)) continue;
-      const d = Math.hypot(view.X(p[0]) - px, view.Y(p[1]) - py);
-      const r = Math.max(7, radiusOf(balls[i]) * view.s);
-      if (d <= r && d < bestD) { best = i; bestD = d; }
-    }
-    return best;
-  }
-
-  function hitTip(px, py) {
-    const n = setup.balls.length;
-    const candidates = n <= 100 ? [...Array(n).keys()] : selected >= 0 ? [selected] : [];
-    for (const i of candidates) {
-      const b = setup.balls[i];
-      if (!Array.isArray(b.velocity) || !(Math.hypot(b.velocity[0], b.velocity[1]) > 0)) continue;
-      const t = velocityTip(view, i);
-      if (t && Math.hypot(t[0] - px, t[1] - py) <= 7) return i;
-    }
-    return -1;
-  }
-
-  function hitVertex(px, py) {
-    if (setup.table.shape !== 'polygon' || !Array.isArray(setup.table.vertices)) return -1;
-    const vs = setup.table.vertices;
-    for (let k = 0; k < vs.length; k++) {
-      if (Math.hypot(view.X(vs[k][0]) - px, view.Y(vs[k][1]) - py) <= 7) return k;
-    }
-    return -1;
-  }
-
-  function onPointerDown(e) {
-    try {
-      if (e.button !== 0) return;
-      if (run) { resetRun(); }
-      drawTable();
-      const w = toWorld(e);
-      if (!w) return;
-      let i = hitTip(w.px, w.py);
-      if (i >= 0) {
-        drag = { kind: 'velocity', i };
-      } else if ((i = hitBall(w.px, w.py)) >= 0) {
-        const p = setup.balls[i].position;
-        drag = mode === 'velocity' || e.shiftKey
-          ? { kind: 'velocity', i }
-          : { kind: 'move', i, dx: w.x - p[0], dy: w.y - p[1] };
-      } else if ((i = hitVertex(w.px, w.py)) >= 0) {
-        drag = { kind: 'vertex', i };
-      } else {
-        select(-1);
-        return;
-      }
-      if (drag.kind !== 'vertex') select(drag.i);
-      drag.moved = false;
-      canvas.setPointerCapture(e.pointerId);
-      e.preventDefault();
-    } catch (err) {
-      runError = errText(err);
-      updateError();
-    }
-  }
-
-  function onPointerMove(e) {
-    try {
-      const w = toWorld(e);
-      if (!w) return;
-      if (!drag) {
-        if (run || !setup) { canvas.style.cursor = 'default'; return; }
-        const overTip = hitTip(w.px, w.py) >= 0 || hitVertex(w.px, w.py) >= 0;
-        const overBall = hitBall(w.px, w.py) >= 0;
-        canvas.style.cursor = overTip ? 'pointer' : overBall ? (mode === 'velocity' || e.shiftKey ? 'crosshair' : 'grab') : 'default';
-        return;
-      }
-      const bb = bbox(tableVertices(setup.table) || [[-0.5, -0.5], [0.5, 0.5]]);
-      const step = posStep(bb);
-      if (drag.kind === 'move') {
-        const b = setup.balls[drag.i];
-        b.position = [roundTo(w.x - drag.dx, step), roundTo(w.y - drag.dy, step)];
-        const r = rowRefs[drag.i];
-        if (r) { r.x.value = String(b.position[0]); r.y.value = String(b.position[1]); }
-      } else if (drag.kind === 'velocity') {
-        const b = setup.balls[drag.i];
-        const p = b.position;
-        const vx = (w.x - p[0]) / VEL_TAU, vy = (w.y - p[1]) / VEL_TAU;
-        const vstep = 10 ** Math.ceil(Math.log10(step / VEL_TAU) - 1e-9);
-        b.velocity = [roundTo(vx, vstep), roundTo(vy, vstep)];
-        const r = rowRefs[drag.i];
-        if (r) { r.vx.value = String(b.velocity[0]); r.vy.value = String(b.velocity[1]); }
-      } else if (drag.kind === 'vertex') {
-        const vs = setup.table.vertices;
-        vs[drag.i] = [roundTo(w.x, step), roundTo(w.y, step)];
-      }
-      drag.moved = true;
-      changed();
-    } catch (err) {
-      runError = errText(err);
-      updateError();
-    }
-  }
-
-  function onPointerUp(e) {
-    if (!drag) return;
-    const d = drag;
-    drag = null;
-    try { canvas.releasePointerCapture(e.pointerId); } catch (err) { /* not captured */ }
-    if (d.moved && d.kind === 'vertex') renderTable();
-    if (d.moved) validateNow();
-    drawAll();
-  }
-
-  function onDoubleClick(e) {
-    try {
-      if (run) return;
-      const w = toWorld(e);
-      if (!w || hitBall(w.px, w.py) >= 0) return;
-      let at = [w.x, w.y];
-      const t = setup.table;
-      if (t.shape === 'rectangle' && Array.isArray(t.min) && Array.isArray(t.max)) {
-        // Keep the new ball inside a box (it takes the last ball's radius).
-        const last = setup.balls[setup.balls.length - 1];
-        const r = last ? radiusOf(last) : DEFAULT_RADIUS;
-        const m = r + posStep(bbox(tableVertices(t)));
-        at = at.map((v, k) => (t.max[k] - t.min[k] > 2 * m ? Math.min(Math.max(v, t.min[k] + m), t.max[k] - m) : v));
-      }
-      const b = addBall(at);
-      selected = setup.balls.indexOf(b);
-      changed({ panels: true, colour: true });
-    } catch (err) {
-      runError = errText(err);
-      updateError();
-    }
-  }
-
-  canvas.addEventListener('pointerdown', onPointerDown);
-  canvas.addEventListener('pointermove', onPointerMove);
-  canvas.addEventListener('pointerup', onPointerUp);
-  canvas.addEventListener('pointercancel', onPointerUp);
-  canvas.addEventListener('dblclick', onDoubleClick);
+  const editor = attachEditor(canvas, {
+    get setup() { return setup; },
+    get view() { return view; },
+    get mode() { return mode; },
+    get selected() { return selected; },
+    get running() { return !!player.run; },
+    endRun: () => resetRun(),
+    drawTable,
+    drawAll,
+    select,
+    changed,
+    dragged: (i, what) => showBall(ballRows, i, setup.balls[i], what),
+    vertexMoved: () => renderTable(),
+    validateNow,
+    addedBall: (i) => { selected = i; changed({ panels: true, colour: true }); },
+    fail: (err) => { runError = errText(err); updateError(); },
+  });
 
   let resizeObs = null;
   if (typeof ResizeObserver === 'function') {
     let pending = 0;
     resizeObs = new ResizeObserver(() => {
       if (pending) return;
-      pending = requestAnimationFrame(() => { pending = 0; if (!rafId) drawAll(); });
+      pending = requestAnimationFrame(() => { pending = 0; if (!player.animating()) drawAll(); });
     });
     resizeObs.observe(canvasBox);
     resizeObs.observe(energyBox);
@@ -1809,10 +350,10 @@ export function mountLab(root, engine) {
   // ---------------------------------------------------------------- API
 
   const api = {
-    scenario: () => buildScenario(),
-    running: () => !!run && !run.paused && !run.done,
-    time: () => (run ? run.t : 0),
-    frames: () => frames,
+    scenario: () => buildScenario(setup),
+    running: () => !!player.run && !player.run.paused && !player.run.done,
+    time: () => (player.run ? player.run.t : 0),
+    frames: () => player.frames,
     load: (what) => {
       if (typeof what === 'string') loadExample(what);
       else loadScenario(what, null);
@@ -1833,7 +374,7 @@ export function mountLab(root, engine) {
 
   const first = EXAMPLES.find((e) => e.name === 'two_balls') || EXAMPLES[0];
   if (first) loadScenario(first.scenario, first.name);
-  else loadScenario({ physics: { model: 'ideal' }, table: { shape: 'rectangle', min: [-0.5, -0.5], max: [0.5, 0.5] }, balls: [], until: { time: 5 } }, null);
+  else loadScenario(EMPTY_SCENARIO, null);
   return api;
 }
 
