@@ -1,5 +1,5 @@
 // The lab's scenario: a plain object in the contract's scenario format
-// (../shared/contract/scenario-format.md, docs/scenario.md), edited in
+// (docs/contract.md, docs/scenario.md), edited in
 // place by the lab's forms and table, and the text Run sends to the engine.
 // Every function here works on the scenario passed to it; nothing physical
 // is computed (placing a new ball only avoids the walls and the other balls).
