@@ -5,14 +5,12 @@
 // into one string instead of building a JSON tree first: the tree costs a
 // heap node per number and is several times slower to dump. Numbers are
 // printed with std::to_chars, the shortest text that reads back as the
-// same double, so the result is exact and the bytes depend only on the
-// values (the same run gives the same file).
+// same double (io/json_write.hpp), so the result is exact and the bytes
+// depend only on the values (the same run gives the same file).
 //
 // Layout: one event per line, one ball per line in "final", one sample
 // per line. Readable in an editor and easy to grep, and still compact.
 
-#include <charconv>
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -20,79 +18,12 @@
 
 #include "breakshot/lab.hpp"
 #include "breakshot/scenario_io.hpp"
+#include "io/json_write.hpp"
 
 namespace breakshot {
 namespace {
 
-class JsonWriter {
- public:
-  explicit JsonWriter(std::string& out) : out_(out) {}
-
-  void raw(std::string_view s) { out_.append(s); }
-
-  /// A number that reads back as exactly `v`. Integral values keep a
-  /// ".0" so that readers in typed languages see a float every time.
-  /// JSON has no infinity or NaN: they are written as null, which is
-  /// still valid JSON (the command line refuses such a result anyway).
-  void number(double v) {
-    if (!std::isfinite(v)) {
-      out_.append("null");
-      return;
-    }
-    char buf[64];
-    const auto res = std::to_chars(buf, buf + sizeof buf, v);
-    const std::string_view text(buf, static_cast<std::size_t>(res.ptr - buf));
-    out_.append(text);
-    if (text.find_first_of(".e") == std::string_view::npos) out_.append(".0");
-  }
-
-  void string(std::string_view s) {
-    static constexpr char kHex[] = "0123456789abcdef";
-    out_.push_back('"');
-    for (const char c : s) {
-      const auto u = static_cast<unsigned char>(c);
-      switch (c) {
-        case '"': out_.append("\\\""); break;
-        case '\\': out_.append("\\\\"); break;
-        case '\n': out_.append("\\n"); break;
-        case '\r': out_.append("\\r"); break;
-        case '\t': out_.append("\\t"); break;
-        case '\b': out_.append("\\b"); break;
-        case '\f': out_.append("\\f"); break;
-        default:
-          if (u < 0x20) {
-            out_.append("\\u00");
-            out_.push_back(kHex[u >> 4]);
-            out_.push_back(kHex[u & 0xf]);
-          } else {
-            out_.push_back(c);
-          }
-      }
-    }
-    out_.push_back('"');
-  }
-
-  void vec2(Vec2 v) {
-    out_.push_back('[');
-    number(v.x);
-    out_.append(", ");
-    number(v.y);
-    out_.push_back(']');
-  }
-
-  void vec3(Vec3 v) {
-    out_.push_back('[');
-    number(v.x);
-    out_.append(", ");
-    number(v.y);
-    out_.append(", ");
-    number(v.z);
-    out_.push_back(']');
-  }
-
- private:
-  std::string& out_;
-};
+using json_io::JsonWriter;
 
 class ResultWriter {
  public:
