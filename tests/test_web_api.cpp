@@ -147,9 +147,9 @@ TEST(WebApi, ErrorsNameTheField) {
 
   // Game configs.
   const std::pair<const char*, const char*> configs[] = {
-      {R"({"players": ["human", "human"]})", "game: missing"},
+      {R"({"players": ["human", "human"]})", "game: missing required field"},
       {R"({"game": "snooker", "players": ["human", "human"]})", "game:"},
-      {R"({"game": "eight_ball"})", "players: missing"},
+      {R"({"game": "eight_ball"})", "players: missing required field"},
       {R"({"game": "eight_ball", "players": ["human"]})", "players:"},
       {R"({"game": "eight_ball", "players": ["human", "wizard"]})", "players[1]:"},
       {R"({"game": "eight_ball", "players": ["human", 3]})", "players[1]:"},
@@ -158,7 +158,10 @@ TEST(WebApi, ErrorsNameTheField) {
       {R"({"game": "eight_ball", "players": ["human", "club"], "breaker": 2})", "breaker:"},
       {R"({"game": "eight_ball", "players": ["human", "club"], "table": "6ft"})", "table:"},
       {R"({"game": "eight_ball", "players": ["human", "club"], "ai_budget": 0})", "ai_budget:"},
-      {R"({"game": "eight_ball", "players": ["human", "club"], "colour": "red"})", "colour: unknown key"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "colour": "red"})", "colour: unknown field (known: game, table, seed, breaker, players, ai_budget)"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "seed": "1", "seed": "2"})", "seed: duplicate key"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "table": "6ft"})",
+       "table: unknown table size \"6ft\" (expected \"7ft\", \"8ft\" or \"9ft\")"},
       {R"([1, 2])", "(document):"},
       {R"({"game": )", "config: not valid JSON"},
   };
@@ -175,14 +178,14 @@ TEST(WebApi, ErrorsNameTheField) {
   const std::pair<const char*, const char*> actions[] = {
       {R"({"shoot": {"speed": "fast", "phi": 0}})", "shoot.speed:"},
       {R"({"shoot": {"phi": 0}})", "shoot.speed: missing"},
-      {R"({"shoot": {"speed": 1, "phi": 0, "spin": 2}})", "shoot.spin: unknown key"},
+      {R"({"shoot": {"speed": 1, "phi": 0, "spin": 2}})", "shoot.spin: unknown field"},
       {R"({"shoot": {"speed": 1, "phi": 0}, "call": {"ball": "x", "pocket": 1}})", "call.ball:"},
       {R"({"shoot": {"speed": 1, "phi": 0}, "safety": 1})", "safety:"},
       {R"({"place": [1]})", "place:"},
       {R"({"place": [0.5, "y"]})", "place[1]:"},
       {R"({"decide": "maybe"})", "decide:"},
       {R"({"jump": true})", "(action):"},
-      {R"({"place": [0.5, 0.6], "extra": 1})", "extra: unknown key"},
+      {R"({"place": [0.5, 0.6], "extra": 1})", "extra: unknown field"},
       {R"(not json)", "action: not valid JSON"},
   };
   for (const auto& [action, prefix] : actions) {
@@ -229,10 +232,8 @@ TEST(WebApi, ErrorsNameTheField) {
   EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), 100000)), "from:"));
 }
 
-TEST(WebApi, LinkErrorsNameTheActionRefused) {
-  // {"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","shoot"]]}
-  const std::string body =
-      R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","shoot"]]})";
+/// A link holding `body`: "v1." and its base64url.
+std::string link_of_body(const std::string& body) {
   static constexpr char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
   std::string enc;
   std::uint32_t acc = 0;
@@ -246,8 +247,27 @@ TEST(WebApi, LinkErrorsNameTheActionRefused) {
     }
   }
   if (bits > 0) enc.push_back(kB64[(acc << (6 - bits)) & 63]);
-  EXPECT_EQ(bs_game_from_link(("v1." + enc).c_str()), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "link.a[0]: refused:")) << bs_last_error();
+  return "v1." + enc;
+}
+
+TEST(WebApi, LinkErrorsNameTheActionRefused) {
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","shoot"]]})",
+       "link.a[0]: refused:"},
+      // Read as strictly as a record: repeated keys, unknown names.
+      {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"b":1,"p":["human","human"],"a":[]})",
+       "link.b: duplicate key"},
+      {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","x"],["d","x"]]})",
+       "link.a[0][1]: unknown choice \"x\" (expected \"shoot\", "},
+      {R"({"g":"snooker","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
+       "link.g: unknown game \"snooker\" (expected \"eight_ball\" or \"nine_ball\")"},
+      {R"({"g":"eight_ball","t":"9ft","s":"x1","b":0,"p":["human","human"],"a":[]})",
+       "link.s: expected a seed: a decimal integer in [0, 2^64), not \"x1\""},
+  };
+  for (const auto& [body, prefix] : cases) {
+    EXPECT_EQ(bs_game_from_link(link_of_body(body).c_str()), nullptr) << body;
+    EXPECT_TRUE(starts_with(error_of(bs_last_error()), prefix)) << body << " -> " << bs_last_error();
+  }
 }
 
 TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {

@@ -42,8 +42,8 @@ std::string strip_exception_id(std::string_view what) {
 /// deep nesting cannot overflow the call stack.
 class DocumentBuilder {
  public:
-  explicit DocumentBuilder(json& root, std::string_view free_key)
-      : root_(root), free_key_(free_key) {}
+  DocumentBuilder(json& root, const ParseOptions& options)
+      : root_(root), free_key_(options.free_key), root_path_(options.root_path) {}
 
   std::optional<std::string> duplicate_path;  ///< first repeated key
   std::optional<std::string> parse_error_text;
@@ -137,7 +137,7 @@ class DocumentBuilder {
   }
 
   std::string path_of_open_container() const {
-    std::string path;
+    std::string path = root_path_;
     for (std::size_t i = 1; i < frames_.size(); ++i) {
       const Frame& f = frames_[i];
       if (f.parent_is_object) {
@@ -151,6 +151,7 @@ class DocumentBuilder {
 
   json& root_;
   std::string_view free_key_;
+  std::string root_path_;
   std::vector<Frame> frames_;
 };
 
@@ -228,7 +229,7 @@ std::string one_of(const std::string_view* names, std::size_t n) {
 
 std::optional<ParseProblem> parse_strict(std::string_view text, json& out,
                                          const ParseOptions& options) {
-  DocumentBuilder builder(out, options.free_key);
+  DocumentBuilder builder(out, options);
   const bool parsed = json::sax_parse(text.begin(), text.end(), &builder);
   if (!parsed || builder.parse_error_text) {
     return ParseProblem{{kDocumentPath, builder.parse_error_text.value_or("not valid JSON")}, true};

@@ -70,6 +70,9 @@ struct ParseOptions {
   /// user's: their repeated keys are not looked for ("extra" in a
   /// scenario). Empty: every object is checked.
   std::string_view free_key;
+  /// The path of the document itself, which the paths of repeated keys
+  /// start with ("" for the top: "balls[1].id"; "link": "link.a").
+  std::string root_path;
 };
 
 struct ParseProblem {

@@ -895,7 +895,9 @@ std::variant<Scenario, ScenarioError> read_scenario(std::string_view json_text) 
     // back with the line and column; repeated keys with their path.
     // Content inside "extra" objects is the user's and is not checked.
     json doc;
-    if (auto problem = json_io::parse_strict(json_text, doc, {.free_key = "extra"})) {
+    json_io::ParseOptions options;
+    options.free_key = "extra";
+    if (auto problem = json_io::parse_strict(json_text, doc, options)) {
       return ScenarioError{std::move(problem->error.path), std::move(problem->error.reason)};
     }
     Scenario scenario;

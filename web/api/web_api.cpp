@@ -48,7 +48,9 @@
 //
 // Errors never cross the boundary: every entry point catches everything
 // and answers {"error": "..."} (those that return a pointer: NULL, and
-// the error in bs_last_error); input errors name the JSON path.
+// the error in bs_last_error); input errors name the JSON path. JSON
+// input is read as strictly as scenarios and records, by the same code
+// (src/io/json_read.hpp): repeated keys and unknown fields are errors.
 //
 // Frames. bs_playback_frame_data gives a frame as doubles in a buffer of
 // the playback (no text: a 1000-ball frame as JSON costs ~10 ms in wasm);
@@ -63,7 +65,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <limits>
 #include <memory>
 #include <new>
 #include <optional>
@@ -84,6 +85,8 @@
 #include "breakshot/record.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
+#include "io/game_json.hpp"
+#include "io/json_read.hpp"
 
 #ifndef BREAKSHOT_VERSION
 #define BREAKSHOT_VERSION "0.1.0"
@@ -149,118 +152,88 @@ std::string guarded(F&& body) {
 thread_local std::string g_last_error = error_json("no error");
 
 // ---------------------------------------------------------------------------
-// Reading JSON input
+// Reading JSON input: io/json_read.hpp's strict reading, its problems
+// thrown as bad inputs
 
-std::string member_path(const std::string& path, std::string_view key) {
-  return path.empty() ? std::string(key) : path + "." + std::string(key);
-}
+using bs::json_io::index_path;
+using bs::json_io::member_path;
 
-std::string index_path(const std::string& path, std::size_t i) {
-  return path + "[" + std::to_string(i) + "]";
-}
-
-std::string kind_of(const json& v) {
-  if (v.is_null()) return "null";
-  if (v.is_boolean()) return "a boolean";
-  if (v.is_number()) return "a number";
-  if (v.is_string()) return "a string";
-  if (v.is_array()) return "an array";
-  return "an object";
-}
-
-json parse_text(const char* text, const std::string& what) {
-  if (text == nullptr) bad(what, "missing (a null pointer)");
-  try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
-    bad(what, std::string("not valid JSON: ") + e.what());
+/// The readers of io/game_json.hpp, with must() to throw the first
+/// problem found.
+struct Reader : bs::json_io::GameReader {
+  void must(bool ok) const {
+    if (!ok) bad(error->path, error->reason);
   }
+};
+
+const json* find(const json& obj, std::string_view key) { return Reader::find(obj, key); }
+
+/// The JSON text of an argument named `what`, parsed strictly (a repeated
+/// key is an error too); `root` is the path of the document in messages.
+json parse_text(const char* text, const std::string& what, const std::string& root = "") {
+  if (text == nullptr) bad(what, "missing (a null pointer)");
+  json doc;
+  bs::json_io::ParseOptions options;
+  options.root_path = root;
+  if (auto problem = bs::json_io::parse_strict(text, doc, options)) {
+    if (problem->syntax) bad(what, "not valid JSON: " + problem->error.reason);
+    bad(problem->error.path, problem->error.reason);
+  }
+  return doc;
 }
 
 /// An object whose keys must all be in `known`.
 const json& object(const json& v, const std::string& path,
                    std::initializer_list<std::string_view> known) {
-  if (!v.is_object()) bad(path.empty() ? "(document)" : path, "expected an object, not " + kind_of(v));
-  for (auto it = v.begin(); it != v.end(); ++it) {
-    bool ok = false;
-    for (std::string_view k : known) ok = ok || it.key() == k;
-    if (!ok) {
-      std::string list;
-      for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-      bad(member_path(path, it.key()), "unknown key (known: " + list + ")");
-    }
-  }
+  Reader r;
+  r.must(r.object(v, path, known));
   return v;
 }
 
-const json* find(const json& obj, std::string_view key) {
-  const auto it = obj.find(std::string(key));
-  return it == obj.end() ? nullptr : &*it;
-}
-
 const json& required(const json& obj, const std::string& path, std::string_view key) {
-  const json* v = find(obj, key);
-  if (v == nullptr) bad(member_path(path, key), "missing");
+  Reader r;
+  const json* v = nullptr;
+  r.must(r.required(obj, path, key, v));
   return *v;
 }
 
 double number(const json& v, const std::string& path) {
-  if (!v.is_number()) bad(path, "expected a number, not " + kind_of(v));
-  const double d = v.get<double>();
-  if (!std::isfinite(d)) bad(path, "not a finite number");
+  Reader r;
+  double d = 0.0;
+  r.must(r.number(v, path, d));
   return d;
 }
 
 bool boolean(const json& v, const std::string& path) {
-  if (!v.is_boolean()) bad(path, "expected true or false, not " + kind_of(v));
-  return v.get<bool>();
+  Reader r;
+  bool b = false;
+  r.must(r.boolean(v, path, b));
+  return b;
 }
 
 std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi) {
-  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  if (!v.is_number_integer()) bad(path, "expected an integer in " + range + ", not " + kind_of(v));
-  if (v.is_number_unsigned()) {
-    const auto u = v.get<std::uint64_t>();
-    if (u > static_cast<std::uint64_t>(hi) || (lo > 0 && u < static_cast<std::uint64_t>(lo))) {
-      bad(path, "must be an integer in " + range);
-    }
-    return static_cast<std::int64_t>(u);
-  }
-  const auto i = v.get<std::int64_t>();
-  if (i < lo || i > hi) bad(path, "must be an integer in " + range);
+  Reader r;
+  std::int64_t i = 0;
+  r.must(r.integer(v, path, lo, hi, i));
   return i;
 }
 
 const std::string& text(const json& v, const std::string& path) {
-  if (!v.is_string()) bad(path, "expected a string, not " + kind_of(v));
+  Reader r;
+  std::string unused;
+  r.must(r.text(v, path, unused));
   return v.get_ref<const std::string&>();
-}
-
-std::uint64_t parse_seed(const std::string& s, const std::string& path) {
-  std::uint64_t out = 0;
-  bool ok = !s.empty() && s.size() <= 20;
-  for (const char c : s) ok = ok && c >= '0' && c <= '9';
-  if (ok) {
-    for (const char c : s) {
-      const auto d = static_cast<std::uint64_t>(c - '0');
-      if (out > (std::numeric_limits<std::uint64_t>::max() - d) / 10) {
-        ok = false;
-        break;
-      }
-      out = out * 10 + d;
-    }
-  }
-  if (!ok) bad(path, "expected a seed: a decimal integer in [0, 2^64) as a string, not \"" + s + "\"");
-  return out;
 }
 
 /// A seed: a decimal string, or an integer number up to 2^53.
 std::uint64_t seed_value(const json& v, const std::string& path) {
-  if (v.is_string()) return parse_seed(v.get_ref<const std::string&>(), path);
   if (v.is_number_integer()) {
     return static_cast<std::uint64_t>(integer(v, path, 0, std::int64_t{1} << 53));
   }
-  bad(path, "expected a seed (a decimal string), not " + kind_of(v));
+  Reader r;
+  std::uint64_t seed = 0;
+  r.must(r.seed(v, path, seed));
+  return seed;
 }
 
 /// "human" or a known AI level.
@@ -664,16 +637,17 @@ struct GameConfigInput {
 constexpr std::int64_t kMaxBudget = 1'000'000'000;
 
 bs::GameType game_type(const json& v, const std::string& path) {
-  const std::string& s = text(v, path);
-  const auto g = bs::parse_game_type(s);
-  if (!g) bad(path, "unknown game \"" + s + "\" (known: eight_ball, nine_ball)");
-  return *g;
+  Reader r;
+  bs::GameType g{};
+  r.must(r.game_type(v, path, g));
+  return g;
 }
 
 std::string table_size(const json& v, const std::string& path) {
-  const std::string& s = text(v, path);
-  if (s != "7ft" && s != "8ft" && s != "9ft") bad(path, "unknown table \"" + s + "\" (known: 7ft, 8ft, 9ft)");
-  return s;
+  Reader r;
+  std::string size;
+  r.must(r.table_size(v, path, size));
+  return size;
 }
 
 GameConfigInput read_config(const json& doc) {
@@ -697,23 +671,21 @@ std::unique_ptr<BsGame> make_game(const GameConfigInput& in) {
 }
 
 bs::Action read_action(const json& doc) {
-  if (!doc.is_object()) bad("(action)", "expected an object, not " + kind_of(doc));
+  if (!doc.is_object()) bad("(action)", bs::json_io::expected("an object", doc));
   if (find(doc, "place") != nullptr) {
     object(doc, "", {"place"});
     const json& p = doc["place"];
-    if (!p.is_array() || p.size() != 2) bad("place", "expected [x, y]");
-    return bs::PlaceCueBall{{number(p[0], "place[0]"), number(p[1], "place[1]")}};
+    Reader r;
+    bs::PlaceCueBall place;
+    r.must(r.vec2(p, "place", place.position));
+    return place;
   }
   if (find(doc, "decide") != nullptr) {
     object(doc, "", {"decide"});
-    const std::string& c = text(doc["decide"], "decide");
-    const auto choice = bs::parse_choice(c);
-    if (!choice) {
-      bad("decide", "unknown choice \"" + c +
-                        "\" (known: shoot, pass_back, accept_table, rerack_and_break, "
-                        "rerack_opponent_breaks, respot_eight)");
-    }
-    return bs::Decide{*choice};
+    Reader r;
+    bs::Decide decide;
+    r.must(r.choice(doc["decide"], "decide", decide.choice));
+    return decide;
   }
   if (find(doc, "shoot") != nullptr) {
     object(doc, "", {"shoot", "call", "safety", "push_out"});
@@ -959,10 +931,10 @@ bs::Action link_action(const json& v, const std::string& path) {
   }
   if (k == "d") {
     if (v.size() != 2) bad(path, "expected [\"d\", \"choice\"]");
-    const std::string& c = text(v[1], index_path(path, 1));
-    const auto choice = bs::parse_choice(c);
-    if (!choice) bad(index_path(path, 1), "unknown choice \"" + c + "\"");
-    return bs::Decide{*choice};
+    Reader r;
+    bs::Decide decide;
+    r.must(r.choice(v[1], index_path(path, 1), decide.choice));
+    return decide;
   }
   bad(index_path(path, 0), "unknown action kind \"" + k + "\" (known: p, s, d)");
 }
@@ -980,17 +952,15 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
   }
   const std::optional<std::string> decoded = unbase64url(text_view.substr(kLinkPrefix.size()));
   if (!decoded) bad("link", "not base64url text after \"v1.\"");
-  json doc;
-  try {
-    doc = json::parse(*decoded);
-  } catch (const json::parse_error& e) {
-    bad("link", std::string("not valid JSON inside: ") + e.what());
-  }
+  const json doc = parse_text(decoded->c_str(), "link", "link");
   object(doc, "link", {"g", "t", "s", "b", "p", "n", "a"});
   GameConfigInput in;
   in.config.game = game_type(required(doc, "link", "g"), "link.g");
   in.config.table_size = table_size(required(doc, "link", "t"), "link.t");
-  in.seed = parse_seed(text(required(doc, "link", "s"), "link.s"), "link.s");
+  {
+    Reader r;
+    r.must(r.seed(required(doc, "link", "s"), "link.s", in.seed));
+  }
   in.breaker = static_cast<int>(integer(required(doc, "link", "b"), "link.b", 0, 1));
   const json& players = required(doc, "link", "p");
   if (!players.is_array() || players.size() != 2) bad("link.p", "expected two seats");
