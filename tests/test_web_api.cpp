@@ -316,7 +316,25 @@ TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
       EXPECT_EQ(last["balls"][i][1].get<double>(), result.final_balls[i].position.y);
       EXPECT_EQ(last["balls"][i][3].get<double>(), result.final_balls[i].velocity.x);
     }
-    const json ev = J(bs_playback_events(pb.get(), 0));
+    const std::string ev_text = bs_playback_events(pb.get(), 0);
+    // The events are the result file's, byte for byte: one encoding.
+    {
+      const std::string res = bs::write_result(s, result);
+      std::string want = "{\"from\":0,\"events\":[";
+      std::size_t at = res.find("\"events\": [");
+      ASSERT_NE(at, std::string::npos);
+      for (std::size_t k = 0; k < result.events.size(); ++k) {
+        const std::size_t open = res.find("\n    {", at) + 5;
+        const std::size_t close = res.find('\n', open);
+        std::string line = res.substr(open, close - open);
+        if (line.back() == ',') line.pop_back();
+        want += (k == 0 ? "" : ",") + line;
+        at = close;
+      }
+      want += "]}";
+      EXPECT_EQ(ev_text, want) << file;
+    }
+    const json ev = J(ev_text.c_str());
     ASSERT_EQ(ev["events"].size(), result.events.size());
     for (std::size_t k = 0; k < result.events.size(); ++k) {
       EXPECT_EQ(ev["events"][k]["time"].get<double>(), result.events[k].time);

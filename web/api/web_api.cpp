@@ -87,6 +87,7 @@
 #include "breakshot/simulation.hpp"
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
+#include "io/result_json.hpp"
 
 #ifndef BREAKSHOT_VERSION
 #define BREAKSHOT_VERSION "0.1.0"
@@ -322,43 +323,6 @@ ojson facts_json(const bs::ShotFacts& f) {
   return j;
 }
 
-/// An event as the result file writes it (ids for balls, names for
-/// cushions and pockets).
-ojson event_json(const bs::Scenario& s, const bs::Event& e) {
-  const auto id = [&](std::int32_t i) -> ojson {
-    if (i >= 0 && static_cast<std::size_t>(i) < s.balls.size()) {
-      return s.balls[static_cast<std::size_t>(i)].id;
-    }
-    return nullptr;
-  };
-  ojson j = ojson::object();
-  j["time"] = e.time;
-  j["type"] = bs::to_string(e.type);
-  ojson balls = ojson::array({id(e.ball)});
-  if (e.type == bs::EventType::ball_ball) balls.push_back(id(e.other));
-  j["balls"] = balls;
-  switch (e.type) {
-    case bs::EventType::ball_cushion:
-      j["cushion"] = e.wall >= 0 && static_cast<std::size_t>(e.wall) < s.table.walls.size()
-                         ? ojson(s.table.walls[static_cast<std::size_t>(e.wall)].name)
-                         : ojson(nullptr);
-      break;
-    case bs::EventType::ball_pocket:
-      j["pocket"] = e.pocket >= 0 && static_cast<std::size_t>(e.pocket) < s.table.pockets.size()
-                        ? ojson(s.table.pockets[static_cast<std::size_t>(e.pocket)].name)
-                        : ojson(nullptr);
-      break;
-    case bs::EventType::state_change:
-      j["from"] = bs::to_string(e.from);
-      j["to"] = bs::to_string(e.to);
-      break;
-    case bs::EventType::cue_strike:
-    case bs::EventType::ball_ball:
-      break;
-  }
-  return j;
-}
-
 std::string_view wall_kind(bs::WallKind k) {
   switch (k) {
     case bs::WallKind::segment:
@@ -568,19 +532,21 @@ std::string frame_json(BsPlayback& pb, double t) {
   return j.dump();
 }
 
+/// {"from": from, "events": [...]}, each event as the result file writes
+/// it (io/result_json.hpp: ids for balls, names for cushions and pockets).
 std::string events_json(const BsPlayback& pb, int from) {
   const std::vector<bs::Event>& ev = pb.sim.events();
   if (from < 0 || static_cast<std::size_t>(from) > ev.size()) {
     bad("from", "must be in [0, " + std::to_string(ev.size()) + "], not " + std::to_string(from));
   }
-  ojson list = ojson::array();
+  std::string out = "{\"from\":" + std::to_string(from) + ",\"events\":[";
+  bs::json_io::JsonWriter w(out);
   for (std::size_t k = static_cast<std::size_t>(from); k < ev.size(); ++k) {
-    list.push_back(event_json(pb.scenario, ev[k]));
+    if (k > static_cast<std::size_t>(from)) out += ',';
+    bs::json_io::write_event(w, pb.scenario, ev[k]);
   }
-  ojson j = ojson::object();
-  j["from"] = from;
-  j["events"] = list;
-  return j.dump();
+  out += "]}";
+  return out;
 }
 
 bs::Scenario scenario_from(const char* scenario_json) {
