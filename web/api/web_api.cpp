@@ -252,22 +252,16 @@ std::string seat_name(const json& v, const std::string& path) {
 // ---------------------------------------------------------------------------
 // Writing replies
 
-ojson vec2_json(bs::Vec2 v) { return ojson::array({v.x, v.y}); }
+// The one JSON of each of the game's types (src/io/game_json.hpp), as
+// game records write them.
+using bs::json_io::ruling_json;
+using bs::json_io::strike_json;
+using bs::json_io::vec2_json;
 
 ojson ints_json(const std::vector<int>& v) {
   ojson a = ojson::array();
   for (const int i : v) a.push_back(i);
   return a;
-}
-
-ojson strike_json(const bs::CueStrike& s) {
-  ojson j = ojson::object();
-  j["speed"] = s.speed;
-  j["phi"] = s.phi;
-  j["theta"] = s.theta;
-  j["a"] = s.a;
-  j["b"] = s.b;
-  return j;
 }
 
 /// An action in the form bs_game_act reads.
@@ -295,21 +289,6 @@ std::string_view action_kind(const bs::Action& a) {
   if (std::holds_alternative<bs::PlaceCueBall>(a)) return "place";
   if (std::holds_alternative<bs::Shoot>(a)) return "shoot";
   return "decide";
-}
-
-ojson ruling_json(const bs::Ruling& r) {
-  ojson j = ojson::object();
-  ojson fouls = ojson::array();
-  for (const bs::Foul f : r.fouls) fouls.push_back(bs::to_string(f));
-  j["fouls"] = fouls;
-  j["text"] = r.text;
-  j["turn_continues"] = r.turn_continues;
-  j["legal_break"] = r.legal_break;
-  j["assigned"] = bs::to_string(r.assigned);
-  j["spotted"] = ints_json(r.spotted);
-  j["winner"] = r.winner;
-  j["call_made"] = r.call_made;
-  return j;
 }
 
 ojson facts_json(const bs::ShotFacts& f) {
