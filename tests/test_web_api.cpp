@@ -38,6 +38,7 @@
 namespace {
 
 using nlohmann::json;
+using ojson = nlohmann::ordered_json;
 namespace bs = breakshot;
 
 std::string read_example(const std::string& rel) {
@@ -76,6 +77,20 @@ std::string state_of(BsGame* g) { return bs_game_state(g); }
 std::string link_of(BsGame* g) { return J(bs_game_link(g))["link"].get<std::string>(); }
 std::string record_of(BsGame* g) { return bs_game_record(g); }
 
+/// The action placing the cue ball at (x, y), in the records' form.
+std::string place_json(double x, double y) {
+  return R"({"type": "place_cue_ball", "position": [)" + json(x).dump() + ", " + json(y).dump() +
+         "]}";
+}
+
+/// A shot in the records' form: the strike's members, the call (JSON)
+/// and the safety flag (JSON).
+std::string shoot_json(const std::string& strike, const std::string& call = "null",
+                       const std::string& safety = "false") {
+  return R"({"type": "shoot", "strike": {)" + strike + R"(}, "call": )" + call +
+         R"(, "safety": )" + safety + R"(, "push_out": false})";
+}
+
 /// Acts; fails the test on an error reply.
 json act(BsGame* g, const std::string& action) {
   const std::string reply = bs_game_act(g, action.c_str());
@@ -106,8 +121,8 @@ GamePtr short_game(int ai_actions) {
   GamePtr g = new_game(
       R"({"game": "eight_ball", "table": "8ft", "seed": "2026", "breaker": 0,
           "players": ["human", "club"], "ai_budget": 40})");
-  act(g.get(), R"({"place": [0.5, 0.6]})");
-  act(g.get(), R"({"shoot": {"speed": 9.0, "phi": -1.5, "theta": 0, "a": 0, "b": -0.2}})");
+  act(g.get(), place_json(0.5, 0.6));
+  act(g.get(), shoot_json(R"("speed": 9.0, "phi": -1.5, "theta": 0, "a": 0, "b": -0.2)"));
   for (int k = 0; k < ai_actions; ++k) {
     if (json::parse(state_of(g.get()))["phase"] == "game_over") break;
     step_ai(g.get(), "beginner");
@@ -175,27 +190,39 @@ TEST(WebApi, ErrorsNameTheField) {
   // Actions: the field, or the rules' reason; the game is unchanged.
   GamePtr g = new_game(R"({"game": "eight_ball", "seed": "1", "players": ["human", "beginner"]})");
   const std::string before = state_of(g.get());
-  const std::pair<const char*, const char*> actions[] = {
-      {R"({"shoot": {"speed": "fast", "phi": 0}})", "shoot.speed:"},
-      {R"({"shoot": {"phi": 0}})", "shoot.speed: missing"},
-      {R"({"shoot": {"speed": 1, "phi": 0, "spin": 2}})", "shoot.spin: unknown field"},
-      {R"({"shoot": {"speed": 1, "phi": 0}, "call": {"ball": "x", "pocket": 1}})", "call.ball:"},
-      {R"({"shoot": {"speed": 1, "phi": 0}, "safety": 1})", "safety:"},
-      {R"({"place": [1]})", "place:"},
-      {R"({"place": [0.5, "y"]})", "place[1]:"},
-      {R"({"decide": "maybe"})", "decide:"},
-      {R"({"jump": true})", "(action):"},
-      {R"({"place": [0.5, 0.6], "extra": 1})", "extra: unknown field"},
+  const std::pair<std::string, const char*> actions[] = {
+      {shoot_json(R"("speed": "fast", "phi": 0, "theta": 0, "a": 0, "b": 0)"),
+       "strike.speed: expected a number, not a string"},
+      {shoot_json(R"("phi": 0, "theta": 0, "a": 0, "b": 0)"), "strike.speed: missing required field"},
+      {shoot_json(R"("speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0, "spin": 2)"),
+       "strike.spin: unknown field (known: speed, phi, theta, a, b)"},
+      {shoot_json(R"("speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0)", R"({"ball": "x", "pocket": 1})"),
+       "call.ball: expected an integer in [-1, 15], not a string"},
+      {shoot_json(R"("speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0)", "null", "1"),
+       "safety: expected true or false, not a number"},
+      {R"({"type": "shoot", "strike": {"speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0}})",
+       "call: missing required field"},
+      {R"({"type": "place_cue_ball", "position": [1]})",
+       "position: expected an array of 2 numbers, not an array of 1"},
+      {R"({"type": "place_cue_ball", "position": [0.5, "y"]})", "position[1]: expected a number"},
+      {R"({"type": "decide", "choice": "maybe"})", "choice: unknown choice \"maybe\" (expected \"shoot\", "},
+      {R"({"type": "jump"})", "type: unknown action type \"jump\""},
+      {R"({"place": [0.5, 0.6]})", "type: missing required field"},
+      {R"([1, 2])", "(document): expected an object, not an array"},
+      {R"({"type": "place_cue_ball", "position": [0.5, 0.6], "extra": 1})",
+       "extra: unknown field (known: type, position)"},
+      {R"({"type": "place_cue_ball", "position": [0.5, 0.6], "position": [0.5, 0.7]})",
+       "position: duplicate key"},
       {R"(not json)", "action: not valid JSON"},
   };
   for (const auto& [action, prefix] : actions) {
-    const char* reply = bs_game_act(g.get(), action);
+    const char* reply = bs_game_act(g.get(), action.c_str());
     EXPECT_TRUE(starts_with(error_of(reply), prefix)) << action << " -> " << reply;
   }
   // The rules' reasons (check()).
-  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"decide": "shoot"})")), "");
-  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"shoot": {"speed": 25, "phi": 0}})")), "");
-  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"place": [2.0, 0.6]})")), "");
+  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"type": "decide", "choice": "shoot"})")), "");
+  EXPECT_NE(error_of(bs_game_act(g.get(), shoot_json(R"("speed": 25, "phi": 0, "theta": 0, "a": 0, "b": 0)").c_str())), "");
+  EXPECT_NE(error_of(bs_game_act(g.get(), place_json(2.0, 0.6).c_str())), "");
   EXPECT_EQ(state_of(g.get()), before);
 
   // AI: a human seat needs a level for a hint; unknown levels are named.
@@ -497,14 +524,41 @@ TEST(WebApi, RecordReplaysIdentical) {
 #endif
 }
 
+TEST(WebApi, RepliesUseTheRecordsEncoding) {
+  // One JSON per type: an act reply's action, strike and ruling are the
+  // record's, byte for byte, and the AI's action is that form too.
+  GamePtr g = new_game(R"({"game": "nine_ball", "seed": "9", "players": ["human", "club"], "ai_budget": 30})");
+  std::vector<std::string> replies;
+  replies.push_back(bs_game_act(g.get(), place_json(0.4, 0.5).c_str()));
+  replies.push_back(bs_game_act(g.get(), shoot_json(R"("speed": 8, "phi": 0.01, "theta": 0, "a": 0, "b": 0)").c_str()));
+  for (int k = 0; k < 2 && json::parse(state_of(g.get()))["phase"] != "game_over"; ++k) {
+    const std::string reply = bs_game_ai_action(g.get(), "beginner");
+    const json action = json::parse(reply)["action"];
+    EXPECT_TRUE(action.contains("type")) << reply;
+    replies.push_back(bs_game_act(g.get(), action.dump().c_str()));
+  }
+  const ojson record = ojson::parse(record_of(g.get()));
+  ASSERT_EQ(record["actions"].size(), replies.size());
+  for (std::size_t i = 0; i < replies.size(); ++i) {
+    const ojson reply = ojson::parse(replies[i]);
+    const ojson& recorded = record["actions"][i];
+    EXPECT_EQ(reply["executed"].dump(), recorded["action"].dump()) << i;
+    EXPECT_EQ(reply["ruling"].dump(), recorded["ruling"].dump()) << i;
+    EXPECT_EQ(reply.contains("intended"), !recorded["intended"].is_null()) << i;
+    if (reply.contains("intended")) {
+      EXPECT_EQ(reply["intended"].dump(), recorded["intended"].dump()) << i;
+    }
+  }
+}
+
 TEST(WebApi, LinkRoundTripReproducesTheGameExactly) {
   GamePtr g = short_game(6);
   // A human shot whose numbers only survive as bits: -0, a subnormal,
   // and digits beyond what a decimal would keep.
   const json s = json::parse(state_of(g.get()));
   if (s["phase"] != "game_over" && s["legal"]["must_place"] == false && s["legal"]["choices"].empty()) {
-    act(g.get(), R"({"shoot": {"speed": 2.0000000000000004, "phi": -0.0, "theta": 4.9e-324,
-                     "a": 0.1, "b": -1e-310}, "safety": true})");
+    act(g.get(), shoot_json(R"("speed": 2.0000000000000004, "phi": -0.0, "theta": 4.9e-324,
+                             "a": 0.1, "b": -1e-310)", "null", "true"));
   }
   const std::string link = link_of(g.get());
   ASSERT_TRUE(starts_with(link, "v1."));
@@ -584,7 +638,7 @@ TEST(WebApi, CheckPlacementRefusals) {
 
   // A feeble break that reaches nothing: a foul, the cue ball in hand
   // anywhere for the other player; not on a ball.
-  act(g.get(), R"({"shoot": {"speed": 0.2, "phi": 0}})");
+  act(g.get(), shoot_json(R"("speed": 0.2, "phi": 0, "theta": 0, "a": 0, "b": 0)"));
   const json s = json::parse(state_of(g.get()));
   ASSERT_EQ(s["ball_in_hand"], "anywhere") << s;
   const json& one = s["balls"][1];
@@ -594,7 +648,7 @@ TEST(WebApi, CheckPlacementRefusals) {
   EXPECT_TRUE(J(bs_game_check_placement(g.get(), head + 0.3, width / 2))["ok"].get<bool>());
 
   // Once the cue ball is on the table it is not in hand any more.
-  act(g.get(), R"({"place": [1.0, 0.3]})");
+  act(g.get(), place_json(1.0, 0.3));
   r = J(bs_game_check_placement(g.get(), 1.2, 0.3));
   EXPECT_FALSE(r["ok"].get<bool>());
   EXPECT_NE(r["reason"].get<std::string>().find("not in hand"), std::string::npos) << r;

@@ -198,20 +198,6 @@ const json& required(const json& obj, const std::string& path, std::string_view 
   return *v;
 }
 
-double number(const json& v, const std::string& path) {
-  Reader r;
-  double d = 0.0;
-  r.must(r.number(v, path, d));
-  return d;
-}
-
-bool boolean(const json& v, const std::string& path) {
-  Reader r;
-  bool b = false;
-  r.must(r.boolean(v, path, b));
-  return b;
-}
-
 std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi) {
   Reader r;
   std::int64_t i = 0;
@@ -254,6 +240,7 @@ std::string seat_name(const json& v, const std::string& path) {
 
 // The one JSON of each of the game's types (src/io/game_json.hpp), as
 // game records write them.
+using bs::json_io::action_json;
 using bs::json_io::ruling_json;
 using bs::json_io::strike_json;
 using bs::json_io::vec2_json;
@@ -262,27 +249,6 @@ ojson ints_json(const std::vector<int>& v) {
   ojson a = ojson::array();
   for (const int i : v) a.push_back(i);
   return a;
-}
-
-/// An action in the form bs_game_act reads.
-ojson action_json(const bs::Action& a) {
-  ojson j = ojson::object();
-  if (const auto* p = std::get_if<bs::PlaceCueBall>(&a)) {
-    j["place"] = vec2_json(p->position);
-  } else if (const auto* s = std::get_if<bs::Shoot>(&a)) {
-    j["shoot"] = strike_json(s->strike);
-    if (s->call) {
-      ojson c = ojson::object();
-      c["ball"] = s->call->ball;
-      c["pocket"] = s->call->pocket;
-      j["call"] = c;
-    }
-    j["safety"] = s->safety;
-    j["push_out"] = s->push_out;
-  } else {
-    j["decide"] = bs::to_string(std::get<bs::Decide>(a).choice);
-  }
-  return j;
 }
 
 std::string_view action_kind(const bs::Action& a) {
@@ -615,44 +581,13 @@ std::unique_ptr<BsGame> make_game(const GameConfigInput& in) {
   return std::make_unique<BsGame>(in.config, in.seats, in.seed, in.breaker, in.ai_budget);
 }
 
+/// An action in the records' form (src/io/game_json.hpp), every field
+/// required.
 bs::Action read_action(const json& doc) {
-  if (!doc.is_object()) bad("(action)", bs::json_io::expected("an object", doc));
-  if (find(doc, "place") != nullptr) {
-    object(doc, "", {"place"});
-    const json& p = doc["place"];
-    Reader r;
-    bs::PlaceCueBall place;
-    r.must(r.vec2(p, "place", place.position));
-    return place;
-  }
-  if (find(doc, "decide") != nullptr) {
-    object(doc, "", {"decide"});
-    Reader r;
-    bs::Decide decide;
-    r.must(r.choice(doc["decide"], "decide", decide.choice));
-    return decide;
-  }
-  if (find(doc, "shoot") != nullptr) {
-    object(doc, "", {"shoot", "call", "safety", "push_out"});
-    const json& s = object(doc["shoot"], "shoot", {"speed", "phi", "theta", "a", "b"});
-    bs::Shoot shot;
-    shot.strike.speed = number(required(s, "shoot", "speed"), "shoot.speed");
-    shot.strike.phi = number(required(s, "shoot", "phi"), "shoot.phi");
-    if (const json* v = find(s, "theta")) shot.strike.theta = number(*v, "shoot.theta");
-    if (const json* v = find(s, "a")) shot.strike.a = number(*v, "shoot.a");
-    if (const json* v = find(s, "b")) shot.strike.b = number(*v, "shoot.b");
-    if (const json* c = find(doc, "call"); c != nullptr && !c->is_null()) {
-      object(*c, "call", {"ball", "pocket"});
-      bs::Call call;
-      call.ball = static_cast<int>(integer(required(*c, "call", "ball"), "call.ball", 0, 1000));
-      call.pocket = static_cast<int>(integer(required(*c, "call", "pocket"), "call.pocket", 0, 1000));
-      shot.call = call;
-    }
-    if (const json* v = find(doc, "safety")) shot.safety = boolean(*v, "safety");
-    if (const json* v = find(doc, "push_out")) shot.push_out = boolean(*v, "push_out");
-    return shot;
-  }
-  bad("(action)", "expected one of {\"place\": [x, y]}, {\"shoot\": {...}} or {\"decide\": \"...\"}");
+  Reader r;
+  bs::Action action;
+  r.must(r.action(doc, "", action));
+  return action;
 }
 
 ojson legal_json(const bs::LegalActions& la) {

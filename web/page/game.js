@@ -407,7 +407,14 @@ export class GameUI {
   shotAction() {
     const legal = this.legal();
     const s = this.aim;
-    const action = { shoot: { speed: s.speed, phi: s.phi, theta: s.theta, a: s.a, b: s.b } };
+    // the records' form of an action (src/io/game_json.hpp), every field given
+    const action = {
+      type: 'shoot',
+      strike: { speed: s.speed, phi: s.phi, theta: s.theta, a: s.a, b: s.b },
+      call: null,
+      safety: false,
+      push_out: false,
+    };
     if (legal.call) {
       const call = this.currentCall(this.geometry());
       if (call && call.ball != null && call.pocket != null) action.call = { ball: call.ball, pocket: call.pocket };
@@ -429,7 +436,7 @@ export class GameUI {
       const moved = !c || !c[2] || c[0] !== this.placePos.x || c[1] !== this.placePos.y;
       if (legal.must_place || moved) {
         const keepAim = { ...this.aim };
-        const r = this.doAct({ place: [this.placePos.x, this.placePos.y] }, { keepAim: true });
+        const r = this.doAct({ type: 'place_cue_ball', position: [this.placePos.x, this.placePos.y] }, { keepAim: true });
         if (r.error) return;
         this.aim = keepAim;
         legal = this.legal();
@@ -444,7 +451,7 @@ export class GameUI {
 
   decide(choice) {
     if (!this.canAct()) return;
-    this.doAct({ decide: choice });
+    this.doAct({ type: 'decide', choice });
   }
 
   /** g.act with logging, animation and the AI's turn after it. */

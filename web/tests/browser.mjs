@@ -137,11 +137,11 @@ async function scratchBreak(page) {
   const t = await page.evaluate(() => window.breakshot.game.table());
   const pocket = t.pockets.find((p) => p.name === 'bottom_left');
   const cue = [t.head_string - 0.1, 0.35];
-  const place = await page.evaluate((p) => window.breakshot.act({ place: p }), cue);
+  const place = await page.evaluate((p) => window.breakshot.act({ type: 'place_cue_ball', position: p }), cue);
   check(!place.error, 'placement refused: ' + place.error);
   const phi = Math.atan2(pocket.centre[1] - cue[1], pocket.centre[0] - cue[0]) * 180 / Math.PI;
   const reply = await page.evaluate((s) => window.breakshot.act(s),
-    { shoot: { speed: 2.0, phi, theta: 0, a: 0, b: 0 } });
+    { type: 'shoot', strike: { speed: 2.0, phi, theta: 0, a: 0, b: 0 }, call: null, safety: false, push_out: false });
   check(!reply.error, 'shot refused: ' + reply.error);
   await idle(page);
   return reply;
@@ -182,7 +182,7 @@ test('a shared link reproduces the shot', async ({ browser, url }) => {
   const one = await openPage(browser, url);
   await newGame(one.page, { game: 'eight_ball', opponent: 'friend' });
   const cue = await one.page.evaluate(() => window.breakshot.state().balls[0]);
-  await one.page.evaluate((c) => window.breakshot.act({ shoot: { speed: 8.5, phi: 0.3, theta: 0, a: 0.1, b: -0.1 } }), cue);
+  await one.page.evaluate((c) => window.breakshot.act({ type: 'shoot', strike: { speed: 8.5, phi: 0.3, theta: 0, a: 0.1, b: -0.1 }, call: null, safety: false, push_out: false }), cue);
   await idle(one.page);
   const want = await one.page.evaluate(() => window.breakshot.state());
   await one.page.click('#share');
