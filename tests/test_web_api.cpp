@@ -525,8 +525,8 @@ TEST(WebApi, RecordReplaysIdentical) {
 }
 
 TEST(WebApi, RepliesUseTheRecordsEncoding) {
-  // One JSON per type: an act reply's action, strike and ruling are the
-  // record's, byte for byte, and the AI's action is that form too.
+  // One JSON per type: an act reply's action, strike, ruling and state
+  // are the record's, byte for byte, and the AI's action is that form too.
   GamePtr g = new_game(R"({"game": "nine_ball", "seed": "9", "players": ["human", "club"], "ai_budget": 30})");
   std::vector<std::string> replies;
   replies.push_back(bs_game_act(g.get(), place_json(0.4, 0.5).c_str()));
@@ -548,7 +548,17 @@ TEST(WebApi, RepliesUseTheRecordsEncoding) {
     if (reply.contains("intended")) {
       EXPECT_EQ(reply["intended"].dump(), recorded["intended"].dump()) << i;
     }
+    // The state: the record's, then the seats, the actions and what is legal.
+    ojson state = reply["state"];
+    EXPECT_EQ(state["players"], ojson::array({"human", "club"})) << i;
+    EXPECT_EQ(state["actions"], i + 1) << i;
+    EXPECT_TRUE(state["legal"].is_object()) << i;
+    for (const char* extra : {"players", "actions", "legal"}) state.erase(extra);
+    EXPECT_EQ(state.dump(), recorded["after"].dump()) << i;
   }
+  ojson start = ojson::parse(bs_game_undo_to(g.get(), 0));
+  for (const char* extra : {"players", "actions", "legal"}) start.erase(extra);
+  EXPECT_EQ(start.dump(), record["start"].dump());
 }
 
 TEST(WebApi, LinkRoundTripReproducesTheGameExactly) {
@@ -641,7 +651,7 @@ TEST(WebApi, CheckPlacementRefusals) {
   act(g.get(), shoot_json(R"("speed": 0.2, "phi": 0, "theta": 0, "a": 0, "b": 0)"));
   const json s = json::parse(state_of(g.get()));
   ASSERT_EQ(s["ball_in_hand"], "anywhere") << s;
-  const json& one = s["balls"][1];
+  const json& one = s["position"][1];
   r = J(bs_game_check_placement(g.get(), one[0].get<double>(), one[1].get<double>() + 0.01));
   EXPECT_FALSE(r["ok"].get<bool>());
   EXPECT_NE(r["reason"].get<std::string>().find("overlap"), std::string::npos) << r;

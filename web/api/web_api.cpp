@@ -604,29 +604,12 @@ ojson legal_json(const bs::LegalActions& la) {
   return j;
 }
 
+/// bs_game_state's reply: the state as game records write it
+/// (src/io/game_json.hpp), then the seats, the number of actions and what
+/// the rules allow next.
 ojson state_json(const BsGame& g) {
   const bs::GameState& s = g.state();
-  ojson j = ojson::object();
-  j["game"] = bs::to_string(s.game);
-  j["phase"] = bs::to_string(s.phase);
-  j["player"] = s.player;
-  j["breaker"] = s.breaker;
-  j["ball_in_hand"] = bs::to_string(s.ball_in_hand);
-  j["kitchen_shot"] = s.kitchen_shot;
-  ojson balls = ojson::array();
-  for (std::size_t b = 0; b < s.position.size(); ++b) {
-    balls.push_back(ojson::array({s.position[b].x, s.position[b].y, s.on_table[b] ? 1 : 0}));
-  }
-  j["balls"] = balls;
-  j["group"] = ojson::array({bs::to_string(s.group[0]), bs::to_string(s.group[1])});
-  j["fouls_in_a_row"] = ojson::array({s.fouls_in_a_row[0], s.fouls_in_a_row[1]});
-  j["push_out_allowed"] = s.push_out_allowed;
-  j["after_push_out"] = s.after_push_out;
-  j["winner"] = s.winner;
-  j["result"] = s.result;
-  j["shots"] = s.shots;
-  j["innings"] = s.innings;
-  j["racks"] = s.racks;
+  ojson j = bs::json_io::state_json(s);
   j["players"] = ojson::array({g.seats[0], g.seats[1]});
   j["actions"] = g.record.actions.size();
   j["legal"] = legal_json(g.rules.legal_actions(s));
