@@ -5,7 +5,11 @@
 // parsing (strtod, correctly rounded in glibc and musl) are the same code
 // native and wasm, so a reply is the same bytes on both. Doubles are
 // printed so that they read back exactly (JavaScript's JSON.parse too).
-// bs_simulate returns the engine's own result text (write_result).
+// bs_simulate returns the engine's own result text (write_result), and
+// playback events are written as the result file writes them
+// (src/io/result_json.hpp). The game's types (state, action, strike,
+// ruling) are in the one JSON of game records (src/io/game_json.hpp),
+// both ways: what a reply shows is what the record holds.
 //
 // Games. A BsGame holds the rules and a GameRecord (record.hpp) that
 // grows with every action, so bs_game_record is that record as
@@ -87,6 +91,7 @@
 #include "breakshot/simulation.hpp"
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
+#include "io/json_write.hpp"
 #include "io/result_json.hpp"
 
 #ifndef BREAKSHOT_VERSION
@@ -417,8 +422,8 @@ constexpr std::size_t kFrameStride = 8;
 void compute_frame(BsPlayback& pb, double t) {
   if (!std::isfinite(t)) bad("t", "not a finite number");
   if (t < pb.sim.time()) {
-    bad("t", "the frame time goes backwards (" + ojson(t).dump() + " < " +
-                 ojson(pb.sim.time()).dump() + ")");
+    bad("t", "the frame time goes backwards (" + bs::json_io::format_number(t) + " < " +
+                 bs::json_io::format_number(pb.sim.time()) + ")");
   }
   // A run that ends at a time ends there (as simulate() does).
   const double target = pb.scenario.until.rest ? t : std::fmin(t, pb.scenario.until.time);
@@ -746,7 +751,7 @@ std::string link_text(const BsGame& g) {
   ojson j = ojson::object();
   j["g"] = bs::to_string(g.record.config.game);
   j["t"] = g.record.config.table_size;
-  j["s"] = std::to_string(g.record.seed);
+  j["s"] = bs::json_io::seed_json(g.record.seed);
   j["b"] = g.record.start.breaker;
   j["p"] = ojson::array({g.seats[0], g.seats[1]});
   if (g.ai_budget) j["n"] = *g.ai_budget;
