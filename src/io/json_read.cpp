@@ -388,10 +388,7 @@ bool Reader::text_of(const json& v, const std::string& path, std::string_view wh
 
 bool Reader::seed(const json& v, const std::string& path, std::uint64_t& out) {
   if (!v.is_string()) return fail(path, expected("a seed (a decimal string)", v));
-  return seed_text(v.get_ref<const std::string&>(), path, out);
-}
-
-bool Reader::seed_text(const std::string& s, const std::string& path, std::uint64_t& out) {
+  const std::string& s = v.get_ref<const std::string&>();
   const char* last = s.data() + s.size();
   const auto r = std::from_chars(s.data(), last, out);
   // from_chars takes no sign and no spaces, so the digits alone remain.

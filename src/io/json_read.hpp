@@ -99,8 +99,9 @@ class Reader {
   std::optional<ReadError> error;
 
   Reader() = default;
-  /// `free_key`: a member that object() and exact_object() always allow
-  /// and never look into ("extra" in a scenario).
+  /// `free_key`: a member that known_fields(), object() and
+  /// exact_object() always allow and never look into ("extra" in a
+  /// scenario).
   explicit Reader(std::string_view free_key) : free_key_(free_key) {}
   virtual ~Reader() = default;
   Reader(const Reader&) = default;
@@ -151,14 +152,12 @@ class Reader {
   bool boolean(const json& v, const std::string& path, bool& out);
   bool text(const json& v, const std::string& path, std::string& out);
   /// A string that is one of `names`; `what` names it in the message
-  /// ("unknown size \"10ft\" (expected \"7ft\", \"8ft\" or \"9ft\")").
+  /// ("unknown table size \"10ft\" (expected \"7ft\", \"8ft\" or \"9ft\")").
   bool text_of(const json& v, const std::string& path, std::string_view what,
                std::initializer_list<std::string_view> names, std::string& out);
   /// A 64-bit seed written as a decimal string (64-bit integers do not
   /// survive readers that keep numbers in doubles).
   bool seed(const json& v, const std::string& path, std::uint64_t& out);
-  /// The same, of text already known to be a string.
-  bool seed_text(const std::string& s, const std::string& path, std::uint64_t& out);
 
   /// An enum by its to_string name: `parse` gives the value of a name,
   /// `all` lists every value for the message.
