@@ -191,7 +191,7 @@ TEST(PoolInvalid, TableSize) {
   doc["table"].erase("size");
   expect_invalid(doc, "table.size", "missing required field");
   doc["table"]["size"] = "10ft";
-  expect_invalid(doc, "table.size", "unknown size \"10ft\"");
+  expect_invalid(doc, "table.size", "unknown table size \"10ft\" (expected \"7ft\", \"8ft\" or \"9ft\")");
   doc["table"]["size"] = 9;
   expect_invalid(doc, "table.size", "expected a string");
   doc["table"]["size"] = "9ft";
@@ -378,7 +378,8 @@ TEST(PoolInvalid, Racks) {
 
   doc = pool_break();
   doc["rack"]["game"] = "straight_pool";
-  expect_invalid(doc, "rack.game", "unknown game");
+  expect_invalid(doc, "rack.game",
+                 "unknown game \"straight_pool\" (expected \"eight_ball\" or \"nine_ball\")");
   doc["rack"].erase("game");
   expect_invalid(doc, "rack.game", "missing required field");
   doc = pool_break();

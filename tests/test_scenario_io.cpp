@@ -410,7 +410,11 @@ TEST(ScenarioInvalid, UnknownFields) {
   expect_invalid(doc, "bals", "unknown field");
   doc = base();
   doc["physics"]["frction"] = 0.1;
-  expect_invalid(doc, "physics.frction", "unknown field");
+  // The message lists the fields the object may have.
+  expect_invalid(doc, "physics.frction",
+                 "unknown field (known: model, ball_ball_restitution, ball_ball_friction, "
+                 "gravity, deceleration, sliding_friction, rolling_friction, spinning_friction, "
+                 "collapse_speed, ball_clusters)");
   doc = base();
   doc["table"]["cushion_restitutoin"] = 0.9;  // cushion_restitution is a field of any table
   expect_invalid(doc, "table.cushion_restitutoin", "unknown field");

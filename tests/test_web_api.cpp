@@ -39,6 +39,7 @@
 namespace {
 
 using nlohmann::json;
+using ojson = nlohmann::ordered_json;
 namespace bs = breakshot;
 
 std::string read_example(const std::string& rel) {
@@ -77,6 +78,20 @@ std::string state_of(BsGame* g) { return bs_game_state(g); }
 std::string link_of(BsGame* g) { return J(bs_game_link(g))["link"].get<std::string>(); }
 std::string record_of(BsGame* g) { return bs_game_record(g); }
 
+/// The action placing the cue ball at (x, y), in the records' form.
+std::string place_json(double x, double y) {
+  return R"({"type": "place_cue_ball", "position": [)" + json(x).dump() + ", " + json(y).dump() +
+         "]}";
+}
+
+/// A shot in the records' form: the strike's members, the call (JSON)
+/// and the safety flag (JSON).
+std::string shoot_json(const std::string& strike, const std::string& call = "null",
+                       const std::string& safety = "false") {
+  return R"({"type": "shoot", "strike": {)" + strike + R"(}, "call": )" + call +
+         R"(, "safety": )" + safety + R"(, "push_out": false})";
+}
+
 /// Acts; fails the test on an error reply.
 json act(BsGame* g, const std::string& action) {
   const std::string reply = bs_game_act(g, action.c_str());
@@ -107,8 +122,8 @@ GamePtr short_game(int ai_actions) {
   GamePtr g = new_game(
       R"({"game": "eight_ball", "table": "8ft", "seed": "2026", "breaker": 0,
           "players": ["human", "club"], "ai_budget": 40})");
-  act(g.get(), R"({"place": [0.5, 0.6]})");
-  act(g.get(), R"({"shoot": {"speed": 9.0, "phi": -1.5, "theta": 0, "a": 0, "b": -0.2}})");
+  act(g.get(), place_json(0.5, 0.6));
+  act(g.get(), shoot_json(R"("speed": 9.0, "phi": -1.5, "theta": 0, "a": 0, "b": -0.2)"));
   for (int k = 0; k < ai_actions; ++k) {
     if (json::parse(state_of(g.get()))["phase"] == "game_over") break;
     step_ai(g.get(), "beginner");
@@ -148,9 +163,9 @@ TEST(WebApi, ErrorsNameTheField) {
 
   // Game configs.
   const std::pair<const char*, const char*> configs[] = {
-      {R"({"players": ["human", "human"]})", "game: missing"},
+      {R"({"players": ["human", "human"]})", "game: missing required field"},
       {R"({"game": "snooker", "players": ["human", "human"]})", "game:"},
-      {R"({"game": "eight_ball"})", "players: missing"},
+      {R"({"game": "eight_ball"})", "players: missing required field"},
       {R"({"game": "eight_ball", "players": ["human"]})", "players:"},
       {R"({"game": "eight_ball", "players": ["human", "wizard"]})", "players[1]:"},
       {R"({"game": "eight_ball", "players": ["human", 3]})", "players[1]:"},
@@ -159,7 +174,10 @@ TEST(WebApi, ErrorsNameTheField) {
       {R"({"game": "eight_ball", "players": ["human", "club"], "breaker": 2})", "breaker:"},
       {R"({"game": "eight_ball", "players": ["human", "club"], "table": "6ft"})", "table:"},
       {R"({"game": "eight_ball", "players": ["human", "club"], "ai_budget": 0})", "ai_budget:"},
-      {R"({"game": "eight_ball", "players": ["human", "club"], "colour": "red"})", "colour: unknown key"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "colour": "red"})", "colour: unknown field (known: game, table, seed, breaker, players, ai_budget)"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "seed": "1", "seed": "2"})", "seed: duplicate key"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "table": "6ft"})",
+       "table: unknown table size \"6ft\" (expected \"7ft\", \"8ft\" or \"9ft\")"},
       {R"([1, 2])", "(document):"},
       {R"({"game": )", "config: not valid JSON"},
   };
@@ -173,27 +191,39 @@ TEST(WebApi, ErrorsNameTheField) {
   // Actions: the field, or the rules' reason; the game is unchanged.
   GamePtr g = new_game(R"({"game": "eight_ball", "seed": "1", "players": ["human", "beginner"]})");
   const std::string before = state_of(g.get());
-  const std::pair<const char*, const char*> actions[] = {
-      {R"({"shoot": {"speed": "fast", "phi": 0}})", "shoot.speed:"},
-      {R"({"shoot": {"phi": 0}})", "shoot.speed: missing"},
-      {R"({"shoot": {"speed": 1, "phi": 0, "spin": 2}})", "shoot.spin: unknown key"},
-      {R"({"shoot": {"speed": 1, "phi": 0}, "call": {"ball": "x", "pocket": 1}})", "call.ball:"},
-      {R"({"shoot": {"speed": 1, "phi": 0}, "safety": 1})", "safety:"},
-      {R"({"place": [1]})", "place:"},
-      {R"({"place": [0.5, "y"]})", "place[1]:"},
-      {R"({"decide": "maybe"})", "decide:"},
-      {R"({"jump": true})", "(action):"},
-      {R"({"place": [0.5, 0.6], "extra": 1})", "extra: unknown key"},
+  const std::pair<std::string, const char*> actions[] = {
+      {shoot_json(R"("speed": "fast", "phi": 0, "theta": 0, "a": 0, "b": 0)"),
+       "strike.speed: expected a number, not a string"},
+      {shoot_json(R"("phi": 0, "theta": 0, "a": 0, "b": 0)"), "strike.speed: missing required field"},
+      {shoot_json(R"("speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0, "spin": 2)"),
+       "strike.spin: unknown field (known: speed, phi, theta, a, b)"},
+      {shoot_json(R"("speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0)", R"({"ball": "x", "pocket": 1})"),
+       "call.ball: expected an integer in [-1, 15], not a string"},
+      {shoot_json(R"("speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0)", "null", "1"),
+       "safety: expected true or false, not a number"},
+      {R"({"type": "shoot", "strike": {"speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0}})",
+       "call: missing required field"},
+      {R"({"type": "place_cue_ball", "position": [1]})",
+       "position: expected an array of 2 numbers, not an array of 1"},
+      {R"({"type": "place_cue_ball", "position": [0.5, "y"]})", "position[1]: expected a number"},
+      {R"({"type": "decide", "choice": "maybe"})", "choice: unknown choice \"maybe\" (expected \"shoot\", "},
+      {R"({"type": "jump"})", "type: unknown action type \"jump\""},
+      {R"({"place": [0.5, 0.6]})", "type: missing required field"},
+      {R"([1, 2])", "(document): expected an object, not an array"},
+      {R"({"type": "place_cue_ball", "position": [0.5, 0.6], "extra": 1})",
+       "extra: unknown field (known: type, position)"},
+      {R"({"type": "place_cue_ball", "position": [0.5, 0.6], "position": [0.5, 0.7]})",
+       "position: duplicate key"},
       {R"(not json)", "action: not valid JSON"},
   };
   for (const auto& [action, prefix] : actions) {
-    const char* reply = bs_game_act(g.get(), action);
+    const char* reply = bs_game_act(g.get(), action.c_str());
     EXPECT_TRUE(starts_with(error_of(reply), prefix)) << action << " -> " << reply;
   }
   // The rules' reasons (check()).
-  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"decide": "shoot"})")), "");
-  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"shoot": {"speed": 25, "phi": 0}})")), "");
-  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"place": [2.0, 0.6]})")), "");
+  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"type": "decide", "choice": "shoot"})")), "");
+  EXPECT_NE(error_of(bs_game_act(g.get(), shoot_json(R"("speed": 25, "phi": 0, "theta": 0, "a": 0, "b": 0)").c_str())), "");
+  EXPECT_NE(error_of(bs_game_act(g.get(), place_json(2.0, 0.6).c_str())), "");
   EXPECT_EQ(state_of(g.get()), before);
 
   // AI: a human seat needs a level for a hint; unknown levels are named.
@@ -230,10 +260,8 @@ TEST(WebApi, ErrorsNameTheField) {
   EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), 100000)), "from:"));
 }
 
-TEST(WebApi, LinkErrorsNameTheActionRefused) {
-  // {"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","shoot"]]}
-  const std::string body =
-      R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","shoot"]]})";
+/// A link holding `body`: "v1." and its base64url.
+std::string link_of_body(const std::string& body) {
   static constexpr char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
   std::string enc;
   std::uint32_t acc = 0;
@@ -247,8 +275,27 @@ TEST(WebApi, LinkErrorsNameTheActionRefused) {
     }
   }
   if (bits > 0) enc.push_back(kB64[(acc << (6 - bits)) & 63]);
-  EXPECT_EQ(bs_game_from_link(("v1." + enc).c_str()), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "link.a[0]: refused:")) << bs_last_error();
+  return "v1." + enc;
+}
+
+TEST(WebApi, LinkErrorsNameTheActionRefused) {
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","shoot"]]})",
+       "link.a[0]: refused:"},
+      // Read as strictly as a record: repeated keys, unknown names.
+      {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"b":1,"p":["human","human"],"a":[]})",
+       "link.b: duplicate key"},
+      {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","x"],["d","x"]]})",
+       "link.a[0][1]: unknown choice \"x\" (expected \"shoot\", "},
+      {R"({"g":"snooker","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
+       "link.g: unknown game \"snooker\" (expected \"eight_ball\" or \"nine_ball\")"},
+      {R"({"g":"eight_ball","t":"9ft","s":"x1","b":0,"p":["human","human"],"a":[]})",
+       "link.s: expected a seed: a decimal integer in [0, 2^64), not \"x1\""},
+  };
+  for (const auto& [body, prefix] : cases) {
+    EXPECT_EQ(bs_game_from_link(link_of_body(body).c_str()), nullptr) << body;
+    EXPECT_TRUE(starts_with(error_of(bs_last_error()), prefix)) << body << " -> " << bs_last_error();
+  }
 }
 
 TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
@@ -297,7 +344,25 @@ TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
       EXPECT_EQ(last["balls"][i][1].get<double>(), result.final_balls[i].position.y);
       EXPECT_EQ(last["balls"][i][3].get<double>(), result.final_balls[i].velocity.x);
     }
-    const json ev = J(bs_playback_events(pb.get(), 0));
+    const std::string ev_text = bs_playback_events(pb.get(), 0);
+    // The events are the result file's, byte for byte: one encoding.
+    {
+      const std::string res = bs::write_result(s, result);
+      std::string want = "{\"from\":0,\"events\":[";
+      std::size_t at = res.find("\"events\": [");
+      ASSERT_NE(at, std::string::npos);
+      for (std::size_t k = 0; k < result.events.size(); ++k) {
+        const std::size_t open = res.find("\n    {", at) + 5;
+        const std::size_t close = res.find('\n', open);
+        std::string line = res.substr(open, close - open);
+        if (line.back() == ',') line.pop_back();
+        want += (k == 0 ? "" : ",") + line;
+        at = close;
+      }
+      want += "]}";
+      EXPECT_EQ(ev_text, want) << file;
+    }
+    const json ev = J(ev_text.c_str());
     ASSERT_EQ(ev["events"].size(), result.events.size());
     for (std::size_t k = 0; k < result.events.size(); ++k) {
       EXPECT_EQ(ev["events"][k]["time"].get<double>(), result.events[k].time);
@@ -460,14 +525,51 @@ TEST(WebApi, RecordReplaysIdentical) {
 #endif
 }
 
+TEST(WebApi, RepliesUseTheRecordsEncoding) {
+  // One JSON per type: an act reply's action, strike, ruling and state
+  // are the record's, byte for byte, and the AI's action is that form too.
+  GamePtr g = new_game(R"({"game": "nine_ball", "seed": "9", "players": ["human", "club"], "ai_budget": 30})");
+  std::vector<std::string> replies;
+  replies.push_back(bs_game_act(g.get(), place_json(0.4, 0.5).c_str()));
+  replies.push_back(bs_game_act(g.get(), shoot_json(R"("speed": 8, "phi": 0.01, "theta": 0, "a": 0, "b": 0)").c_str()));
+  for (int k = 0; k < 2 && json::parse(state_of(g.get()))["phase"] != "game_over"; ++k) {
+    const std::string reply = bs_game_ai_action(g.get(), "beginner");
+    const json action = json::parse(reply)["action"];
+    EXPECT_TRUE(action.contains("type")) << reply;
+    replies.push_back(bs_game_act(g.get(), action.dump().c_str()));
+  }
+  const ojson record = ojson::parse(record_of(g.get()));
+  ASSERT_EQ(record["actions"].size(), replies.size());
+  for (std::size_t i = 0; i < replies.size(); ++i) {
+    const ojson reply = ojson::parse(replies[i]);
+    const ojson& recorded = record["actions"][i];
+    EXPECT_EQ(reply["executed"].dump(), recorded["action"].dump()) << i;
+    EXPECT_EQ(reply["ruling"].dump(), recorded["ruling"].dump()) << i;
+    EXPECT_EQ(reply.contains("intended"), !recorded["intended"].is_null()) << i;
+    if (reply.contains("intended")) {
+      EXPECT_EQ(reply["intended"].dump(), recorded["intended"].dump()) << i;
+    }
+    // The state: the record's, then the seats, the actions and what is legal.
+    ojson state = reply["state"];
+    EXPECT_EQ(state["players"], ojson::array({"human", "club"})) << i;
+    EXPECT_EQ(state["actions"], i + 1) << i;
+    EXPECT_TRUE(state["legal"].is_object()) << i;
+    for (const char* extra : {"players", "actions", "legal"}) state.erase(extra);
+    EXPECT_EQ(state.dump(), recorded["after"].dump()) << i;
+  }
+  ojson start = ojson::parse(bs_game_undo_to(g.get(), 0));
+  for (const char* extra : {"players", "actions", "legal"}) start.erase(extra);
+  EXPECT_EQ(start.dump(), record["start"].dump());
+}
+
 TEST(WebApi, LinkRoundTripReproducesTheGameExactly) {
   GamePtr g = short_game(6);
   // A human shot whose numbers only survive as bits: -0, a subnormal,
   // and digits beyond what a decimal would keep.
   const json s = json::parse(state_of(g.get()));
   if (s["phase"] != "game_over" && s["legal"]["must_place"] == false && s["legal"]["choices"].empty()) {
-    act(g.get(), R"({"shoot": {"speed": 2.0000000000000004, "phi": -0.0, "theta": 4.9e-324,
-                     "a": 0.1, "b": -1e-310}, "safety": true})");
+    act(g.get(), shoot_json(R"("speed": 2.0000000000000004, "phi": -0.0, "theta": 4.9e-324,
+                             "a": 0.1, "b": -1e-310)", "null", "true"));
   }
   const std::string link = link_of(g.get());
   ASSERT_TRUE(starts_with(link, "v1."));
@@ -547,17 +649,17 @@ TEST(WebApi, CheckPlacementRefusals) {
 
   // A feeble break that reaches nothing: a foul, the cue ball in hand
   // anywhere for the other player; not on a ball.
-  act(g.get(), R"({"shoot": {"speed": 0.2, "phi": 0}})");
+  act(g.get(), shoot_json(R"("speed": 0.2, "phi": 0, "theta": 0, "a": 0, "b": 0)"));
   const json s = json::parse(state_of(g.get()));
   ASSERT_EQ(s["ball_in_hand"], "anywhere") << s;
-  const json& one = s["balls"][1];
+  const json& one = s["position"][1];
   r = J(bs_game_check_placement(g.get(), one[0].get<double>(), one[1].get<double>() + 0.01));
   EXPECT_FALSE(r["ok"].get<bool>());
   EXPECT_NE(r["reason"].get<std::string>().find("overlap"), std::string::npos) << r;
   EXPECT_TRUE(J(bs_game_check_placement(g.get(), head + 0.3, width / 2))["ok"].get<bool>());
 
   // Once the cue ball is on the table it is not in hand any more.
-  act(g.get(), R"({"place": [1.0, 0.3]})");
+  act(g.get(), place_json(1.0, 0.3));
   r = J(bs_game_check_placement(g.get(), 1.2, 0.3));
   EXPECT_FALSE(r["ok"].get<bool>());
   EXPECT_NE(r["reason"].get<std::string>().find("not in hand"), std::string::npos) << r;

@@ -32,18 +32,21 @@
 //   ruling  {"fouls": [names], "legal_break", "turn_continues", "assigned",
 //            "spotted": [ball numbers], "winner", "text", "call_made"}
 //
-// Every field is always written (null for an empty optional) and always
-// required on reading, so a record cannot lose a field without notice.
+// The config and the NOISE, STATE, action, STRIKE and ruling objects are
+// the one JSON of those types (io/game_json.hpp), which the web facade
+// uses too. Every field is always written (null for an empty optional)
+// and always required on reading, so a record cannot lose a field without
+// notice.
 // Enum values are the names of game.hpp's to_string. Seeds are decimal
 // strings (64-bit integers do not survive readers that keep numbers in
 // doubles). Doubles are printed by nlohmann::json in a form that reads
 // back to the same bits, so write(read(write(r))) == write(r) byte for
 // byte.
 //
-// The reader follows src/io/scenario_json.cpp: the first problem stops
-// the read and is reported with its JSON path; unknown and repeated keys
-// are errors, because a record that reads "almost" right would replay as
-// a different game.
+// The reader is io/json_read.hpp's, as the scenario reader's: the first
+// problem stops the read and is reported with its JSON path; unknown and
+// repeated keys are errors, because a record that reads "almost" right
+// would replay as a different game.
 //
 // replay() lives here too: it names what differs by its path in this
 // format, found by comparing the JSON of the recorded and the replayed
@@ -51,18 +54,15 @@
 
 #include <algorithm>
 #include <bit>
-#include <charconv>
 #include <climits>
 #include <cmath>
 #include <cstdint>
 #include <exception>
-#include <initializer_list>
 #include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -70,149 +70,29 @@
 #include <nlohmann/json.hpp>
 
 #include "breakshot/record_io.hpp"
-
 #include "breakshot/session.hpp"
+#include "io/game_json.hpp"
+#include "io/json_read.hpp"
 
 namespace breakshot {
 
 namespace {
 
-using nlohmann::json;
-// Written documents keep their keys in the order they are added.
-using ojson = nlohmann::ordered_json;
-
-constexpr const char* kDocumentPath = "(document)";
-
-// ---------------------------------------------------------------------------
-// Paths, as scenario_json.cpp writes them: a.b[3].c
-
-std::string member_path(std::string path, std::string_view key) {
-  if (!path.empty()) path += '.';
-  path += key;
-  return path;
-}
-
-std::string index_path(std::string path, std::size_t i) {
-  path += '[';
-  path += std::to_string(i);
-  path += ']';
-  return path;
-}
+using json_io::action_json;
+using json_io::config_json;
+using json_io::index_path;
+using json_io::json;
+using json_io::kDocumentPath;
+using json_io::member_path;
+using json_io::noise_json;
+using json_io::ojson;
+using json_io::ruling_json;
+using json_io::seed_json;
+using json_io::state_json;
+using json_io::strike_json;
 
 // ---------------------------------------------------------------------------
 // Writing
-
-ojson seed_json(std::uint64_t s) { return std::to_string(s); }
-
-ojson vec2_json(Vec2 v) { return ojson::array({v.x, v.y}); }
-
-ojson strike_json(const CueStrike& s) {
-  const auto& [speed, phi, theta, a, b] = s;
-  ojson j = ojson::object();
-  j["speed"] = speed;
-  j["phi"] = phi;
-  j["theta"] = theta;
-  j["a"] = a;
-  j["b"] = b;
-  return j;
-}
-
-ojson config_json(const GameConfig& c) {
-  const auto& [game, table_size, ball_radius, ball_mass, max_shots] = c;
-  ojson j = ojson::object();
-  j["game"] = to_string(game);
-  j["table_size"] = table_size;
-  j["ball_radius"] = ball_radius;
-  j["ball_mass"] = ball_mass;
-  j["max_shots"] = max_shots;
-  return j;
-}
-
-ojson noise_json(const NoiseModel& n) {
-  const auto& [phi, theta, speed, a, b] = n;
-  ojson j = ojson::object();
-  j["phi"] = phi;
-  j["theta"] = theta;
-  j["speed"] = speed;
-  j["a"] = a;
-  j["b"] = b;
-  return j;
-}
-
-ojson state_json(const GameState& s) {
-  // Structured bindings name every member: when GameState gains or loses
-  // one, this stops compiling instead of writing records that miss it.
-  const auto& [game, position, on_table, phase, player, breaker, ball_in_hand, kitchen_shot,
-               group, fouls_in_a_row, push_out_allowed, after_push_out, scratch_on_break,
-               winner, result, shots, innings, rack_seed, racks] = s;
-  ojson j = ojson::object();
-  j["game"] = to_string(game);
-  j["phase"] = to_string(phase);
-  j["player"] = player;
-  j["breaker"] = breaker;
-  j["ball_in_hand"] = to_string(ball_in_hand);
-  j["kitchen_shot"] = kitchen_shot;
-  j["group"] = ojson::array({to_string(group[0]), to_string(group[1])});
-  j["fouls_in_a_row"] = ojson::array({fouls_in_a_row[0], fouls_in_a_row[1]});
-  j["push_out_allowed"] = push_out_allowed;
-  j["after_push_out"] = after_push_out;
-  j["scratch_on_break"] = scratch_on_break;
-  j["winner"] = winner;
-  j["result"] = result;
-  j["shots"] = shots;
-  j["innings"] = innings;
-  j["rack_seed"] = seed_json(rack_seed);
-  j["racks"] = racks;
-  ojson pos = ojson::array();
-  for (const Vec2& p : position) pos.push_back(vec2_json(p));
-  j["position"] = std::move(pos);
-  ojson on = ojson::array();
-  for (const std::uint8_t b : on_table) on.push_back(static_cast<int>(b));
-  j["on_table"] = std::move(on);
-  return j;
-}
-
-ojson ruling_json(const Ruling& r) {
-  const auto& [fouls, legal_break, turn_continues, assigned, spotted, winner, text, call_made] = r;
-  ojson j = ojson::object();
-  ojson names = ojson::array();
-  for (const Foul f : fouls) names.push_back(to_string(f));
-  j["fouls"] = std::move(names);
-  j["legal_break"] = legal_break;
-  j["turn_continues"] = turn_continues;
-  j["assigned"] = to_string(assigned);
-  j["spotted"] = spotted;
-  j["winner"] = winner;
-  j["text"] = text;
-  j["call_made"] = call_made;
-  return j;
-}
-
-ojson action_json(const Action& a) {
-  ojson j = ojson::object();
-  if (const auto* place = std::get_if<PlaceCueBall>(&a)) {
-    j["type"] = "place_cue_ball";
-    j["position"] = vec2_json(place->position);
-  } else if (const auto* shoot = std::get_if<Shoot>(&a)) {
-    const auto& [strike, call, safety, push_out] = *shoot;
-    j["type"] = "shoot";
-    j["strike"] = strike_json(strike);
-    if (call) {
-      const auto& [ball, pocket] = *call;
-      j["call"] = ojson::object();
-      j["call"]["ball"] = ball;
-      j["call"]["pocket"] = pocket;
-    } else {
-      j["call"] = nullptr;
-    }
-    j["safety"] = safety;
-    j["push_out"] = push_out;
-  } else {
-    j["type"] = "decide";
-    j["choice"] = to_string(std::get<Decide>(a).choice);
-  }
-  return j;
-}
 
 ojson recorded_action_json(const RecordedAction& ra) {
   ojson j = ojson::object();
@@ -254,259 +134,22 @@ std::string dump_compact(const ojson& j) {
 }
 
 // ---------------------------------------------------------------------------
-// Reading: the document, with repeated keys noticed
-
-std::string strip_exception_id(std::string_view what) {
-  if (!what.empty() && what.front() == '[') {
-    const auto close = what.find("] ");
-    if (close != std::string_view::npos) what.remove_prefix(close + 2);
-  }
-  return std::string(what);
-}
-
-/// Builds the document from nlohmann's SAX events and remembers the path
-/// of the first key repeated within one object: json::parse keeps the
-/// last value without a word. An explicit stack, so deep nesting cannot
-/// overflow the call stack.
-class DocumentBuilder {
- public:
-  json root;
-  std::optional<std::string> duplicate_path;
-  std::optional<std::string> parse_error_text;
-
-  bool null() { return put(json(nullptr)); }
-  bool boolean(bool v) { return put(json(v)); }
-  bool number_integer(json::number_integer_t v) { return put(json(v)); }
-  bool number_unsigned(json::number_unsigned_t v) { return put(json(v)); }
-  bool number_float(json::number_float_t v, const json::string_t& /*text*/) {
-    return put(json(v));
-  }
-  bool string(json::string_t& v) { return put(json(std::move(v))); }
-  bool binary(json::binary_t& v) { return put(json::binary(std::move(v))); }
-  bool start_object(std::size_t /*size*/) { return open(json::object()); }
-  bool start_array(std::size_t /*size*/) { return open(json::array()); }
-  bool end_object() { return close(); }
-  bool end_array() { return close(); }
-
-  bool key(json::string_t& k) {
-    Frame& f = frames_.back();
-    if (!duplicate_path && f.value->contains(k)) {
-      std::string path;
-      for (std::size_t i = 1; i < frames_.size(); ++i) {
-        path = frames_[i].parent_is_object ? member_path(path, frames_[i].key_in_parent)
-                                           : index_path(path, frames_[i].index_in_parent);
-      }
-      duplicate_path = member_path(path, k);
-    }
-    f.key = std::move(k);
-    return true;
-  }
-
-  bool parse_error(std::size_t /*position*/, const std::string& /*last_token*/,
-                   const json::exception& ex) {
-    parse_error_text = strip_exception_id(ex.what());
-    return false;
-  }
-
- private:
-  struct Frame {
-    json* value = nullptr;  // stable: its parent gets nothing new while it is open
-    std::string key;        // objects: key of the value being read
-    std::string key_in_parent;
-    std::size_t index_in_parent = 0;
-    bool parent_is_object = false;
-  };
-
-  bool put(json&& v) {
-    add(std::move(v));
-    return true;
-  }
-
-  json* add(json&& v) {
-    if (frames_.empty()) {
-      root = std::move(v);
-      return &root;
-    }
-    Frame& f = frames_.back();
-    if (f.value->is_object()) {
-      json& slot = (*f.value)[f.key];
-      slot = std::move(v);
-      return &slot;
-    }
-    f.value->push_back(std::move(v));
-    return &f.value->back();
-  }
-
-  bool open(json&& v) {
-    Frame child;
-    if (!frames_.empty()) {
-      const Frame& parent = frames_.back();
-      child.parent_is_object = parent.value->is_object();
-      if (child.parent_is_object) {
-        child.key_in_parent = parent.key;
-      } else {
-        child.index_in_parent = parent.value->size();
-      }
-    }
-    child.value = add(std::move(v));
-    frames_.push_back(std::move(child));
-    return true;
-  }
-
-  bool close() {
-    frames_.pop_back();
-    return true;
-  }
-
-  std::vector<Frame> frames_;
-};
-
-std::string type_name(const json& v) {
-  switch (v.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
-    case json::value_t::number_integer:
-    case json::value_t::number_unsigned:
-    case json::value_t::number_float: return "a number";
-    case json::value_t::binary: return "binary data";
-    case json::value_t::discarded: return "nothing";
-  }
-  return "an unknown value";
-}
-
-std::string expected(std::string_view what, const json& v) {
-  return "expected " + std::string(what) + ", not " + type_name(v);
-}
+// Reading
 
 /// Builds a GameRecord from a parsed document. Every function returns
 /// false after recording the first problem in `error`.
-class RecordReader {
+class RecordReader : public json_io::GameReader {
  public:
-  std::optional<RecordError> error;
-
   bool read(const json& doc, GameRecord& r);
 
  private:
-  bool fail(std::string path, std::string reason) {
-    error = RecordError{std::move(path), std::move(reason)};
-    return false;
-  }
-
-  /// `v` must be an object with exactly the fields `names`: the record
-  /// writer writes every field, so a missing one is damage, not a default.
-  bool object(const json& v, const std::string& path,
-              std::initializer_list<std::string_view> names) {
-    if (!v.is_object()) return fail(path.empty() ? kDocumentPath : path, expected("an object", v));
-    for (const auto& [key, value] : v.items()) {
-      if (std::find(names.begin(), names.end(), key) == names.end()) {
-        return fail(member_path(path, key), "unknown field");
-      }
-    }
-    for (std::string_view name : names) {
-      if (!v.contains(name)) return fail(member_path(path, name), "missing required field");
-    }
-    return true;
-  }
-
-  bool array(const json& v, const std::string& path, std::optional<std::size_t> size = {}) {
-    if (!v.is_array()) return fail(path, expected("an array", v));
-    if (size && v.size() != *size) {
-      return fail(path, "expected an array of " + std::to_string(*size) + ", not an array of " +
-                            std::to_string(v.size()));
-    }
-    return true;
-  }
-
-  bool number(const json& v, const std::string& path, double& out) {
-    if (!v.is_number()) return fail(path, expected("a number", v));
-    const double x = v.get<double>();
-    if (!std::isfinite(x)) return fail(path, "expected a finite number");
-    out = x;
-    return true;
-  }
-
-  bool non_negative(const json& v, const std::string& path, double& out) {
-    if (!number(v, path, out)) return false;
-    if (out >= 0.0) return true;
-    return fail(path, "must be >= 0, not " + v.dump());
-  }
-
-  bool positive(const json& v, const std::string& path, double& out) {
-    if (!number(v, path, out)) return false;
-    if (out > 0.0) return true;
-    return fail(path, "must be positive, not " + v.dump());
-  }
-
-  bool integer(const json& v, const std::string& path, int lo, int hi, int& out) {
-    if (!v.is_number_integer()) return fail(path, expected("an integer", v));
-    const bool in_range =
-        v.is_number_unsigned()
-            ? hi >= 0 && v.get<std::uint64_t>() <= static_cast<std::uint64_t>(hi) &&
-                  (lo <= 0 || v.get<std::uint64_t>() >= static_cast<std::uint64_t>(lo))
-            : v.get<std::int64_t>() >= lo && v.get<std::int64_t>() <= hi;
-    if (!in_range) {
-      return fail(path, "must be an integer in [" + std::to_string(lo) + ", " +
-                            std::to_string(hi) + "], not " + v.dump());
-    }
-    out = v.get<int>();
-    return true;
-  }
-
-  bool boolean(const json& v, const std::string& path, bool& out) {
-    if (!v.is_boolean()) return fail(path, expected("true or false", v));
-    out = v.get<bool>();
-    return true;
-  }
-
-  bool text(const json& v, const std::string& path, std::string& out) {
-    if (!v.is_string()) return fail(path, expected("a string", v));
-    out = v.get<std::string>();
-    return true;
-  }
-
-  /// A 64-bit seed written as a decimal string.
-  bool seed(const json& v, const std::string& path, std::uint64_t& out) {
-    if (!v.is_string()) return fail(path, expected("a seed (a decimal string)", v));
-    const std::string& s = v.get_ref<const std::string&>();
-    const char* last = s.data() + s.size();
-    const auto r = std::from_chars(s.data(), last, out);
-    // from_chars takes no sign and no spaces, so the digits alone remain.
-    if (s.empty() || r.ec != std::errc() || r.ptr != last) {
-      return fail(path, "expected a seed: a decimal integer in [0, 2^64), not \"" + s + "\"");
-    }
-    return true;
-  }
-
-  /// An enum by its to_string name.
-  template <class E, class Parse>
-  bool name(const json& v, const std::string& path, std::string_view what, Parse parse, E& out) {
-    if (!v.is_string()) return fail(path, expected(std::string(what) + " (a string)", v));
-    const std::optional<E> e = parse(v.get_ref<const std::string&>());
-    if (!e) return fail(path, "unknown " + std::string(what) + " \"" + v.get<std::string>() + "\"");
-    out = *e;
-    return true;
-  }
-
-  bool vec2(const json& v, const std::string& path, Vec2& out) {
-    if (!array(v, path, 2)) return false;
-    return number(v[0], index_path(path, 0), out.x) && number(v[1], index_path(path, 1), out.y);
-  }
-
-  bool config(const json& v, const std::string& path, GameConfig& c);
-  bool noise(const json& v, const std::string& path, NoiseModel& n);
-  bool strike(const json& v, const std::string& path, CueStrike& s);
-  bool state(const json& v, const std::string& path, GameState& s);
-  bool ruling(const json& v, const std::string& path, Ruling& r);
-  bool action(const json& v, const std::string& path, Action& a);
   bool recorded_action(const json& v, const std::string& path, RecordedAction& ra);
 };
 
 bool RecordReader::read(const json& doc, GameRecord& r) {
-  if (!object(doc, "",
-              {"format", "version", "config", "players", "seed", "noise", "start", "actions"})) {
+  if (!exact_object(doc, "",
+                    {"format", "version", "config", "players", "seed", "noise", "start",
+                     "actions"})) {
     return false;
   }
   const json& format = doc["format"];
@@ -543,186 +186,8 @@ bool RecordReader::read(const json& doc, GameRecord& r) {
   return true;
 }
 
-bool RecordReader::config(const json& v, const std::string& path, GameConfig& c) {
-  if (!object(v, path, {"game", "table_size", "ball_radius", "ball_mass", "max_shots"})) {
-    return false;
-  }
-  if (!name(v["game"], member_path(path, "game"), "game", parse_game_type, c.game)) return false;
-  const std::string size_path = member_path(path, "table_size");
-  if (!text(v["table_size"], size_path, c.table_size)) return false;
-  if (c.table_size != "7ft" && c.table_size != "8ft" && c.table_size != "9ft") {
-    return fail(size_path, "unknown table size \"" + c.table_size + "\" (7ft, 8ft or 9ft)");
-  }
-  return positive(v["ball_radius"], member_path(path, "ball_radius"), c.ball_radius) &&
-         positive(v["ball_mass"], member_path(path, "ball_mass"), c.ball_mass) &&
-         integer(v["max_shots"], member_path(path, "max_shots"), 0, INT_MAX, c.max_shots);
-}
-
-bool RecordReader::noise(const json& v, const std::string& path, NoiseModel& n) {
-  if (!object(v, path, {"phi", "theta", "speed", "a", "b"})) return false;
-  return non_negative(v["phi"], member_path(path, "phi"), n.phi) &&
-         non_negative(v["theta"], member_path(path, "theta"), n.theta) &&
-         non_negative(v["speed"], member_path(path, "speed"), n.speed) &&
-         non_negative(v["a"], member_path(path, "a"), n.a) &&
-         non_negative(v["b"], member_path(path, "b"), n.b);
-}
-
-bool RecordReader::strike(const json& v, const std::string& path, CueStrike& s) {
-  if (!object(v, path, {"speed", "phi", "theta", "a", "b"})) return false;
-  return number(v["speed"], member_path(path, "speed"), s.speed) &&
-         number(v["phi"], member_path(path, "phi"), s.phi) &&
-         number(v["theta"], member_path(path, "theta"), s.theta) &&
-         number(v["a"], member_path(path, "a"), s.a) &&
-         number(v["b"], member_path(path, "b"), s.b);
-}
-
-bool RecordReader::state(const json& v, const std::string& path, GameState& s) {
-  if (!object(v, path,
-              {"game", "phase", "player", "breaker", "ball_in_hand", "kitchen_shot", "group",
-               "fouls_in_a_row",
-               "push_out_allowed", "after_push_out", "scratch_on_break", "winner", "result",
-               "shots", "innings", "rack_seed", "racks", "position", "on_table"})) {
-    return false;
-  }
-  const auto at = [&](std::string_view key) { return member_path(path, key); };
-  if (!name(v["game"], at("game"), "game", parse_game_type, s.game) ||
-      !name(v["phase"], at("phase"), "phase", parse_phase, s.phase) ||
-      !integer(v["player"], at("player"), 0, 1, s.player) ||
-      !integer(v["breaker"], at("breaker"), 0, 1, s.breaker) ||
-      !name(v["ball_in_hand"], at("ball_in_hand"), "ball_in_hand", parse_ball_in_hand,
-            s.ball_in_hand) ||
-      !boolean(v["kitchen_shot"], at("kitchen_shot"), s.kitchen_shot)) {
-    return false;
-  }
-  const json& group = v["group"];
-  const json& fouls = v["fouls_in_a_row"];
-  if (!array(group, at("group"), 2) || !array(fouls, at("fouls_in_a_row"), 2)) return false;
-  for (std::size_t i = 0; i < 2; ++i) {
-    if (!name(group[i], index_path(at("group"), i), "group", parse_group, s.group[i]) ||
-        !integer(fouls[i], index_path(at("fouls_in_a_row"), i), 0, INT_MAX,
-                 s.fouls_in_a_row[i])) {
-      return false;
-    }
-  }
-  if (!boolean(v["push_out_allowed"], at("push_out_allowed"), s.push_out_allowed) ||
-      !boolean(v["after_push_out"], at("after_push_out"), s.after_push_out) ||
-      !boolean(v["scratch_on_break"], at("scratch_on_break"), s.scratch_on_break) ||
-      !integer(v["winner"], at("winner"), -1, 1, s.winner) ||
-      !text(v["result"], at("result"), s.result) ||
-      !integer(v["shots"], at("shots"), 0, INT_MAX, s.shots) ||
-      !integer(v["innings"], at("innings"), 0, INT_MAX, s.innings) ||
-      !seed(v["rack_seed"], at("rack_seed"), s.rack_seed) ||
-      !integer(v["racks"], at("racks"), 0, INT_MAX, s.racks)) {
-    return false;
-  }
-  const json& position = v["position"];
-  if (!array(position, at("position"))) return false;
-  s.position.resize(position.size());
-  for (std::size_t i = 0; i < position.size(); ++i) {
-    if (!vec2(position[i], index_path(at("position"), i), s.position[i])) return false;
-  }
-  const json& on_table = v["on_table"];
-  if (!array(on_table, at("on_table"))) return false;
-  if (on_table.size() != position.size()) {
-    return fail(at("on_table"), "has " + std::to_string(on_table.size()) +
-                                    " entries but position has " +
-                                    std::to_string(position.size()) + " (one per ball)");
-  }
-  s.on_table.resize(on_table.size());
-  for (std::size_t i = 0; i < on_table.size(); ++i) {
-    int flag = 0;
-    if (!integer(on_table[i], index_path(at("on_table"), i), 0, 1, flag)) return false;
-    s.on_table[i] = static_cast<std::uint8_t>(flag);
-  }
-  return true;
-}
-
-bool RecordReader::ruling(const json& v, const std::string& path, Ruling& r) {
-  if (!object(v, path,
-              {"fouls", "legal_break", "turn_continues", "assigned", "spotted", "winner",
-               "text", "call_made"})) {
-    return false;
-  }
-  const auto at = [&](std::string_view key) { return member_path(path, key); };
-  const json& fouls = v["fouls"];
-  if (!array(fouls, at("fouls"))) return false;
-  r.fouls.resize(fouls.size());
-  for (std::size_t i = 0; i < fouls.size(); ++i) {
-    if (!name(fouls[i], index_path(at("fouls"), i), "foul", parse_foul, r.fouls[i])) {
-      return false;
-    }
-  }
-  if (!boolean(v["legal_break"], at("legal_break"), r.legal_break) ||
-      !boolean(v["turn_continues"], at("turn_continues"), r.turn_continues) ||
-      !name(v["assigned"], at("assigned"), "group", parse_group, r.assigned)) {
-    return false;
-  }
-  const json& spotted = v["spotted"];
-  if (!array(spotted, at("spotted"))) return false;
-  r.spotted.resize(spotted.size());
-  for (std::size_t i = 0; i < spotted.size(); ++i) {
-    if (!integer(spotted[i], index_path(at("spotted"), i), 0, 15, r.spotted[i])) return false;
-  }
-  return integer(v["winner"], at("winner"), -1, 1, r.winner) &&
-         text(v["text"], at("text"), r.text) &&
-         boolean(v["call_made"], at("call_made"), r.call_made);
-}
-
-bool RecordReader::action(const json& v, const std::string& path, Action& a) {
-  if (!v.is_object()) return fail(path, expected("an object", v));
-  const json* type = v.contains("type") ? &v["type"] : nullptr;
-  const std::string type_path = member_path(path, "type");
-  if (type == nullptr) return fail(type_path, "missing required field");
-  if (!type->is_string()) return fail(type_path, expected("an action type (a string)", *type));
-  const std::string& t = type->get_ref<const std::string&>();
-  if (t == "place_cue_ball") {
-    PlaceCueBall place;
-    if (!object(v, path, {"type", "position"}) ||
-        !vec2(v["position"], member_path(path, "position"), place.position)) {
-      return false;
-    }
-    a = place;
-    return true;
-  }
-  if (t == "shoot") {
-    Shoot shoot;
-    if (!object(v, path, {"type", "strike", "call", "safety", "push_out"}) ||
-        !strike(v["strike"], member_path(path, "strike"), shoot.strike)) {
-      return false;
-    }
-    const json& call = v["call"];
-    const std::string call_path = member_path(path, "call");
-    if (!call.is_null()) {
-      Call c;
-      if (!object(call, call_path, {"ball", "pocket"}) ||
-          !integer(call["ball"], member_path(call_path, "ball"), -1, 15, c.ball) ||
-          !integer(call["pocket"], member_path(call_path, "pocket"), -1, 5, c.pocket)) {
-        return false;
-      }
-      shoot.call = c;
-    }
-    if (!boolean(v["safety"], member_path(path, "safety"), shoot.safety) ||
-        !boolean(v["push_out"], member_path(path, "push_out"), shoot.push_out)) {
-      return false;
-    }
-    a = shoot;
-    return true;
-  }
-  if (t == "decide") {
-    Decide decide;
-    if (!object(v, path, {"type", "choice"}) ||
-        !name(v["choice"], member_path(path, "choice"), "choice", parse_choice, decide.choice)) {
-      return false;
-    }
-    a = decide;
-    return true;
-  }
-  return fail(type_path,
-              "unknown action type \"" + t + "\" (place_cue_ball, shoot or decide)");
-}
-
 bool RecordReader::recorded_action(const json& v, const std::string& path, RecordedAction& ra) {
-  if (!object(v, path, {"player", "action", "intended", "noise_seed", "ruling", "after"})) {
+  if (!exact_object(v, path, {"player", "action", "intended", "noise_seed", "ruling", "after"})) {
     return false;
   }
   const auto at = [&](std::string_view key) { return member_path(path, key); };
@@ -863,15 +328,13 @@ std::string write_record(const GameRecord& record) {
 
 std::variant<GameRecord, RecordError> read_record(std::string_view json_text) {
   try {
-    DocumentBuilder builder;
-    const bool parsed = json::sax_parse(json_text.begin(), json_text.end(), &builder);
-    if (!parsed || builder.parse_error_text) {
-      return RecordError{kDocumentPath, builder.parse_error_text.value_or("not valid JSON")};
+    json doc;
+    if (auto problem = json_io::parse_strict(json_text, doc)) {
+      return RecordError{std::move(problem->error.path), std::move(problem->error.reason)};
     }
-    if (builder.duplicate_path) return RecordError{*builder.duplicate_path, "duplicate key"};
     GameRecord record;
     RecordReader reader;
-    if (!reader.read(builder.root, record)) return *reader.error;
+    if (!reader.read(doc, record)) return RecordError{reader.error->path, reader.error->reason};
     return record;
   } catch (const std::bad_alloc&) {
     return RecordError{kDocumentPath, "out of memory while reading the record"};

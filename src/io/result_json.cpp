@@ -5,14 +5,12 @@
 // into one string instead of building a JSON tree first: the tree costs a
 // heap node per number and is several times slower to dump. Numbers are
 // printed with std::to_chars, the shortest text that reads back as the
-// same double, so the result is exact and the bytes depend only on the
-// values (the same run gives the same file).
+// same double (io/json_write.hpp), so the result is exact and the bytes
+// depend only on the values (the same run gives the same file).
 //
 // Layout: one event per line, one ball per line in "final", one sample
 // per line. Readable in an editor and easy to grep, and still compact.
 
-#include <charconv>
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -20,79 +18,66 @@
 
 #include "breakshot/lab.hpp"
 #include "breakshot/scenario_io.hpp"
+#include "io/result_json.hpp"
 
-namespace breakshot {
+namespace breakshot::json_io {
 namespace {
 
-class JsonWriter {
- public:
-  explicit JsonWriter(std::string& out) : out_(out) {}
-
-  void raw(std::string_view s) { out_.append(s); }
-
-  /// A number that reads back as exactly `v`. Integral values keep a
-  /// ".0" so that readers in typed languages see a float every time.
-  /// JSON has no infinity or NaN: they are written as null, which is
-  /// still valid JSON (the command line refuses such a result anyway).
-  void number(double v) {
-    if (!std::isfinite(v)) {
-      out_.append("null");
-      return;
-    }
-    char buf[64];
-    const auto res = std::to_chars(buf, buf + sizeof buf, v);
-    const std::string_view text(buf, static_cast<std::size_t>(res.ptr - buf));
-    out_.append(text);
-    if (text.find_first_of(".e") == std::string_view::npos) out_.append(".0");
+/// The id of ball i, or null for an index the scenario does not have
+/// (a broken result must still be valid JSON).
+void write_ball_id(JsonWriter& w, const Scenario& s, std::int64_t i) {
+  if (i >= 0 && static_cast<std::size_t>(i) < s.balls.size()) {
+    w.string(s.balls[static_cast<std::size_t>(i)].id);
+  } else {
+    w.raw("null");
   }
+}
 
-  void string(std::string_view s) {
-    static constexpr char kHex[] = "0123456789abcdef";
-    out_.push_back('"');
-    for (const char c : s) {
-      const auto u = static_cast<unsigned char>(c);
-      switch (c) {
-        case '"': out_.append("\\\""); break;
-        case '\\': out_.append("\\\\"); break;
-        case '\n': out_.append("\\n"); break;
-        case '\r': out_.append("\\r"); break;
-        case '\t': out_.append("\\t"); break;
-        case '\b': out_.append("\\b"); break;
-        case '\f': out_.append("\\f"); break;
-        default:
-          if (u < 0x20) {
-            out_.append("\\u00");
-            out_.push_back(kHex[u >> 4]);
-            out_.push_back(kHex[u & 0xf]);
-          } else {
-            out_.push_back(c);
-          }
+}  // namespace
+
+void write_event(JsonWriter& w, const Scenario& s, const Event& e) {
+  w.raw("{\"time\": ");
+  w.number(e.time);
+  w.raw(", \"type\": ");
+  w.string(to_string(e.type));
+  w.raw(", \"balls\": [");
+  write_ball_id(w, s, e.ball);
+  if (e.type == EventType::ball_ball) {
+    w.raw(", ");
+    write_ball_id(w, s, e.other);
+  }
+  w.raw("]");
+  switch (e.type) {
+    case EventType::ball_cushion:
+      w.raw(", \"cushion\": ");
+      if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < s.table.walls.size()) {
+        w.string(s.table.walls[static_cast<std::size_t>(e.wall)].name);
+      } else {
+        w.raw("null");
       }
-    }
-    out_.push_back('"');
+      break;
+    case EventType::ball_pocket:
+      w.raw(", \"pocket\": ");
+      if (e.pocket >= 0 && static_cast<std::size_t>(e.pocket) < s.table.pockets.size()) {
+        w.string(s.table.pockets[static_cast<std::size_t>(e.pocket)].name);
+      } else {
+        w.raw("null");
+      }
+      break;
+    case EventType::state_change:
+      w.raw(", \"from\": ");
+      w.string(to_string(e.from));
+      w.raw(", \"to\": ");
+      w.string(to_string(e.to));
+      break;
+    case EventType::cue_strike:
+    case EventType::ball_ball:
+      break;
   }
+  w.raw("}");
+}
 
-  void vec2(Vec2 v) {
-    out_.push_back('[');
-    number(v.x);
-    out_.append(", ");
-    number(v.y);
-    out_.push_back(']');
-  }
-
-  void vec3(Vec3 v) {
-    out_.push_back('[');
-    number(v.x);
-    out_.append(", ");
-    number(v.y);
-    out_.append(", ");
-    number(v.z);
-    out_.push_back(']');
-  }
-
- private:
-  std::string& out_;
-};
+namespace {
 
 class ResultWriter {
  public:
@@ -105,7 +90,7 @@ class ResultWriter {
     w_.raw(",\n  \"events\": [");
     for (std::size_t k = 0; k < r.events.size(); ++k) {
       w_.raw(k == 0 ? "\n    " : ",\n    ");
-      event(r.events[k]);
+      write_event(w_, s_, r.events[k]);
     }
     w_.raw(r.events.empty() ? "],\n" : "\n  ],\n");
 
@@ -132,58 +117,6 @@ class ResultWriter {
   }
 
  private:
-  /// The id of ball i, or null for an index the scenario does not have
-  /// (a broken result must still be valid JSON).
-  void id(std::int64_t i) {
-    if (i >= 0 && static_cast<std::size_t>(i) < s_.balls.size()) {
-      w_.string(s_.balls[static_cast<std::size_t>(i)].id);
-    } else {
-      w_.raw("null");
-    }
-  }
-
-  void event(const Event& e) {
-    w_.raw("{\"time\": ");
-    w_.number(e.time);
-    w_.raw(", \"type\": ");
-    w_.string(to_string(e.type));
-    w_.raw(", \"balls\": [");
-    id(e.ball);
-    if (e.type == EventType::ball_ball) {
-      w_.raw(", ");
-      id(e.other);
-    }
-    w_.raw("]");
-    switch (e.type) {
-      case EventType::ball_cushion:
-        w_.raw(", \"cushion\": ");
-        if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < s_.table.walls.size()) {
-          w_.string(s_.table.walls[static_cast<std::size_t>(e.wall)].name);
-        } else {
-          w_.raw("null");
-        }
-        break;
-      case EventType::ball_pocket:
-        w_.raw(", \"pocket\": ");
-        if (e.pocket >= 0 && static_cast<std::size_t>(e.pocket) < s_.table.pockets.size()) {
-          w_.string(s_.table.pockets[static_cast<std::size_t>(e.pocket)].name);
-        } else {
-          w_.raw("null");
-        }
-        break;
-      case EventType::state_change:
-        w_.raw(", \"from\": ");
-        w_.string(to_string(e.from));
-        w_.raw(", \"to\": ");
-        w_.string(to_string(e.to));
-        break;
-      case EventType::cue_strike:
-      case EventType::ball_ball:
-        break;
-    }
-    w_.raw("}");
-  }
-
   /// What the cue strike did (an extension of the contract): the ball's
   /// velocity and spin as the tip leaves it, the squirt in degrees, and
   /// whether it was a miscue (then nothing was played: no cue_strike
@@ -204,7 +137,7 @@ class ResultWriter {
   /// kinetic energy, a per-ball breakdown the contract allows).
   void ball(std::size_t i, const BallState& b, bool in_sample) {
     w_.raw("{\"id\": ");
-    id(static_cast<std::int64_t>(i));
+    write_ball_id(w_, s_, static_cast<std::int64_t>(i));
     w_.raw(", \"position\": ");
     w_.vec2(b.position);
     w_.raw(", \"velocity\": ");
@@ -249,6 +182,10 @@ class ResultWriter {
 
 }  // namespace
 
+}  // namespace breakshot::json_io
+
+namespace breakshot {
+
 std::string write_result(const Scenario& scenario, const RunResult& result) {
   std::string out;
   // About 90 bytes per event and per ball of a sample: one allocation
@@ -257,7 +194,7 @@ std::string write_result(const Scenario& scenario, const RunResult& result) {
   for (const Sample& smp : result.samples) balls_in_samples += smp.balls.size();
   out.reserve(256 + 90 * result.events.size() + 160 * result.final_balls.size() +
               160 * balls_in_samples);
-  ResultWriter(scenario, out).write(result);
+  json_io::ResultWriter(scenario, out).write(result);
   return out;
 }
 

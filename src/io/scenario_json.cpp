@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
-#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -23,16 +22,21 @@
 #include <variant>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "breakshot/rack.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/scenario_io.hpp"
+#include "io/json_read.hpp"
+#include "io/json_write.hpp"
 
 namespace breakshot {
 namespace {
 
-using nlohmann::json;
+using json_io::expected;
+using json_io::format_number;
+using json_io::index_path;
+using json_io::json;
+using json_io::kDocumentPath;
+using json_io::member_path;
 
 /// The largest magnitude accepted for any real number in a scenario.
 /// The engine squares positions and velocities and multiplies the
@@ -56,250 +60,30 @@ constexpr double kPoolBallBallRestitution = 0.95;
 /// count as touching: validate()'s tolerance (src/physics/validate.cpp).
 constexpr double kTouchTolerance = 1e-9;
 
-/// Path shown for problems with the document as a whole.
-constexpr const char* kDocumentPath = "(document)";
-
-bool is_identifier(std::string_view key) {
-  if (key.empty()) return false;
-  for (char c : key) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                    (c >= '0' && c <= '9') || c == '_';
-    if (!ok) return false;
-  }
-  return true;
-}
-
-/// Appends the step to member `key` to a path: ".key" for ordinary keys
-/// (just "key" at the top), ["odd key"] for keys a reader could not
-/// otherwise tell apart.
-void append_member(std::string& path, std::string_view key) {
-  if (is_identifier(key)) {
-    if (!path.empty()) path += '.';
-    path += key;
-    return;
-  }
-  path += "[\"";
-  for (char c : key) {
-    if (c == '"' || c == '\\') path += '\\';
-    path += c;
-  }
-  path += "\"]";
-}
-
-void append_index(std::string& path, std::size_t i) {
-  path += '[';
-  path += std::to_string(i);
-  path += ']';
-}
-
-std::string member_path(std::string path, std::string_view key) {
-  append_member(path, key);
-  return path;
-}
-
-std::string index_path(std::string path, std::size_t i) {
-  append_index(path, i);
-  return path;
-}
-
-std::string type_name(const json& v) {
-  switch (v.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
-    case json::value_t::number_integer:
-    case json::value_t::number_unsigned:
-    case json::value_t::number_float: return "a number";
-    case json::value_t::binary: return "binary data";
-    case json::value_t::discarded: return "nothing";
-  }
-  return "an unknown value";
-}
-
-std::string expected(std::string_view what, const json& v) {
-  return "expected " + std::string(what) + ", not " + type_name(v);
-}
-
-/// Shortest text that reads back as the same double, for messages.
-std::string format_number(double v) {
-  return json(v).dump();
-}
-
-/// nlohmann's messages start with "[json.exception.parse_error.101] ";
-/// the user needs the rest (which has the line and column).
-std::string strip_exception_id(std::string_view what) {
-  if (!what.empty() && what.front() == '[') {
-    const auto close = what.find("] ");
-    if (close != std::string_view::npos) what.remove_prefix(close + 2);
-  }
-  return std::string(what);
-}
-
-/// Builds the document from the parser's events, and notices the first
-/// key that appears twice in one object. nlohmann's own parser keeps the
-/// last value of a repeated key without a word, which would hide a
-/// mistake exactly as an unknown field does. (Its parse callback could
-/// watch for repeats too, but that path is several times slower than this
-/// on a 10,000-ball scenario.) Content inside "extra" objects is the user's
-/// and is not checked. The builder keeps an explicit stack, so deep
-/// nesting cannot overflow the call stack.
-class DocumentBuilder {
- public:
-  json root;
-  std::optional<std::string> duplicate_path;  ///< first repeated key
-  std::optional<std::string> parse_error_text;
-
-  // The SAX interface of nlohmann::json::sax_parse.
-  bool null() { return put(json(nullptr)); }
-  bool boolean(bool v) { return put(json(v)); }
-  bool number_integer(json::number_integer_t v) { return put(json(v)); }
-  bool number_unsigned(json::number_unsigned_t v) { return put(json(v)); }
-  bool number_float(json::number_float_t v, const json::string_t& /*text*/) {
-    return put(json(v));
-  }
-  bool string(json::string_t& v) { return put(json(std::move(v))); }
-  bool binary(json::binary_t& v) { return put(json::binary(std::move(v))); }
-  bool start_object(std::size_t /*size*/) { return open(json::object()); }
-  bool start_array(std::size_t /*size*/) { return open(json::array()); }
-  bool end_object() { return close(); }
-  bool end_array() { return close(); }
-
-  bool key(json::string_t& k) {
-    Frame& f = frames_.back();
-    if (!f.ignored && !duplicate_path && f.value->contains(k)) {
-      duplicate_path = member_path(path_of_open_container(), k);
-    }
-    f.key = std::move(k);
-    return true;
-  }
-
-  bool parse_error(std::size_t /*position*/, const std::string& /*last_token*/,
-                   const json::exception& ex) {
-    parse_error_text = strip_exception_id(ex.what());
-    return false;
-  }
-
- private:
-  struct Frame {
-    json* value = nullptr;  // stable: nothing is added to its parent while it is open
-    std::string key;        // key of the value being read (objects)
-    bool ignored = false;   // inside an "extra" object
-    // Where this container sits in its parent, for messages. The whole
-    // path is built only when needed: building it for every container
-    // would cost O(depth^2) on a deeply nested document.
-    std::string key_in_parent;
-    std::size_t index_in_parent = 0;
-    bool parent_is_object = false;
-  };
-
-  bool put(json&& v) {
-    add(std::move(v));
-    return true;
-  }
-
-  /// Puts a value where the parser is: the root, the current key of the
-  /// open object, or the end of the open array.
-  json* add(json&& v) {
-    if (frames_.empty()) {
-      root = std::move(v);
-      return &root;
-    }
-    Frame& f = frames_.back();
-    if (f.value->is_object()) {
-      json& slot = (*f.value)[f.key];
-      slot = std::move(v);
-      return &slot;
-    }
-    f.value->push_back(std::move(v));
-    return &f.value->back();
-  }
-
-  bool open(json&& v) {
-    Frame child;
-    if (!frames_.empty()) {
-      const Frame& parent = frames_.back();
-      child.ignored = parent.ignored || (parent.value->is_object() && parent.key == "extra");
-      child.parent_is_object = parent.value->is_object();
-      if (child.parent_is_object) {
-        child.key_in_parent = parent.key;
-      } else {
-        child.index_in_parent = parent.value->size();
-      }
-    }
-    child.value = add(std::move(v));
-    frames_.push_back(std::move(child));
-    return true;
-  }
-
-  bool close() {
-    frames_.pop_back();
-    return true;
-  }
-
-  std::string path_of_open_container() const {
-    std::string path;
-    for (std::size_t i = 1; i < frames_.size(); ++i) {
-      const Frame& f = frames_[i];
-      if (f.parent_is_object) {
-        append_member(path, f.key_in_parent);
-      } else {
-        append_index(path, f.index_in_parent);
-      }
-    }
-    return path;
-  }
-
-  std::vector<Frame> frames_;
-};
-
 /// Builds a Scenario from a parsed document. Every reading function
 /// returns false after recording the first problem in `error`; the first
 /// problem stops the whole read.
-class ScenarioReader {
+class ScenarioReader : public json_io::Reader {
  public:
-  std::optional<ScenarioError> error;
+  ScenarioReader() : Reader("extra") {}
 
   bool read(const json& doc, Scenario& s);
+  ScenarioError take_error() const {
+    return ScenarioError{error->path, error->reason, unsupported_};
+  }
 
  private:
-  bool fail(std::string path, std::string reason, bool unsupported = false) {
-    error = ScenarioError{std::move(path), std::move(reason), unsupported};
-    return false;
+  bool fail_unsupported(std::string path, std::string reason) {
+    unsupported_ = true;
+    return fail(std::move(path), std::move(reason));
   }
 
-  static const json* find(const json& obj, std::string_view key) {
-    const auto it = obj.find(key);
-    return it == obj.end() ? nullptr : &*it;
-  }
-
-  bool require_object(const json& v, const std::string& path) {
-    if (v.is_object()) return true;
-    return fail(path, expected("an object", v));
-  }
-
-  /// Rejects any member of `obj` not in `allowed`. "extra" is always
-  /// allowed and never looked into.
-  bool check_fields(const json& obj, const std::string& path,
-                    std::initializer_list<std::string_view> allowed) {
-    for (const auto& [key, value] : obj.items()) {
-      if (key == "extra") continue;
-      bool known = false;
-      for (std::string_view a : allowed) known = known || key == a;
-      if (!known) return fail(member_path(path, key), "unknown field");
+  /// A finite number no larger than kMaxMagnitude.
+  bool number(const json& v, const std::string& path, double& out) override {
+    if (!Reader::number(v, path, out)) return false;
+    if (std::fabs(out) > kMaxMagnitude) {
+      return fail(path, format_number(out) + " is too large (the limit is 1e12 in magnitude)");
     }
-    return true;
-  }
-
-  bool number(const json& v, const std::string& path, double& out) {
-    if (!v.is_number()) return fail(path, expected("a number", v));
-    const double x = v.get<double>();
-    if (!std::isfinite(x)) return fail(path, "expected a finite number");
-    if (std::fabs(x) > kMaxMagnitude) {
-      return fail(path, format_number(x) + " is too large (the limit is 1e12 in magnitude)");
-    }
-    out = x;
     return true;
   }
 
@@ -308,44 +92,6 @@ class ScenarioReader {
                        std::string_view key, double& out) {
     const json* v = find(obj, key);
     return v == nullptr || number(*v, member_path(path, key), out);
-  }
-
-  bool vec(const json& v, const std::string& path, double* out, std::size_t n) {
-    if (!v.is_array() || v.size() != n) {
-      const std::string what = "an array of " + std::to_string(n) + " numbers";
-      if (v.is_array()) {
-        return fail(path, "expected " + what + ", not an array of " + std::to_string(v.size()));
-      }
-      return fail(path, expected(what, v));
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!number(v[i], index_path(path, i), out[i])) return false;
-    }
-    return true;
-  }
-
-  bool vec2(const json& v, const std::string& path, Vec2& out) {
-    double c[2] = {0.0, 0.0};
-    if (!vec(v, path, c, 2)) return false;
-    out = {c[0], c[1]};
-    return true;
-  }
-
-  bool vec3(const json& v, const std::string& path, Vec3& out) {
-    double c[3] = {0.0, 0.0, 0.0};
-    if (!vec(v, path, c, 3)) return false;
-    out = {c[0], c[1], c[2]};
-    return true;
-  }
-
-  bool non_negative(double x, const std::string& path) {
-    if (x >= 0.0) return true;
-    return fail(path, "must be >= 0, not " + format_number(x));
-  }
-
-  bool positive(double x, const std::string& path) {
-    if (x > 0.0) return true;
-    return fail(path, "must be positive, not " + format_number(x));
   }
 
   bool restitution(double x, const std::string& path) {
@@ -370,6 +116,8 @@ class ScenarioReader {
   bool check_sample_count(const Scenario& s);
   ScenarioError locate(ScenarioError e, const Scenario& s) const;
 
+  bool unsupported_ = false;
+
   std::unordered_map<std::string, std::int32_t> index_of_;  // ball id -> index
   /// wall_restitution of a ball that does not give one: the table's
   /// cushion_restitution, else the model's default.
@@ -380,8 +128,8 @@ class ScenarioReader {
 };
 
 bool ScenarioReader::read(const json& doc, Scenario& s) {
-  if (!doc.is_object()) return fail(kDocumentPath, expected("an object", doc));
-  if (!check_fields(doc, "",
+  if (!require_object(doc, "")) return false;
+  if (!known_fields(doc, "",
                     {"physics", "table", "balls", "pair_restitution", "rack", "cue",
                      "until", "samples", "max_events"})) {
     return false;
@@ -402,8 +150,9 @@ bool ScenarioReader::read(const json& doc, Scenario& s) {
   // Geometry (inside the table, out of the pockets, no overlaps) and
   // everything a scenario built in code must also satisfy.
   if (auto problem = validate(s)) {
-    error = locate(std::move(*problem), s);
-    return false;
+    ScenarioError e = locate(std::move(*problem), s);
+    unsupported_ = e.unsupported;
+    return fail(std::move(e.path), std::move(e.reason));
   }
   return true;
 }
@@ -433,7 +182,7 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
   if (p == nullptr) return fail("physics", "missing required field");
   const std::string path = "physics";
   if (!require_object(*p, path)) return false;
-  if (!check_fields(*p, path,
+  if (!known_fields(*p, path,
                     {"model", "ball_ball_restitution", "ball_ball_friction", "gravity",
                      "deceleration", "sliding_friction", "rolling_friction",
                      "spinning_friction", "collapse_speed", "ball_clusters"})) {
@@ -534,7 +283,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
   const std::string shape = shape_v->get<std::string>();
 
   if (shape == "rectangle") {
-    if (!check_fields(*t, path, {"shape", "min", "max", "cushion_restitution",
+    if (!known_fields(*t, path, {"shape", "min", "max", "cushion_restitution",
                                  "cushion_friction", "nose_height"})) {
       return false;
     }
@@ -557,7 +306,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
   }
 
   if (shape == "polygon") {
-    if (!check_fields(*t, path, {"shape", "vertices", "cushion_restitution",
+    if (!known_fields(*t, path, {"shape", "vertices", "cushion_restitution",
                                  "cushion_friction", "nose_height"})) {
       return false;
     }
@@ -580,7 +329,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
   }
 
   if (shape == "pool") {
-    if (!check_fields(*t, path, {"shape", "size", "cushion_restitution", "cushion_friction",
+    if (!known_fields(*t, path, {"shape", "size", "cushion_restitution", "cushion_friction",
                                  "nose_height"})) {
       return false;
     }
@@ -589,12 +338,8 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
     if (size_v == nullptr) {
       return fail(size_path, "missing required field (\"7ft\", \"8ft\" or \"9ft\")");
     }
-    if (!size_v->is_string()) return fail(size_path, expected("a string", *size_v));
-    const std::string size = size_v->get<std::string>();
-    if (size != "7ft" && size != "8ft" && size != "9ft") {
-      return fail(size_path,
-                  "unknown size \"" + size + "\" (expected \"7ft\", \"8ft\" or \"9ft\")");
-    }
+    std::string size;
+    if (!text_of(*size_v, size_path, "table size", {"7ft", "8ft", "9ft"}, size)) return false;
     try {
       s.table = make_pool_table(size);
     } catch (const std::exception& e) {
@@ -604,7 +349,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
   }
 
   if (shape == "snooker" || shape == "carom") {
-    return fail(shape_path, "the " + shape + " table is not implemented yet", true);
+    return fail_unsupported(shape_path, "the " + shape + " table is not implemented yet");
   }
   return fail(shape_path, "unknown shape \"" + shape +
                               "\" (expected rectangle, polygon, pool, snooker or carom)");
@@ -680,7 +425,7 @@ bool ScenarioReader::read_rack(const json& v, Scenario& s) {
   if (s.table.shape != "pool") {
     return fail(path, "a rack needs a pool table (\"table\": {\"shape\": \"pool\", ...})");
   }
-  if (!check_fields(v, path, {"game", "seed"})) return false;
+  if (!known_fields(v, path, {"game", "seed"})) return false;
 
   const json* game_v = find(v, "game");
   const std::string game_path = "rack.game";
@@ -769,7 +514,7 @@ void ScenarioReader::add_placed_ball(std::string id, Vec2 position, Scenario& s)
 
 bool ScenarioReader::read_ball(const json& v, const std::string& path, Scenario& s) {
   if (!require_object(v, path)) return false;
-  if (!check_fields(v, path,
+  if (!known_fields(v, path,
                     {"id", "position", "velocity", "spin", "radius", "mass",
                      "wall_restitution"})) {
     return false;
@@ -852,7 +597,7 @@ bool ScenarioReader::read_pairs(const json& doc, Scenario& s) {
     const json& entry = (*ps)[k];
     const std::string epath = index_path(path, k);
     if (!require_object(entry, epath)) return false;
-    if (!check_fields(entry, epath, {"balls", "restitution"})) return false;
+    if (!known_fields(entry, epath, {"balls", "restitution"})) return false;
 
     const json* ids = find(entry, "balls");
     const std::string ids_path = member_path(epath, "balls");
@@ -908,7 +653,7 @@ bool ScenarioReader::read_cue(const json& doc, Scenario& s) {
   // A cue strike gives the ball spin, which only the pool model has.
   if (s.physics.model != Model::pool) return fail(path, "a cue strike needs the pool model");
   if (!require_object(*c, path)) return false;
-  if (!check_fields(*c, path,
+  if (!known_fields(*c, path,
                     {"ball", "speed", "phi", "theta", "a", "b", "cue_mass",
                      "tip_restitution"})) {
     return false;
@@ -987,7 +732,7 @@ bool ScenarioReader::read_until(const json& doc, Scenario& s) {
     return true;
   }
   if (!u->is_object()) return fail(path, expected("\"rest\" or {\"time\": T}", *u));
-  if (!check_fields(*u, path, {"time"})) return false;
+  if (!known_fields(*u, path, {"time"})) return false;
   const json* t = find(*u, "time");
   const std::string t_path = "until.time";
   if (t == nullptr) return fail(t_path, "missing required field");
@@ -1004,7 +749,7 @@ bool ScenarioReader::read_samples(const json& doc, Scenario& s) {
   if (v == nullptr) return true;
   const std::string path = "samples";
   if (!require_object(*v, path)) return false;
-  if (!check_fields(*v, path, {"dt"})) return false;
+  if (!known_fields(*v, path, {"dt"})) return false;
   const json* dt = find(*v, "dt");
   const std::string dt_path = "samples.dt";
   if (dt == nullptr) return fail(dt_path, "missing required field");
@@ -1146,18 +891,18 @@ bool ScenarioReader::check_sample_count(const Scenario& s) {
 
 std::variant<Scenario, ScenarioError> read_scenario(std::string_view json_text) {
   try {
-    DocumentBuilder builder;
     // Syntax errors, and numbers too large for a double (1e400), come
-    // back through parse_error with the line and column.
-    const bool parsed = json::sax_parse(json_text.begin(), json_text.end(), &builder);
-    if (!parsed || builder.parse_error_text) {
-      return ScenarioError{kDocumentPath, builder.parse_error_text.value_or("not valid JSON")};
+    // back with the line and column; repeated keys with their path.
+    // Content inside "extra" objects is the user's and is not checked.
+    json doc;
+    json_io::ParseOptions options;
+    options.free_key = "extra";
+    if (auto problem = json_io::parse_strict(json_text, doc, options)) {
+      return ScenarioError{std::move(problem->error.path), std::move(problem->error.reason)};
     }
-    if (builder.duplicate_path) return ScenarioError{*builder.duplicate_path, "duplicate key"};
-    const json& doc = builder.root;
     Scenario scenario;
     ScenarioReader reader;
-    if (!reader.read(doc, scenario)) return *reader.error;
+    if (!reader.read(doc, scenario)) return reader.take_error();
     return scenario;
   } catch (const std::bad_alloc&) {
     return ScenarioError{kDocumentPath, "out of memory while reading the scenario"};

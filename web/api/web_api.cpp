@@ -5,7 +5,11 @@
 // parsing (strtod, correctly rounded in glibc and musl) are the same code
 // native and wasm, so a reply is the same bytes on both. Doubles are
 // printed so that they read back exactly (JavaScript's JSON.parse too).
-// bs_simulate returns the engine's own result text (write_result).
+// bs_simulate returns the engine's own result text (write_result), and
+// playback events are written as the result file writes them
+// (src/io/result_json.hpp). The game's types (state, action, strike,
+// ruling) are in the one JSON of game records (src/io/game_json.hpp),
+// both ways: what a reply shows is what the record holds.
 //
 // Games. A BsGame holds the rules and a GameRecord (record.hpp) that
 // grows with every action, so bs_game_record is that record as
@@ -45,7 +49,9 @@
 //
 // Errors never cross the boundary: every entry point catches everything
 // and answers {"error": "..."} (those that return a pointer: NULL, and
-// the error in bs_last_error); input errors name the JSON path.
+// the error in bs_last_error); input errors name the JSON path. JSON
+// input is read as strictly as scenarios and records, by the same code
+// (src/io/json_read.hpp): repeated keys and unknown fields are errors.
 //
 // Frames. bs_playback_frame_data gives a frame as doubles in a buffer of
 // the playback (no text: a 1000-ball frame as JSON costs ~10 ms in wasm);
@@ -60,7 +66,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <limits>
 #include <memory>
 #include <new>
 #include <optional>
@@ -84,6 +89,10 @@
 #include "breakshot/session.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/version.hpp"
+#include "io/game_json.hpp"
+#include "io/json_read.hpp"
+#include "io/json_write.hpp"
+#include "io/result_json.hpp"
 
 
 namespace bs = breakshot;
@@ -144,118 +153,74 @@ std::string guarded(F&& body) {
 thread_local std::string g_last_error = error_json("no error");
 
 // ---------------------------------------------------------------------------
-// Reading JSON input
+// Reading JSON input: io/json_read.hpp's strict reading, its problems
+// thrown as bad inputs
 
-std::string member_path(const std::string& path, std::string_view key) {
-  return path.empty() ? std::string(key) : path + "." + std::string(key);
-}
+using bs::json_io::index_path;
+using bs::json_io::member_path;
 
-std::string index_path(const std::string& path, std::size_t i) {
-  return path + "[" + std::to_string(i) + "]";
-}
-
-std::string kind_of(const json& v) {
-  if (v.is_null()) return "null";
-  if (v.is_boolean()) return "a boolean";
-  if (v.is_number()) return "a number";
-  if (v.is_string()) return "a string";
-  if (v.is_array()) return "an array";
-  return "an object";
-}
-
-json parse_text(const char* text, const std::string& what) {
-  if (text == nullptr) bad(what, "missing (a null pointer)");
-  try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
-    bad(what, std::string("not valid JSON: ") + e.what());
+/// The readers of io/game_json.hpp, with must() to throw the first
+/// problem found.
+struct Reader : bs::json_io::GameReader {
+  void must(bool ok) const {
+    if (!ok) bad(error->path, error->reason);
   }
+};
+
+const json* find(const json& obj, std::string_view key) { return Reader::find(obj, key); }
+
+/// The JSON text of an argument named `what`, parsed strictly (a repeated
+/// key is an error too); `root` is the path of the document in messages.
+json parse_text(const char* text, const std::string& what, const std::string& root = "") {
+  if (text == nullptr) bad(what, "missing (a null pointer)");
+  json doc;
+  bs::json_io::ParseOptions options;
+  options.root_path = root;
+  if (auto problem = bs::json_io::parse_strict(text, doc, options)) {
+    if (problem->syntax) bad(what, "not valid JSON: " + problem->error.reason);
+    bad(problem->error.path, problem->error.reason);
+  }
+  return doc;
 }
 
 /// An object whose keys must all be in `known`.
 const json& object(const json& v, const std::string& path,
                    std::initializer_list<std::string_view> known) {
-  if (!v.is_object()) bad(path.empty() ? "(document)" : path, "expected an object, not " + kind_of(v));
-  for (auto it = v.begin(); it != v.end(); ++it) {
-    bool ok = false;
-    for (std::string_view k : known) ok = ok || it.key() == k;
-    if (!ok) {
-      std::string list;
-      for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-      bad(member_path(path, it.key()), "unknown key (known: " + list + ")");
-    }
-  }
+  Reader r;
+  r.must(r.object(v, path, known));
   return v;
 }
 
-const json* find(const json& obj, std::string_view key) {
-  const auto it = obj.find(std::string(key));
-  return it == obj.end() ? nullptr : &*it;
-}
-
 const json& required(const json& obj, const std::string& path, std::string_view key) {
-  const json* v = find(obj, key);
-  if (v == nullptr) bad(member_path(path, key), "missing");
+  Reader r;
+  const json* v = nullptr;
+  r.must(r.required(obj, path, key, v));
   return *v;
 }
 
-double number(const json& v, const std::string& path) {
-  if (!v.is_number()) bad(path, "expected a number, not " + kind_of(v));
-  const double d = v.get<double>();
-  if (!std::isfinite(d)) bad(path, "not a finite number");
-  return d;
-}
-
-bool boolean(const json& v, const std::string& path) {
-  if (!v.is_boolean()) bad(path, "expected true or false, not " + kind_of(v));
-  return v.get<bool>();
-}
-
 std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi) {
-  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  if (!v.is_number_integer()) bad(path, "expected an integer in " + range + ", not " + kind_of(v));
-  if (v.is_number_unsigned()) {
-    const auto u = v.get<std::uint64_t>();
-    if (u > static_cast<std::uint64_t>(hi) || (lo > 0 && u < static_cast<std::uint64_t>(lo))) {
-      bad(path, "must be an integer in " + range);
-    }
-    return static_cast<std::int64_t>(u);
-  }
-  const auto i = v.get<std::int64_t>();
-  if (i < lo || i > hi) bad(path, "must be an integer in " + range);
+  Reader r;
+  std::int64_t i = 0;
+  r.must(r.integer(v, path, lo, hi, i));
   return i;
 }
 
 const std::string& text(const json& v, const std::string& path) {
-  if (!v.is_string()) bad(path, "expected a string, not " + kind_of(v));
+  Reader r;
+  std::string unused;
+  r.must(r.text(v, path, unused));
   return v.get_ref<const std::string&>();
-}
-
-std::uint64_t parse_seed(const std::string& s, const std::string& path) {
-  std::uint64_t out = 0;
-  bool ok = !s.empty() && s.size() <= 20;
-  for (const char c : s) ok = ok && c >= '0' && c <= '9';
-  if (ok) {
-    for (const char c : s) {
-      const auto d = static_cast<std::uint64_t>(c - '0');
-      if (out > (std::numeric_limits<std::uint64_t>::max() - d) / 10) {
-        ok = false;
-        break;
-      }
-      out = out * 10 + d;
-    }
-  }
-  if (!ok) bad(path, "expected a seed: a decimal integer in [0, 2^64) as a string, not \"" + s + "\"");
-  return out;
 }
 
 /// A seed: a decimal string, or an integer number up to 2^53.
 std::uint64_t seed_value(const json& v, const std::string& path) {
-  if (v.is_string()) return parse_seed(v.get_ref<const std::string&>(), path);
   if (v.is_number_integer()) {
     return static_cast<std::uint64_t>(integer(v, path, 0, std::int64_t{1} << 53));
   }
-  bad(path, "expected a seed (a decimal string), not " + kind_of(v));
+  Reader r;
+  std::uint64_t seed = 0;
+  r.must(r.seed(v, path, seed));
+  return seed;
 }
 
 /// "human" or a known AI level.
@@ -273,7 +238,12 @@ std::string seat_name(const json& v, const std::string& path) {
 // ---------------------------------------------------------------------------
 // Writing replies
 
-ojson vec2_json(bs::Vec2 v) { return ojson::array({v.x, v.y}); }
+// The one JSON of each of the game's types (src/io/game_json.hpp), as
+// game records write them.
+using bs::json_io::action_json;
+using bs::json_io::ruling_json;
+using bs::json_io::strike_json;
+using bs::json_io::vec2_json;
 
 ojson ints_json(const std::vector<int>& v) {
   ojson a = ojson::array();
@@ -281,56 +251,10 @@ ojson ints_json(const std::vector<int>& v) {
   return a;
 }
 
-ojson strike_json(const bs::CueStrike& s) {
-  ojson j = ojson::object();
-  j["speed"] = s.speed;
-  j["phi"] = s.phi;
-  j["theta"] = s.theta;
-  j["a"] = s.a;
-  j["b"] = s.b;
-  return j;
-}
-
-/// An action in the form bs_game_act reads.
-ojson action_json(const bs::Action& a) {
-  ojson j = ojson::object();
-  if (const auto* p = std::get_if<bs::PlaceCueBall>(&a)) {
-    j["place"] = vec2_json(p->position);
-  } else if (const auto* s = std::get_if<bs::Shoot>(&a)) {
-    j["shoot"] = strike_json(s->strike);
-    if (s->call) {
-      ojson c = ojson::object();
-      c["ball"] = s->call->ball;
-      c["pocket"] = s->call->pocket;
-      j["call"] = c;
-    }
-    j["safety"] = s->safety;
-    j["push_out"] = s->push_out;
-  } else {
-    j["decide"] = bs::to_string(std::get<bs::Decide>(a).choice);
-  }
-  return j;
-}
-
 std::string_view action_kind(const bs::Action& a) {
   if (std::holds_alternative<bs::PlaceCueBall>(a)) return "place";
   if (std::holds_alternative<bs::Shoot>(a)) return "shoot";
   return "decide";
-}
-
-ojson ruling_json(const bs::Ruling& r) {
-  ojson j = ojson::object();
-  ojson fouls = ojson::array();
-  for (const bs::Foul f : r.fouls) fouls.push_back(bs::to_string(f));
-  j["fouls"] = fouls;
-  j["text"] = r.text;
-  j["turn_continues"] = r.turn_continues;
-  j["legal_break"] = r.legal_break;
-  j["assigned"] = bs::to_string(r.assigned);
-  j["spotted"] = ints_json(r.spotted);
-  j["winner"] = r.winner;
-  j["call_made"] = r.call_made;
-  return j;
 }
 
 ojson facts_json(const bs::ShotFacts& f) {
@@ -341,43 +265,6 @@ ojson facts_json(const bs::ShotFacts& f) {
   j["miscue"] = f.miscue;
   j["cushion_after_contact"] = f.cushion_after_contact;
   j["object_balls_to_cushion"] = f.object_balls_to_cushion;
-  return j;
-}
-
-/// An event as the result file writes it (ids for balls, names for
-/// cushions and pockets).
-ojson event_json(const bs::Scenario& s, const bs::Event& e) {
-  const auto id = [&](std::int32_t i) -> ojson {
-    if (i >= 0 && static_cast<std::size_t>(i) < s.balls.size()) {
-      return s.balls[static_cast<std::size_t>(i)].id;
-    }
-    return nullptr;
-  };
-  ojson j = ojson::object();
-  j["time"] = e.time;
-  j["type"] = bs::to_string(e.type);
-  ojson balls = ojson::array({id(e.ball)});
-  if (e.type == bs::EventType::ball_ball) balls.push_back(id(e.other));
-  j["balls"] = balls;
-  switch (e.type) {
-    case bs::EventType::ball_cushion:
-      j["cushion"] = e.wall >= 0 && static_cast<std::size_t>(e.wall) < s.table.walls.size()
-                         ? ojson(s.table.walls[static_cast<std::size_t>(e.wall)].name)
-                         : ojson(nullptr);
-      break;
-    case bs::EventType::ball_pocket:
-      j["pocket"] = e.pocket >= 0 && static_cast<std::size_t>(e.pocket) < s.table.pockets.size()
-                        ? ojson(s.table.pockets[static_cast<std::size_t>(e.pocket)].name)
-                        : ojson(nullptr);
-      break;
-    case bs::EventType::state_change:
-      j["from"] = bs::to_string(e.from);
-      j["to"] = bs::to_string(e.to);
-      break;
-    case bs::EventType::cue_strike:
-    case bs::EventType::ball_ball:
-      break;
-  }
   return j;
 }
 
@@ -530,8 +417,8 @@ constexpr std::size_t kFrameStride = 8;
 void compute_frame(BsPlayback& pb, double t) {
   if (!std::isfinite(t)) bad("t", "not a finite number");
   if (t < pb.sim.time()) {
-    bad("t", "the frame time goes backwards (" + ojson(t).dump() + " < " +
-                 ojson(pb.sim.time()).dump() + ")");
+    bad("t", "the frame time goes backwards (" + bs::json_io::format_number(t) + " < " +
+                 bs::json_io::format_number(pb.sim.time()) + ")");
   }
   // A run that ends at a time ends there (as simulate() does).
   const double target = pb.scenario.until.rest ? t : std::fmin(t, pb.scenario.until.time);
@@ -590,19 +477,21 @@ std::string frame_json(BsPlayback& pb, double t) {
   return j.dump();
 }
 
+/// {"from": from, "events": [...]}, each event as the result file writes
+/// it (io/result_json.hpp: ids for balls, names for cushions and pockets).
 std::string events_json(const BsPlayback& pb, int from) {
   const std::vector<bs::Event>& ev = pb.sim.events();
   if (from < 0 || static_cast<std::size_t>(from) > ev.size()) {
     bad("from", "must be in [0, " + std::to_string(ev.size()) + "], not " + std::to_string(from));
   }
-  ojson list = ojson::array();
+  std::string out = "{\"from\":" + std::to_string(from) + ",\"events\":[";
+  bs::json_io::JsonWriter w(out);
   for (std::size_t k = static_cast<std::size_t>(from); k < ev.size(); ++k) {
-    list.push_back(event_json(pb.scenario, ev[k]));
+    if (k > static_cast<std::size_t>(from)) out += ',';
+    bs::json_io::write_event(w, pb.scenario, ev[k]);
   }
-  ojson j = ojson::object();
-  j["from"] = from;
-  j["events"] = list;
-  return j.dump();
+  out += "]}";
+  return out;
 }
 
 bs::Scenario scenario_from(const char* scenario_json) {
@@ -658,16 +547,17 @@ struct GameConfigInput {
 constexpr std::int64_t kMaxBudget = 1'000'000'000;
 
 bs::GameType game_type(const json& v, const std::string& path) {
-  const std::string& s = text(v, path);
-  const auto g = bs::parse_game_type(s);
-  if (!g) bad(path, "unknown game \"" + s + "\" (known: eight_ball, nine_ball)");
-  return *g;
+  Reader r;
+  bs::GameType g{};
+  r.must(r.game_type(v, path, g));
+  return g;
 }
 
 std::string table_size(const json& v, const std::string& path) {
-  const std::string& s = text(v, path);
-  if (s != "7ft" && s != "8ft" && s != "9ft") bad(path, "unknown table \"" + s + "\" (known: 7ft, 8ft, 9ft)");
-  return s;
+  Reader r;
+  std::string size;
+  r.must(r.table_size(v, path, size));
+  return size;
 }
 
 GameConfigInput read_config(const json& doc) {
@@ -690,46 +580,13 @@ std::unique_ptr<BsGame> make_game(const GameConfigInput& in) {
   return std::make_unique<BsGame>(in.config, in.seats, in.seed, in.breaker, in.ai_budget);
 }
 
+/// An action in the records' form (src/io/game_json.hpp), every field
+/// required.
 bs::Action read_action(const json& doc) {
-  if (!doc.is_object()) bad("(action)", "expected an object, not " + kind_of(doc));
-  if (find(doc, "place") != nullptr) {
-    object(doc, "", {"place"});
-    const json& p = doc["place"];
-    if (!p.is_array() || p.size() != 2) bad("place", "expected [x, y]");
-    return bs::PlaceCueBall{{number(p[0], "place[0]"), number(p[1], "place[1]")}};
-  }
-  if (find(doc, "decide") != nullptr) {
-    object(doc, "", {"decide"});
-    const std::string& c = text(doc["decide"], "decide");
-    const auto choice = bs::parse_choice(c);
-    if (!choice) {
-      bad("decide", "unknown choice \"" + c +
-                        "\" (known: shoot, pass_back, accept_table, rerack_and_break, "
-                        "rerack_opponent_breaks, respot_eight)");
-    }
-    return bs::Decide{*choice};
-  }
-  if (find(doc, "shoot") != nullptr) {
-    object(doc, "", {"shoot", "call", "safety", "push_out"});
-    const json& s = object(doc["shoot"], "shoot", {"speed", "phi", "theta", "a", "b"});
-    bs::Shoot shot;
-    shot.strike.speed = number(required(s, "shoot", "speed"), "shoot.speed");
-    shot.strike.phi = number(required(s, "shoot", "phi"), "shoot.phi");
-    if (const json* v = find(s, "theta")) shot.strike.theta = number(*v, "shoot.theta");
-    if (const json* v = find(s, "a")) shot.strike.a = number(*v, "shoot.a");
-    if (const json* v = find(s, "b")) shot.strike.b = number(*v, "shoot.b");
-    if (const json* c = find(doc, "call"); c != nullptr && !c->is_null()) {
-      object(*c, "call", {"ball", "pocket"});
-      bs::Call call;
-      call.ball = static_cast<int>(integer(required(*c, "call", "ball"), "call.ball", 0, 1000));
-      call.pocket = static_cast<int>(integer(required(*c, "call", "pocket"), "call.pocket", 0, 1000));
-      shot.call = call;
-    }
-    if (const json* v = find(doc, "safety")) shot.safety = boolean(*v, "safety");
-    if (const json* v = find(doc, "push_out")) shot.push_out = boolean(*v, "push_out");
-    return shot;
-  }
-  bad("(action)", "expected one of {\"place\": [x, y]}, {\"shoot\": {...}} or {\"decide\": \"...\"}");
+  Reader r;
+  bs::Action action;
+  r.must(r.action(doc, "", action));
+  return action;
 }
 
 ojson legal_json(const bs::LegalActions& la) {
@@ -746,29 +603,12 @@ ojson legal_json(const bs::LegalActions& la) {
   return j;
 }
 
+/// bs_game_state's reply: the state as game records write it
+/// (src/io/game_json.hpp), then the seats, the number of actions and what
+/// the rules allow next.
 ojson state_json(const BsGame& g) {
   const bs::GameState& s = g.state();
-  ojson j = ojson::object();
-  j["game"] = bs::to_string(s.game);
-  j["phase"] = bs::to_string(s.phase);
-  j["player"] = s.player;
-  j["breaker"] = s.breaker;
-  j["ball_in_hand"] = bs::to_string(s.ball_in_hand);
-  j["kitchen_shot"] = s.kitchen_shot;
-  ojson balls = ojson::array();
-  for (std::size_t b = 0; b < s.position.size(); ++b) {
-    balls.push_back(ojson::array({s.position[b].x, s.position[b].y, s.on_table[b] ? 1 : 0}));
-  }
-  j["balls"] = balls;
-  j["group"] = ojson::array({bs::to_string(s.group[0]), bs::to_string(s.group[1])});
-  j["fouls_in_a_row"] = ojson::array({s.fouls_in_a_row[0], s.fouls_in_a_row[1]});
-  j["push_out_allowed"] = s.push_out_allowed;
-  j["after_push_out"] = s.after_push_out;
-  j["winner"] = s.winner;
-  j["result"] = s.result;
-  j["shots"] = s.shots;
-  j["innings"] = s.innings;
-  j["racks"] = s.racks;
+  ojson j = bs::json_io::state_json(s);
   j["players"] = ojson::array({g.seats[0], g.seats[1]});
   j["actions"] = g.record().actions.size();
   j["legal"] = legal_json(g.rules().legal_actions(s));
@@ -891,7 +731,7 @@ std::string link_text(const BsGame& g) {
   ojson j = ojson::object();
   j["g"] = bs::to_string(g.record().config.game);
   j["t"] = g.record().config.table_size;
-  j["s"] = std::to_string(g.record().seed);
+  j["s"] = bs::json_io::seed_json(g.record().seed);
   j["b"] = g.record().start.breaker;
   j["p"] = ojson::array({g.seats[0], g.seats[1]});
   if (g.ai_budget) j["n"] = *g.ai_budget;
@@ -939,10 +779,10 @@ bs::Action link_action(const json& v, const std::string& path) {
   }
   if (k == "d") {
     if (v.size() != 2) bad(path, "expected [\"d\", \"choice\"]");
-    const std::string& c = text(v[1], index_path(path, 1));
-    const auto choice = bs::parse_choice(c);
-    if (!choice) bad(index_path(path, 1), "unknown choice \"" + c + "\"");
-    return bs::Decide{*choice};
+    Reader r;
+    bs::Decide decide;
+    r.must(r.choice(v[1], index_path(path, 1), decide.choice));
+    return decide;
   }
   bad(index_path(path, 0), "unknown action kind \"" + k + "\" (known: p, s, d)");
 }
@@ -960,17 +800,15 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
   }
   const std::optional<std::string> decoded = unbase64url(text_view.substr(kLinkPrefix.size()));
   if (!decoded) bad("link", "not base64url text after \"v1.\"");
-  json doc;
-  try {
-    doc = json::parse(*decoded);
-  } catch (const json::parse_error& e) {
-    bad("link", std::string("not valid JSON inside: ") + e.what());
-  }
+  const json doc = parse_text(decoded->c_str(), "link", "link");
   object(doc, "link", {"g", "t", "s", "b", "p", "n", "a"});
   GameConfigInput in;
   in.config.game = game_type(required(doc, "link", "g"), "link.g");
   in.config.table_size = table_size(required(doc, "link", "t"), "link.t");
-  in.seed = parse_seed(text(required(doc, "link", "s"), "link.s"), "link.s");
+  {
+    Reader r;
+    r.must(r.seed(required(doc, "link", "s"), "link.s", in.seed));
+  }
   in.breaker = static_cast<int>(integer(required(doc, "link", "b"), "link.b", 0, 1));
   const json& players = required(doc, "link", "p");
   if (!players.is_array() || players.size() != 2) bad("link.p", "expected two seats");

@@ -230,9 +230,14 @@ class Game {
   state() { return parse(this._raw.state(this._handle())); }
   /** {ok: true} or {ok: false, reason}. */
   checkPlacement(x, y) { return parse(this._raw.checkPlacement(this._handle(), numArg(x, 'x'), numArg(y, 'y'))); }
-  /** Plays an action ({place}, {shoot, call?, safety?, push_out?} or {decide}) for the seat to act. */
+  /**
+   * Plays an action for the seat to act, in the records' form, every field given:
+   * {type: 'place_cue_ball', position: [x, y]},
+   * {type: 'shoot', strike: {speed, phi, theta, a, b}, call: {ball, pocket} | null, safety, push_out}
+   * or {type: 'decide', choice}.
+   */
   act(action) { return parse(this._raw.act(this._handle(), toJson(action))); }
-  /** {action}: the AI's decision for the seat to act (its own level, or `level` for a hint). */
+  /** {action}: the AI's decision for the seat to act (its own level, or `level` for a hint), in the form act() takes. */
   aiAction(level) { return parse(this._raw.aiAction(this._handle(), level === undefined || level === null || level === '' ? null : String(level))); }
   /** The playback of the shot of action `index`, from the state before it. */
   shotPlayback(index) { return newPlayback(this._raw, this._raw.shotPlayback(this._handle(), intArg(index, 'index'))); }

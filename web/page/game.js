@@ -16,6 +16,13 @@ const DEFAULT_SPEED = 3;
 const TIP_LIMIT = 0.48;
 const FADE = 0.3;          // seconds a pocketed ball takes to vanish    // largest tip offset the widget allows (miscue limit 0.5)
 
+/** Ball n of an engine state (position and on_table by ball number, as in
+ *  game records): {x, y, on}, or null for a number the game does not have. */
+function ballOf(st, n) {
+  const p = st && st.position ? st.position[n] : null;
+  return p ? { x: p[0], y: p[1], on: !!st.on_table[n] } : null;
+}
+
 const POCKET_WORDS = {
   bottom_left: 'bottom-left corner',
   side_bottom: 'bottom side',
@@ -278,16 +285,16 @@ export class GameUI {
   objectBalls() {
     const out = [];
     if (!this.st) return out;
-    this.st.balls.forEach((b, n) => {
-      if (n > 0 && b[2]) out.push({ n, x: b[0], y: b[1] });
+    this.st.position.forEach((p, n) => {
+      if (n > 0 && this.st.on_table[n]) out.push({ n, x: p[0], y: p[1] });
     });
     return out;
   }
 
   cuePos() {
     if (this.placePos) return this.placePos;
-    const c = this.st && this.st.balls[0];
-    if (c && c[2]) return { x: c[0], y: c[1] };
+    const c = ballOf(this.st, 0);
+    if (c && c.on) return { x: c.x, y: c.y };
     return null;
   }
 
@@ -314,7 +321,7 @@ export class GameUI {
   }
 
   defaultPlacement(legal) {
-    const c = this.st.balls[0];
+    const c = ballOf(this.st, 0);
     const tryAt = (x, y) => {
       try {
         return this.g.checkPlacement(x, y).ok;
@@ -322,7 +329,7 @@ export class GameUI {
         return false;
       }
     };
-    if (c && c[2] && !legal.must_place) return { x: c[0], y: c[1] };
+    if (c && c.on && !legal.must_place) return { x: c.x, y: c.y };
     const t = this.table;
     const hs = t.head_spot || [t.length / 4, t.width / 2];
     if (tryAt(hs[0], hs[1])) return { x: hs[0], y: hs[1] };
@@ -384,7 +391,7 @@ export class GameUI {
     const pocketAuto = pocket == null;
     if (ball == null) return { ball: null, pocket, ballAuto, pocketAuto };
     if (pocket == null) {
-      const b = this.st.balls[ball];
+      const b = this.st.position[ball];
       let dir;
       if (geo && geo.hit && geo.hit.n === ball) dir = geo.objectDir;
       else {
@@ -407,7 +414,14 @@ export class GameUI {
   shotAction() {
     const legal = this.legal();
     const s = this.aim;
-    const action = { shoot: { speed: s.speed, phi: s.phi, theta: s.theta, a: s.a, b: s.b } };
+    // the records' form of an action (src/io/game_json.hpp), every field given
+    const action = {
+      type: 'shoot',
+      strike: { speed: s.speed, phi: s.phi, theta: s.theta, a: s.a, b: s.b },
+      call: null,
+      safety: false,
+      push_out: false,
+    };
     if (legal.call) {
       const call = this.currentCall(this.geometry());
       if (call && call.ball != null && call.pocket != null) action.call = { ball: call.ball, pocket: call.pocket };
@@ -425,11 +439,11 @@ export class GameUI {
       return;
     }
     if (this.placePos && legal.place && legal.place !== 'none') {
-      const c = this.st.balls[0];
-      const moved = !c || !c[2] || c[0] !== this.placePos.x || c[1] !== this.placePos.y;
+      const c = ballOf(this.st, 0);
+      const moved = !c || !c.on || c.x !== this.placePos.x || c.y !== this.placePos.y;
       if (legal.must_place || moved) {
         const keepAim = { ...this.aim };
-        const r = this.doAct({ place: [this.placePos.x, this.placePos.y] }, { keepAim: true });
+        const r = this.doAct({ type: 'place_cue_ball', position: [this.placePos.x, this.placePos.y] }, { keepAim: true });
         if (r.error) return;
         this.aim = keepAim;
         legal = this.legal();
@@ -444,7 +458,7 @@ export class GameUI {
 
   decide(choice) {
     if (!this.canAct()) return;
-    this.doAct({ decide: choice });
+    this.doAct({ type: 'decide', choice });
   }
 
   /** g.act with logging, animation and the AI's turn after it. */
@@ -759,8 +773,8 @@ export class GameUI {
       scene.balls.sort((p, q) => (p.n === 0) - (q.n === 0));
       return scene;
     }
-    this.st.balls.forEach((b, n) => {
-      if (b[2]) scene.balls.push({ n, x: b[0], y: b[1] });
+    this.st.position.forEach((p, n) => {
+      if (this.st.on_table[n]) scene.balls.push({ n, x: p[0], y: p[1] });
     });
     const legal = this.legal();
     const canAct = this.canAct();
@@ -917,7 +931,7 @@ export class GameUI {
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.clearRect(0, 0, W, H);
     const st = this.st;
-    const on = (n) => st.balls[n] && st.balls[n][2];
+    const on = (n) => !!st.on_table[n];
     const r = 10;
     const row = (y, label, balls, colour) => {
       ctx.fillStyle = colour;

@@ -1,0 +1,340 @@
+// The JSON of the game's types (game_json.hpp).
+
+#include "io/game_json.hpp"
+
+#include <climits>
+#include <string_view>
+#include <utility>
+#include <variant>
+
+namespace breakshot::json_io {
+
+namespace {
+
+// Every value of each enum, for the messages that list them.
+constexpr GameType kGameTypes[] = {GameType::eight_ball, GameType::nine_ball};
+constexpr Phase kPhases[] = {Phase::break_shot,           Phase::shot,
+                             Phase::push_out_choice,      Phase::illegal_break_choice,
+                             Phase::eight_on_break_choice, Phase::game_over};
+constexpr BallInHand kBallInHand[] = {BallInHand::none, BallInHand::kitchen,
+                                      BallInHand::anywhere};
+constexpr Group kGroups[] = {Group::none, Group::solids, Group::stripes};
+constexpr Choice kChoices[] = {Choice::shoot,
+                               Choice::pass_back,
+                               Choice::accept_table,
+                               Choice::rerack_and_break,
+                               Choice::rerack_opponent_breaks,
+                               Choice::respot_eight};
+constexpr Foul kFouls[] = {Foul::scratch,      Foul::no_contact,    Foul::wrong_ball_first,
+                           Foul::no_rail,      Foul::illegal_break, Foul::behind_head_string};
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Encoding
+
+ojson seed_json(std::uint64_t s) { return std::to_string(s); }
+
+ojson vec2_json(Vec2 v) { return ojson::array({v.x, v.y}); }
+
+ojson strike_json(const CueStrike& s) {
+  const auto& [speed, phi, theta, a, b] = s;
+  ojson j = ojson::object();
+  j["speed"] = speed;
+  j["phi"] = phi;
+  j["theta"] = theta;
+  j["a"] = a;
+  j["b"] = b;
+  return j;
+}
+
+ojson config_json(const GameConfig& c) {
+  const auto& [game, table_size, ball_radius, ball_mass, max_shots] = c;
+  ojson j = ojson::object();
+  j["game"] = to_string(game);
+  j["table_size"] = table_size;
+  j["ball_radius"] = ball_radius;
+  j["ball_mass"] = ball_mass;
+  j["max_shots"] = max_shots;
+  return j;
+}
+
+ojson noise_json(const NoiseModel& n) {
+  const auto& [phi, theta, speed, a, b] = n;
+  ojson j = ojson::object();
+  j["phi"] = phi;
+  j["theta"] = theta;
+  j["speed"] = speed;
+  j["a"] = a;
+  j["b"] = b;
+  return j;
+}
+
+ojson state_json(const GameState& s) {
+  // Structured bindings name every member: when GameState gains or loses
+  // one, this stops compiling instead of writing records that miss it.
+  const auto& [game, position, on_table, phase, player, breaker, ball_in_hand, kitchen_shot,
+               group, fouls_in_a_row, push_out_allowed, after_push_out, scratch_on_break,
+               winner, result, shots, innings, rack_seed, racks] = s;
+  ojson j = ojson::object();
+  j["game"] = to_string(game);
+  j["phase"] = to_string(phase);
+  j["player"] = player;
+  j["breaker"] = breaker;
+  j["ball_in_hand"] = to_string(ball_in_hand);
+  j["kitchen_shot"] = kitchen_shot;
+  j["group"] = ojson::array({to_string(group[0]), to_string(group[1])});
+  j["fouls_in_a_row"] = ojson::array({fouls_in_a_row[0], fouls_in_a_row[1]});
+  j["push_out_allowed"] = push_out_allowed;
+  j["after_push_out"] = after_push_out;
+  j["scratch_on_break"] = scratch_on_break;
+  j["winner"] = winner;
+  j["result"] = result;
+  j["shots"] = shots;
+  j["innings"] = innings;
+  j["rack_seed"] = seed_json(rack_seed);
+  j["racks"] = racks;
+  ojson pos = ojson::array();
+  for (const Vec2& p : position) pos.push_back(vec2_json(p));
+  j["position"] = std::move(pos);
+  ojson on = ojson::array();
+  for (const std::uint8_t b : on_table) on.push_back(static_cast<int>(b));
+  j["on_table"] = std::move(on);
+  return j;
+}
+
+ojson ruling_json(const Ruling& r) {
+  const auto& [fouls, legal_break, turn_continues, assigned, spotted, winner, text, call_made] = r;
+  ojson j = ojson::object();
+  ojson names = ojson::array();
+  for (const Foul f : fouls) names.push_back(to_string(f));
+  j["fouls"] = std::move(names);
+  j["legal_break"] = legal_break;
+  j["turn_continues"] = turn_continues;
+  j["assigned"] = to_string(assigned);
+  j["spotted"] = spotted;
+  j["winner"] = winner;
+  j["text"] = text;
+  j["call_made"] = call_made;
+  return j;
+}
+
+ojson action_json(const Action& a) {
+  ojson j = ojson::object();
+  if (const auto* place = std::get_if<PlaceCueBall>(&a)) {
+    j["type"] = "place_cue_ball";
+    j["position"] = vec2_json(place->position);
+  } else if (const auto* shoot = std::get_if<Shoot>(&a)) {
+    const auto& [strike, call, safety, push_out] = *shoot;
+    j["type"] = "shoot";
+    j["strike"] = strike_json(strike);
+    if (call) {
+      const auto& [ball, pocket] = *call;
+      j["call"] = ojson::object();
+      j["call"]["ball"] = ball;
+      j["call"]["pocket"] = pocket;
+    } else {
+      j["call"] = nullptr;
+    }
+    j["safety"] = safety;
+    j["push_out"] = push_out;
+  } else {
+    j["type"] = "decide";
+    j["choice"] = to_string(std::get<Decide>(a).choice);
+  }
+  return j;
+}
+
+
+// ---------------------------------------------------------------------------
+// Decoding
+
+bool GameReader::config(const json& v, const std::string& path, GameConfig& c) {
+  if (!exact_object(v, path, {"game", "table_size", "ball_radius", "ball_mass", "max_shots"})) {
+    return false;
+  }
+  const auto at = [&](std::string_view key) { return member_path(path, key); };
+  return game_type(v["game"], at("game"), c.game) &&
+         table_size(v["table_size"], at("table_size"), c.table_size) &&
+         number(v["ball_radius"], at("ball_radius"), c.ball_radius) &&
+         positive(c.ball_radius, at("ball_radius")) &&
+         number(v["ball_mass"], at("ball_mass"), c.ball_mass) &&
+         positive(c.ball_mass, at("ball_mass")) &&
+         integer(v["max_shots"], at("max_shots"), 0, INT_MAX, c.max_shots);
+}
+
+bool GameReader::noise(const json& v, const std::string& path, NoiseModel& n) {
+  if (!exact_object(v, path, {"phi", "theta", "speed", "a", "b"})) return false;
+  const auto component = [&](std::string_view key, double& out) {
+    const std::string at = member_path(path, key);
+    return number(v[std::string(key)], at, out) && non_negative(out, at);
+  };
+  return component("phi", n.phi) && component("theta", n.theta) &&
+         component("speed", n.speed) && component("a", n.a) && component("b", n.b);
+}
+
+bool GameReader::strike(const json& v, const std::string& path, CueStrike& s) {
+  if (!exact_object(v, path, {"speed", "phi", "theta", "a", "b"})) return false;
+  return number(v["speed"], member_path(path, "speed"), s.speed) &&
+         number(v["phi"], member_path(path, "phi"), s.phi) &&
+         number(v["theta"], member_path(path, "theta"), s.theta) &&
+         number(v["a"], member_path(path, "a"), s.a) &&
+         number(v["b"], member_path(path, "b"), s.b);
+}
+
+bool GameReader::state(const json& v, const std::string& path, GameState& s) {
+  if (!exact_object(v, path,
+              {"game", "phase", "player", "breaker", "ball_in_hand", "kitchen_shot", "group",
+               "fouls_in_a_row",
+               "push_out_allowed", "after_push_out", "scratch_on_break", "winner", "result",
+               "shots", "innings", "rack_seed", "racks", "position", "on_table"})) {
+    return false;
+  }
+  const auto at = [&](std::string_view key) { return member_path(path, key); };
+  if (!game_type(v["game"], at("game"), s.game) ||
+      !name(v["phase"], at("phase"), "phase", parse_phase, kPhases, s.phase) ||
+      !integer(v["player"], at("player"), 0, 1, s.player) ||
+      !integer(v["breaker"], at("breaker"), 0, 1, s.breaker) ||
+      !name(v["ball_in_hand"], at("ball_in_hand"), "ball_in_hand", parse_ball_in_hand,
+            kBallInHand, s.ball_in_hand) ||
+      !boolean(v["kitchen_shot"], at("kitchen_shot"), s.kitchen_shot)) {
+    return false;
+  }
+  const json& group = v["group"];
+  const json& fouls = v["fouls_in_a_row"];
+  if (!array(group, at("group"), 2) || !array(fouls, at("fouls_in_a_row"), 2)) return false;
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (!name(group[i], index_path(at("group"), i), "group", parse_group, kGroups, s.group[i]) ||
+        !integer(fouls[i], index_path(at("fouls_in_a_row"), i), 0, INT_MAX,
+                 s.fouls_in_a_row[i])) {
+      return false;
+    }
+  }
+  if (!boolean(v["push_out_allowed"], at("push_out_allowed"), s.push_out_allowed) ||
+      !boolean(v["after_push_out"], at("after_push_out"), s.after_push_out) ||
+      !boolean(v["scratch_on_break"], at("scratch_on_break"), s.scratch_on_break) ||
+      !integer(v["winner"], at("winner"), -1, 1, s.winner) ||
+      !text(v["result"], at("result"), s.result) ||
+      !integer(v["shots"], at("shots"), 0, INT_MAX, s.shots) ||
+      !integer(v["innings"], at("innings"), 0, INT_MAX, s.innings) ||
+      !seed(v["rack_seed"], at("rack_seed"), s.rack_seed) ||
+      !integer(v["racks"], at("racks"), 0, INT_MAX, s.racks)) {
+    return false;
+  }
+  const json& position = v["position"];
+  if (!array(position, at("position"))) return false;
+  s.position.resize(position.size());
+  for (std::size_t i = 0; i < position.size(); ++i) {
+    if (!vec2(position[i], index_path(at("position"), i), s.position[i])) return false;
+  }
+  const json& on_table = v["on_table"];
+  if (!array(on_table, at("on_table"))) return false;
+  if (on_table.size() != position.size()) {
+    return fail(at("on_table"), "has " + std::to_string(on_table.size()) +
+                                    " entries but position has " +
+                                    std::to_string(position.size()) + " (one per ball)");
+  }
+  s.on_table.resize(on_table.size());
+  for (std::size_t i = 0; i < on_table.size(); ++i) {
+    int flag = 0;
+    if (!integer(on_table[i], index_path(at("on_table"), i), 0, 1, flag)) return false;
+    s.on_table[i] = static_cast<std::uint8_t>(flag);
+  }
+  return true;
+}
+
+bool GameReader::ruling(const json& v, const std::string& path, Ruling& r) {
+  if (!exact_object(v, path,
+              {"fouls", "legal_break", "turn_continues", "assigned", "spotted", "winner",
+               "text", "call_made"})) {
+    return false;
+  }
+  const auto at = [&](std::string_view key) { return member_path(path, key); };
+  const json& fouls = v["fouls"];
+  if (!array(fouls, at("fouls"))) return false;
+  r.fouls.resize(fouls.size());
+  for (std::size_t i = 0; i < fouls.size(); ++i) {
+    if (!name(fouls[i], index_path(at("fouls"), i), "foul", parse_foul, kFouls, r.fouls[i])) {
+      return false;
+    }
+  }
+  if (!boolean(v["legal_break"], at("legal_break"), r.legal_break) ||
+      !boolean(v["turn_continues"], at("turn_continues"), r.turn_continues) ||
+      !name(v["assigned"], at("assigned"), "group", parse_group, kGroups, r.assigned)) {
+    return false;
+  }
+  const json& spotted = v["spotted"];
+  if (!array(spotted, at("spotted"))) return false;
+  r.spotted.resize(spotted.size());
+  for (std::size_t i = 0; i < spotted.size(); ++i) {
+    if (!integer(spotted[i], index_path(at("spotted"), i), 0, 15, r.spotted[i])) return false;
+  }
+  return integer(v["winner"], at("winner"), -1, 1, r.winner) &&
+         text(v["text"], at("text"), r.text) &&
+         boolean(v["call_made"], at("call_made"), r.call_made);
+}
+
+bool GameReader::action(const json& v, const std::string& path, Action& a) {
+  if (!require_object(v, path)) return false;
+  const json* type = find(v, "type");
+  const std::string type_path = member_path(path, "type");
+  if (type == nullptr) return fail(type_path, "missing required field");
+  if (!type->is_string()) return fail(type_path, expected("a string", *type));
+  const std::string& t = type->get_ref<const std::string&>();
+  if (t == "place_cue_ball") {
+    PlaceCueBall place;
+    if (!exact_object(v, path, {"type", "position"}) ||
+        !vec2(v["position"], member_path(path, "position"), place.position)) {
+      return false;
+    }
+    a = place;
+    return true;
+  }
+  if (t == "shoot") {
+    Shoot shoot;
+    if (!exact_object(v, path, {"type", "strike", "call", "safety", "push_out"}) ||
+        !strike(v["strike"], member_path(path, "strike"), shoot.strike)) {
+      return false;
+    }
+    const json& call = v["call"];
+    const std::string call_path = member_path(path, "call");
+    if (!call.is_null()) {
+      Call c;
+      if (!exact_object(call, call_path, {"ball", "pocket"}) ||
+          !integer(call["ball"], member_path(call_path, "ball"), -1, 15, c.ball) ||
+          !integer(call["pocket"], member_path(call_path, "pocket"), -1, 5, c.pocket)) {
+        return false;
+      }
+      shoot.call = c;
+    }
+    if (!boolean(v["safety"], member_path(path, "safety"), shoot.safety) ||
+        !boolean(v["push_out"], member_path(path, "push_out"), shoot.push_out)) {
+      return false;
+    }
+    a = shoot;
+    return true;
+  }
+  if (t == "decide") {
+    Decide decide;
+    if (!exact_object(v, path, {"type", "choice"}) ||
+        !choice(v["choice"], member_path(path, "choice"), decide.choice)) {
+      return false;
+    }
+    a = decide;
+    return true;
+  }
+  return fail(type_path, unknown("action type", t, one_of({"place_cue_ball", "shoot", "decide"})));
+}
+
+bool GameReader::game_type(const json& v, const std::string& path, GameType& out) {
+  return name(v, path, "game", parse_game_type, kGameTypes, out);
+}
+
+bool GameReader::table_size(const json& v, const std::string& path, std::string& out) {
+  return text_of(v, path, "table size", {"7ft", "8ft", "9ft"}, out);
+}
+
+bool GameReader::choice(const json& v, const std::string& path, Choice& out) {
+  return name(v, path, "choice", parse_choice, kChoices, out);
+}
+
+}  // namespace breakshot::json_io
