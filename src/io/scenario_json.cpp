@@ -52,10 +52,6 @@ constexpr double kMaxMagnitude = 1e12;
 /// as an out-of-memory crash after a long wait.
 constexpr double kMaxSamples = 1e7;
 
-/// Pool model default for physics.ball_ball_restitution: the middle of
-/// Alciatore's measured 0.92-0.98 for phenolic pool balls.
-constexpr double kPoolBallBallRestitution = 0.95;
-
 /// How far a given ball may overlap a ball the rack places and still
 /// count as touching: validate()'s tolerance (src/physics/validate.cpp).
 constexpr double kTouchTolerance = 1e-9;
@@ -197,16 +193,13 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
   if (!m->is_string()) return fail(model_path, expected("a string", *m));
   const std::string model = m->get<std::string>();
   PhysicsParams& ph = s.physics;
-  ph = PhysicsParams{};
+  // Every field not given keeps the model's default (default_physics).
   if (model == "ideal") {
-    ph.model = Model::ideal;
+    ph = default_physics(Model::ideal);
   } else if (model == "friction") {
-    ph.model = Model::friction;
+    ph = default_physics(Model::friction);
   } else if (model == "pool") {
-    ph.model = Model::pool;
-    // A pool ball on a pool ball: Alciatore's measured restitution is
-    // 0.92-0.98; 0.95 is the middle of it.
-    ph.ball_ball_restitution = kPoolBallBallRestitution;
+    ph = default_physics(Model::pool);
   } else {
     return fail(model_path, "unknown model \"" + model +
                                 "\" (expected \"ideal\", \"friction\" or \"pool\")");
@@ -224,9 +217,9 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
   }
   // Pool: the friction between balls falls with the slip speed. Without a
   // constant given, the engine uses the measured fit mu(v) (pool.hpp,
-  // BallFriction); a given value is a constant mu for every impact.
-  ph.ball_ball_friction_fit =
-      ph.model == Model::pool && find(*p, "ball_ball_friction") == nullptr;
+  // BallFriction; the default); a given value is a constant mu for every
+  // impact.
+  if (find(*p, "ball_ball_friction") != nullptr) ph.ball_ball_friction_fit = false;
   if (!optional_number(*p, path, "gravity", ph.gravity) ||
       !non_negative(ph.gravity, member_path(path, "gravity"))) {
     return false;
@@ -248,10 +241,10 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
       !non_negative(ph.spinning_friction, member_path(path, "spinning_friction"))) {
     return false;
   }
-  // Pool balls pushing a frozen cluster are in contact for a long time;
-  // each re-contact of a pressed pair is an event, so the pool model uses
-  // a larger threshold: 1 mm/s, far below anything a player sees.
-  if (ph.model == Model::pool) ph.collapse_speed = kPoolCollapseSpeed;
+  // The pool model's collapse_speed is larger (kPoolCollapseSpeed, 1 mm/s,
+  // far below anything a player sees): balls pushing a frozen cluster are
+  // in contact for a long time, and each re-contact of a pressed pair is
+  // an event.
   if (!optional_number(*p, path, "collapse_speed", ph.collapse_speed) ||
       !positive(ph.collapse_speed, member_path(path, "collapse_speed"))) {
     return false;
