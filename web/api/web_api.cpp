@@ -869,6 +869,47 @@ const char* null_handle() {
 }  // namespace
 
 // ---------------------------------------------------------------------------
+// Defaults: the page's blank fields show them, and its balls take them.
+
+namespace {
+
+ojson physics_defaults_json(bs::Model model) {
+  const bs::PhysicsParams p = bs::default_physics(model);
+  ojson j = ojson::object();
+  j["ball_ball_restitution"] = p.ball_ball_restitution;
+  j["ball_ball_friction"] = p.ball_ball_friction;
+  j["ball_ball_friction_fit"] = p.ball_ball_friction_fit;
+  j["gravity"] = p.gravity;
+  j["deceleration"] = p.deceleration;
+  j["sliding_friction"] = p.sliding_friction;
+  j["rolling_friction"] = p.rolling_friction;
+  j["spinning_friction"] = p.spinning_friction;
+  j["collapse_speed"] = p.collapse_speed;
+  j["ball_clusters"] = p.ball_clusters;
+  return j;
+}
+
+/// default_physics for every model, the default ball and the pool
+/// cushion's restitution (a pool ball's default wall restitution).
+ojson defaults_json() {
+  ojson j = ojson::object();
+  ojson ball = ojson::object();
+  ball["radius"] = bs::kPoolBallRadius;
+  ball["mass"] = bs::kPoolBallMass;
+  ball["wall_restitution"] = bs::BallSpec{}.wall_restitution;
+  j["ball"] = ball;
+  j["pool_cushion_restitution"] = bs::CushionParams{}.restitution;
+  ojson physics = ojson::object();
+  for (const bs::Model m : {bs::Model::ideal, bs::Model::friction, bs::Model::pool}) {
+    physics[std::string(bs::to_string(m))] = physics_defaults_json(m);
+  }
+  j["physics"] = physics;
+  return j;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
 // The C API
 
 extern "C" {
@@ -885,6 +926,7 @@ const char* bs_version(void) {
     }
     j["levels"] = levels;
     j["ai_budgets"] = budgets;
+    j["defaults"] = defaults_json();
     return j.dump();
   }();
   return reply.c_str();

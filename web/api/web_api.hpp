@@ -25,7 +25,11 @@ extern "C" {
 typedef struct BsPlayback BsPlayback;
 typedef struct BsGame BsGame;
 
-/* {"version": "...", "levels": [...], "budgets": {...}} */
+/* {"version": "...", "levels": [...], "ai_budgets": {...},
+ *  "defaults": {"ball": {"radius", "mass", "wall_restitution"},
+ *               "pool_cushion_restitution",
+ *               "physics": {"ideal": {...}, "friction": {...}, "pool": {...}}}}
+ * where "physics" is default_physics(model) (physics.hpp) field by field. */
 const char* bs_version(void);
 
 /* The result file of a scenario (docs/contract.md),

@@ -407,7 +407,7 @@ export class TableView {
     ctx.drawImage(this.staticLayer, 0, 0);
     ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
     const t = this.table;
-    const R = scene.R || t.ball_radius || 0.028575;
+    const R = scene.R || t.ball_radius;
     const rpx = this.px(R);
 
     if (scene.kitchen) {

@@ -272,6 +272,9 @@ async function instantiate(options) {
     raw,
     levels: info.levels,
     aiBudgets: info.ai_budgets,
+    // The engine's defaults (default_physics per model, the default ball):
+    // the one home of them, so the page never keeps its own copy.
+    defaults: info.defaults,
     version: () => info.version,
     simulate: (scenario) => parse(raw.simulate(toJson(scenario))),
     playback: (scenario) => newPlayback(raw, raw.playbackNew(toJson(scenario))),

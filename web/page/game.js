@@ -90,7 +90,7 @@ export class GameUI {
     this.E = E;
     this.g = null;
     this.table = null;
-    this.R = 0.028575;
+    this.R = E.defaults.ball.radius;
     this.st = null;
     this.players = ['human', 'club'];
     this.config = null;
@@ -204,7 +204,7 @@ export class GameUI {
       this.showError(message(e));
       return;
     }
-    this.R = this.table.ball_radius || 0.028575;
+    this.R = this.table.ball_radius;
     this.players = this.st.players || this.players;
     this.view.setTable(this.table);
     this.rebuildLog();

@@ -7,8 +7,18 @@
 import { tableVertices, bbox, fits, regularPolygon, posStep } from './lab-geometry.js';
 import { roundTo, roundSig } from './lab-format.js';
 
-export const DEFAULT_RADIUS = 0.028575;
-export const DEFAULT_MASS = 0.170;
+// The engine's defaults (engine.defaults: default_physics for each model,
+// the default ball), the one home of them; mountLab sets them from the
+// engine before anything is built or shown.
+let defaults = null;
+export let DEFAULT_RADIUS = NaN;
+export let DEFAULT_MASS = NaN;
+export function setDefaults(d) {
+  if (!d || !d.ball || !d.physics) throw new Error('the engine gave no defaults');
+  defaults = d;
+  DEFAULT_RADIUS = d.ball.radius;
+  DEFAULT_MASS = d.ball.mass;
+}
 
 export const MODELS = ['ideal', 'friction', 'pool'];
 // Physics fields shown for each model, with their documented defaults
@@ -69,14 +79,15 @@ export function radiusOf(b) { return Number.isFinite(b.radius) && b.radius > 0 ?
 
 // The documented default of a physics field (shown in a blank field).
 export function defaultFor(p, field) {
+  const d = defaults.physics[p.model] || defaults.physics.ideal;
   switch (field) {
-    case 'ball_ball_restitution': return p.model === 'pool' ? 0.95 : 1.0;
-    case 'ball_ball_friction': return p.model === 'pool' ? 'mu(v) fit' : 0;
-    case 'gravity': return 9.81;
-    case 'sliding_friction': return 0.2;
-    case 'rolling_friction': return 0.01;
-    case 'spinning_friction': return 0.044;
-    case 'deceleration': return `${roundSig((p.rolling_friction ?? 0.01) * (p.gravity ?? 9.81), 6)}`;
+    case 'ball_ball_restitution': return d.ball_ball_restitution;
+    case 'ball_ball_friction': return d.ball_ball_friction_fit ? 'mu(v) fit' : d.ball_ball_friction;
+    case 'gravity': return d.gravity;
+    case 'sliding_friction': return d.sliding_friction;
+    case 'rolling_friction': return d.rolling_friction;
+    case 'spinning_friction': return d.spinning_friction;
+    case 'deceleration': return `${roundSig((p.rolling_friction ?? d.rolling_friction) * (p.gravity ?? d.gravity), 6)}`;
     default: return '';
   }
 }
@@ -84,7 +95,7 @@ export function defaultFor(p, field) {
 // A ball's wall restitution when it has none of its own.
 export function wallDefault(setup) {
   if (setup.table && typeof setup.table.cushion_restitution === 'number') return setup.table.cushion_restitution;
-  return setup.physics.model === 'pool' ? 0.75 : 1.0;
+  return setup.physics.model === 'pool' ? defaults.pool_cushion_restitution : defaults.ball.wall_restitution;
 }
 
 export function setModel(setup, model) {

@@ -17,7 +17,7 @@
 import { EXAMPLES } from './lab-examples.js';
 import { el, errText } from './lab-dom.js';
 import { ballColours } from './lab-colours.js';
-import { EMPTY_SCENARIO, clone, normalise, buildScenario, removeBallAt, setBallCount } from './lab-scenario.js';
+import { EMPTY_SCENARIO, clone, normalise, buildScenario, removeBallAt, setBallCount, setDefaults } from './lab-scenario.js';
 import { Player } from './lab-player.js';
 import { VEL_TAU, layoutTable, drawTable as paintTable } from './lab-table-drawing.js';
 import { drawEnergy as paintEnergy } from './lab-energy-graph.js';
@@ -30,6 +30,7 @@ import { attachEditor } from './lab-editor.js';
 
 export function mountLab(root, engine) {
   if (!root) throw new Error('mountLab: no root element');
+  setDefaults(engine && engine.defaults);
   if (root.__breakshotLab) return root.__breakshotLab;
   addStylesheet();
 

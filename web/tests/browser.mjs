@@ -262,6 +262,28 @@ test('the lab\'s cluster impacts box sets physics.ball_clusters and the run acce
   await context.close();
 });
 
+test('the lab\'s blank physics fields show the engine\'s defaults for each model', async ({ browser, url }) => {
+  const { page, context, problems } = await openLab(browser, url, 'two_balls');
+  const placeholder = (f) => page.getAttribute(`[aria-label="physics.${f}"]`, 'placeholder');
+  // The page asks the engine (bs_version's "defaults", default_physics in
+  // C++) and keeps no copy: the blank fields must show exactly those.
+  const defaults = await page.evaluate(async () => (await (await import('./engine.js')).loadEngine()).defaults);
+  check(defaults && defaults.physics && defaults.physics.pool, 'the engine gave no defaults');
+  for (const model of ['ideal', 'pool']) {
+    await page.selectOption('#lab-model', model);
+    const d = defaults.physics[model];
+    const shown = Number(await placeholder('ball_ball_restitution'));
+    check(shown === d.ball_ball_restitution,
+      `${model}: ball_ball_restitution shows ${shown}, the engine's default is ${d.ball_ball_restitution}`);
+  }
+  check(defaults.physics.pool.ball_ball_restitution === 0.95, 'the pool default is not 0.95');
+  check(await placeholder('ball_ball_friction') === 'mu(v) fit', 'the pool friction default is not the fit');
+  check(Number(await placeholder('spinning_friction')) === defaults.physics.pool.spinning_friction,
+    'spinning_friction does not show the engine\'s default');
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
 // The lab's numbers: "1.23456 mJ" -> 0.00123456, "(1.5, -2)" -> [1.5, -2].
 const SI = { k: 1e3, '': 1, m: 1e-3, 'µ': 1e-6, n: 1e-9, p: 1e-12 };
 function parseSI(text, unit) {
