@@ -1,10 +1,5 @@
 // The facade of the browser version (web/api/web_api.hpp, docs/web.md).
 //
-// Replies are built with nlohmann::ordered_json and dumped compactly: its
-// number printing (Grisu2 on the bits, integer arithmetic only) and its
-// parsing (strtod, correctly rounded in glibc and musl) are the same code
-// native and wasm, so a reply is the same bytes on both. Doubles are
-// printed so that they read back exactly (JavaScript's JSON.parse too).
 // bs_simulate returns the engine's own result text (write_result), and
 // playback events are written as the result file writes them
 // (src/io/result_json.hpp). The game's types (state, action, strike,
@@ -47,18 +42,14 @@
 // bs_game_from_link replays the actions through the rules and stops with
 // an error naming the first one refused ("a[7]: ...").
 //
-// Errors never cross the boundary: every entry point catches everything
-// and answers {"error": "..."} (those that return a pointer: NULL, and
-// the error in bs_last_error); input errors name the JSON path. JSON
-// input is read as strictly as scenarios and records, by the same code
-// (src/io/json_read.hpp): repeated keys and unknown fields are errors.
-//
 // Frames. bs_playback_frame_data gives a frame as doubles in a buffer of
 // the playback (no text: a 1000-ball frame as JSON costs ~10 ms in wasm);
 // bs_playback_frame writes its JSON from the same buffer, so the two
 // always carry the same numbers.
 
 #include "web_api.hpp"
+
+#include "facade.hpp"
 
 #include <array>
 #include <cmath>
@@ -95,16 +86,10 @@
 #include "io/result_json.hpp"
 
 
-namespace bs = breakshot;
-using ojson = nlohmann::ordered_json;
-using json = nlohmann::json;
+using namespace facade;
 
 namespace {
 
-// The stream tags of play_game (src/game/match.cpp): the same constants,
-// so that a web game's seeds are a match's.
-
-constexpr std::string_view kHuman = "human";
 constexpr std::string_view kLinkPrefix = "v1.";
 
 /// Simulations per AI decision in the browser (see the top of the file).
@@ -117,122 +102,6 @@ std::int64_t web_budget(std::string_view level) {
   if (level == "expert") return 4000;
   if (level == "champion") return 24000;
   return 100;  // beginner: samples nothing, the budget is never taken
-}
-
-/// A bad input: its path and what is wrong with it.
-struct BadInput {
-  std::string message;
-};
-
-[[noreturn]] void bad(const std::string& path, const std::string& what) {
-  throw BadInput{path.empty() ? what : path + ": " + what};
-}
-
-std::string error_json(const std::string& message) {
-  ojson j = ojson::object();
-  j["error"] = message;
-  return j.dump();
-}
-
-/// Runs `body`, turning any exception into {"error"}.
-template <class F>
-std::string guarded(F&& body) {
-  try {
-    return body();
-  } catch (const BadInput& e) {
-    return error_json(e.message);
-  } catch (const std::bad_alloc&) {
-    return error_json("out of memory");
-  } catch (const std::exception& e) {
-    return error_json(std::string("internal error: ") + e.what());
-  } catch (...) {
-    return error_json("internal error");
-  }
-}
-
-thread_local std::string g_last_error = error_json("no error");
-
-// ---------------------------------------------------------------------------
-// Reading JSON input: io/json_read.hpp's strict reading, its problems
-// thrown as bad inputs
-
-using bs::json_io::index_path;
-using bs::json_io::member_path;
-
-/// The readers of io/game_json.hpp, with must() to throw the first
-/// problem found.
-struct Reader : bs::json_io::GameReader {
-  void must(bool ok) const {
-    if (!ok) bad(error->path, error->reason);
-  }
-};
-
-const json* find(const json& obj, std::string_view key) { return Reader::find(obj, key); }
-
-/// The JSON text of an argument named `what`, parsed strictly (a repeated
-/// key is an error too); `root` is the path of the document in messages.
-json parse_text(const char* text, const std::string& what, const std::string& root = "") {
-  if (text == nullptr) bad(what, "missing (a null pointer)");
-  json doc;
-  bs::json_io::ParseOptions options;
-  options.root_path = root;
-  if (auto problem = bs::json_io::parse_strict(text, doc, options)) {
-    if (problem->syntax) bad(what, "not valid JSON: " + problem->error.reason);
-    bad(problem->error.path, problem->error.reason);
-  }
-  return doc;
-}
-
-/// An object whose keys must all be in `known`.
-const json& object(const json& v, const std::string& path,
-                   std::initializer_list<std::string_view> known) {
-  Reader r;
-  r.must(r.object(v, path, known));
-  return v;
-}
-
-const json& required(const json& obj, const std::string& path, std::string_view key) {
-  Reader r;
-  const json* v = nullptr;
-  r.must(r.required(obj, path, key, v));
-  return *v;
-}
-
-std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi) {
-  Reader r;
-  std::int64_t i = 0;
-  r.must(r.integer(v, path, lo, hi, i));
-  return i;
-}
-
-const std::string& text(const json& v, const std::string& path) {
-  Reader r;
-  std::string unused;
-  r.must(r.text(v, path, unused));
-  return v.get_ref<const std::string&>();
-}
-
-/// A seed: a decimal string, or an integer number up to 2^53.
-std::uint64_t seed_value(const json& v, const std::string& path) {
-  if (v.is_number_integer()) {
-    return static_cast<std::uint64_t>(integer(v, path, 0, std::int64_t{1} << 53));
-  }
-  Reader r;
-  std::uint64_t seed = 0;
-  r.must(r.seed(v, path, seed));
-  return seed;
-}
-
-/// "human" or a known AI level.
-std::string seat_name(const json& v, const std::string& path) {
-  const std::string& s = text(v, path);
-  if (s == kHuman) return s;
-  try {
-    (void)bs::ai_level(s);
-  } catch (const std::invalid_argument& e) {
-    bad(path, std::string("\"human\" or ") + e.what());
-  }
-  return s;
 }
 
 // ---------------------------------------------------------------------------
@@ -278,12 +147,6 @@ std::string_view wall_kind(bs::WallKind k) {
       return "arc";
   }
   return "segment";
-}
-
-char* copy_out(const std::string& s) {
-  char* p = static_cast<char*>(std::malloc(s.size() + 1));
-  if (p != nullptr) std::memcpy(p, s.c_str(), s.size() + 1);
-  return p;
 }
 
 // ---------------------------------------------------------------------------
@@ -824,46 +687,6 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
     if (!play(*g, a, why)) bad(path, "refused: " + why);
   }
   return g;
-}
-
-template <class T>
-T* fail_null(const std::string& message) {
-  g_last_error = error_json(message);
-  return nullptr;
-}
-
-/// Runs a body that returns a pointer: the pointer, or NULL with
-/// bs_last_error set to the error.
-template <class T, class F>
-T* guarded_ptr(F&& body) {
-  try {
-    return body();
-  } catch (const BadInput& e) {
-    return fail_null<T>(e.message);
-  } catch (const std::bad_alloc&) {
-    return fail_null<T>("out of memory");
-  } catch (const std::exception& e) {
-    return fail_null<T>(std::string("internal error: ") + e.what());
-  } catch (...) {
-    return fail_null<T>("internal error");
-  }
-}
-
-/// Runs a *_new body: the handle, or NULL with bs_last_error set.
-template <class T, class F>
-T* guarded_new(F&& body) {
-  return guarded_ptr<T>([&] { return body().release(); });
-}
-
-const char* keep(std::string& slot, std::string text) {
-  slot = std::move(text);
-  return slot.c_str();
-}
-
-// The replies of calls on a NULL handle.
-const char* null_handle() {
-  static const std::string reply = error_json("handle: a null handle");
-  return reply.c_str();
 }
 
 }  // namespace

@@ -1,0 +1,148 @@
+// The parts of the facade of the browser version (web/api/web_api.hpp,
+// docs/web.md) and what they share. Internal: only web/api/*.cpp include
+// it.
+//
+//   facade.cpp    errors, and the reading of JSON input
+//   web_api.cpp   the C API's entry points, each a call into the parts,
+//                 and bs_version with the engine's defaults
+//
+// Replies are built with nlohmann::ordered_json and dumped compactly: its
+// number printing (Grisu2 on the bits, integer arithmetic only) and its
+// parsing (strtod, correctly rounded in glibc and musl) are the same code
+// native and wasm, so a reply is the same bytes on both. Doubles are
+// printed so that they read back exactly (JavaScript's JSON.parse too).
+
+#ifndef BREAKSHOT_WEB_FACADE_HPP
+#define BREAKSHOT_WEB_FACADE_HPP
+
+#include <cstdint>
+#include <exception>
+#include <initializer_list>
+#include <new>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "io/game_json.hpp"
+#include "io/json_read.hpp"
+
+namespace bs = breakshot;
+using ojson = nlohmann::ordered_json;
+using json = nlohmann::json;
+
+namespace facade {
+
+inline constexpr std::string_view kHuman = "human";
+
+// ---------------------------------------------------------------------------
+// Errors never cross the boundary: every entry point catches everything
+// and answers {"error": "..."} (those that return a pointer: NULL, and
+// the error in bs_last_error); input errors name the JSON path.
+
+/// A bad input: its path and what is wrong with it.
+struct BadInput {
+  std::string message;
+};
+
+[[noreturn]] void bad(const std::string& path, const std::string& what);
+
+std::string error_json(const std::string& message);
+
+/// Runs `body`, turning any exception into {"error"}.
+template <class F>
+std::string guarded(F&& body) {
+  try {
+    return body();
+  } catch (const BadInput& e) {
+    return error_json(e.message);
+  } catch (const std::bad_alloc&) {
+    return error_json("out of memory");
+  } catch (const std::exception& e) {
+    return error_json(std::string("internal error: ") + e.what());
+  } catch (...) {
+    return error_json("internal error");
+  }
+}
+
+/// bs_last_error's reply.
+extern thread_local std::string g_last_error;
+
+template <class T>
+T* fail_null(const std::string& message) {
+  g_last_error = error_json(message);
+  return nullptr;
+}
+
+/// Runs a body that returns a pointer: the pointer, or NULL with
+/// bs_last_error set to the error.
+template <class T, class F>
+T* guarded_ptr(F&& body) {
+  try {
+    return body();
+  } catch (const BadInput& e) {
+    return fail_null<T>(e.message);
+  } catch (const std::bad_alloc&) {
+    return fail_null<T>("out of memory");
+  } catch (const std::exception& e) {
+    return fail_null<T>(std::string("internal error: ") + e.what());
+  } catch (...) {
+    return fail_null<T>("internal error");
+  }
+}
+
+/// Runs a *_new body: the handle, or NULL with bs_last_error set.
+template <class T, class F>
+T* guarded_new(F&& body) {
+  return guarded_ptr<T>([&] { return body().release(); });
+}
+
+/// A reply kept in a handle's slot until the next call on it.
+const char* keep(std::string& slot, std::string text);
+
+// The replies of calls on a NULL handle.
+const char* null_handle();
+
+/// A reply the caller owns (bs_free).
+char* copy_out(const std::string& s);
+
+// ---------------------------------------------------------------------------
+// Reading JSON input: io/json_read.hpp's strict reading, its problems
+// thrown as bad inputs. JSON input is read as strictly as scenarios and
+// records, by the same code: repeated keys and unknown fields are errors.
+
+using bs::json_io::index_path;
+
+/// The readers of io/game_json.hpp, with must() to throw the first
+/// problem found.
+struct Reader : bs::json_io::GameReader {
+  void must(bool ok) const {
+    if (!ok) bad(error->path, error->reason);
+  }
+};
+
+const json* find(const json& obj, std::string_view key);
+
+/// The JSON text of an argument named `what`, parsed strictly (a repeated
+/// key is an error too); `root` is the path of the document in messages.
+json parse_text(const char* text, const std::string& what, const std::string& root = "");
+
+/// An object whose keys must all be in `known`.
+const json& object(const json& v, const std::string& path,
+                   std::initializer_list<std::string_view> known);
+
+const json& required(const json& obj, const std::string& path, std::string_view key);
+
+std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi);
+
+const std::string& text(const json& v, const std::string& path);
+
+/// A seed: a decimal string, or an integer number up to 2^53.
+std::uint64_t seed_value(const json& v, const std::string& path);
+
+/// "human" or a known AI level.
+std::string seat_name(const json& v, const std::string& path);
+
+}  // namespace facade
+
+#endif  // BREAKSHOT_WEB_FACADE_HPP
