@@ -3,6 +3,7 @@
 // it.
 //
 //   facade.cpp    errors, and the reading of JSON input
+//   playback.cpp  playbacks (BsPlayback): frames and events
 //   web_api.cpp   the C API's entry points, each a call into the parts,
 //                 and bs_version with the engine's defaults
 //
@@ -21,9 +22,12 @@
 #include <new>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "breakshot/scenario.hpp"
+#include "breakshot/simulation.hpp"
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
 
@@ -142,6 +146,32 @@ std::uint64_t seed_value(const json& v, const std::string& path);
 
 /// "human" or a known AI level.
 std::string seat_name(const json& v, const std::string& path);
+
+}  // namespace facade
+
+// ---------------------------------------------------------------------------
+// Playbacks (playback.cpp)
+
+struct BsPlayback {
+  explicit BsPlayback(const bs::Scenario& s) : scenario(s), sim(scenario) {}
+  bs::Scenario scenario;
+  bs::Simulation sim;
+  bool limit = false;  // max_events stopped a frame
+  std::string reply;
+  std::vector<double> frame;  // the last frame (layout: kFrame* in playback.cpp)
+};
+
+namespace facade {
+
+/// bs_playback_frame's reply: the frame computed by compute_frame, as JSON.
+std::string frame_json(BsPlayback& pb, double t);
+/// bs_playback_frame_data's reply: the same frame as doubles, in pb.frame.
+const double* frame_data(BsPlayback& pb, double t);
+/// {"from": from, "events": [...]}, each event as the result file writes
+/// it (io/result_json.hpp: ids for balls, names for cushions and pockets).
+std::string events_json(const BsPlayback& pb, int from);
+/// A scenario given as JSON text (read_scenario, scenario_io.hpp).
+bs::Scenario scenario_from(const char* scenario_json);
 
 }  // namespace facade
 
