@@ -4,6 +4,8 @@
 //
 //   facade.cpp    errors, and the reading of JSON input
 //   playback.cpp  playbacks (BsPlayback): frames and events
+//   game.cpp      games (BsGame): configs, actions, the AI's, state,
+//                 table, undo
 //   web_api.cpp   the C API's entry points, each a call into the parts,
 //                 and bs_version with the engine's defaults
 //
@@ -16,17 +18,25 @@
 #ifndef BREAKSHOT_WEB_FACADE_HPP
 #define BREAKSHOT_WEB_FACADE_HPP
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <exception>
 #include <initializer_list>
+#include <memory>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "breakshot/ai.hpp"
+#include "breakshot/game.hpp"
+#include "breakshot/noise.hpp"
 #include "breakshot/scenario.hpp"
+#include "breakshot/session.hpp"
 #include "breakshot/simulation.hpp"
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
@@ -172,6 +182,86 @@ const double* frame_data(BsPlayback& pb, double t);
 std::string events_json(const BsPlayback& pb, int from);
 /// A scenario given as JSON text (read_scenario, scenario_io.hpp).
 bs::Scenario scenario_from(const char* scenario_json);
+
+}  // namespace facade
+
+// ---------------------------------------------------------------------------
+// Games (game.cpp)
+
+struct BsGame {
+  BsGame(const bs::GameConfig& config, const std::array<std::string, 2>& seat_names,
+         std::uint64_t seed, int breaker, std::optional<std::int64_t> budget)
+      : session(config, seats_of(seat_names), seed, breaker), seats(seat_names), ai_budget(budget) {}
+
+  /// A human seat plays without noise; an AI seat with its level's noise.
+  static bs::Seats seats_of(const std::array<std::string, 2>& names) {
+    bs::Seats s;
+    s.names = names;
+    for (std::size_t k = 0; k < 2; ++k) {
+      s.noise[k] = names[k] == facade::kHuman ? bs::NoiseModel{} : bs::ai_level(names[k]).noise;
+    }
+    return s;
+  }
+
+  const bs::Rules& rules() const { return session.rules(); }
+  const bs::GameRecord& record() const { return session.record(); }
+  const bs::GameState& state() const { return session.state(); }
+  const bs::GameState& state_before(std::size_t i) const { return session.state_before(i); }
+
+  bs::GameSession session;
+  std::array<std::string, 2> seats;
+  std::optional<std::int64_t> ai_budget;
+  std::string reply;
+};
+
+namespace facade {
+
+/// Simulations per AI decision in the browser, by level (game.cpp).
+std::int64_t web_budget(std::string_view level);
+
+struct GameConfigInput {
+  bs::GameConfig config;
+  std::array<std::string, 2> seats;
+  std::uint64_t seed = 0;
+  int breaker = 0;
+  std::optional<std::int64_t> ai_budget;
+};
+
+inline constexpr std::int64_t kMaxBudget = 1'000'000'000;
+
+bs::GameType game_type(const json& v, const std::string& path);
+std::string table_size(const json& v, const std::string& path);
+/// bs_game_new's config: {"game", "table", "seed", "breaker", "players",
+/// "ai_budget"}.
+GameConfigInput read_config(const json& doc);
+std::unique_ptr<BsGame> make_game(const GameConfigInput& in);
+
+/// bs_game_state's reply: the state as game records write it
+/// (src/io/game_json.hpp), then the seats, the number of actions and what
+/// the rules allow next.
+ojson state_json(const BsGame& g);
+/// bs_game_table's reply: the table's size, lines, spots, outline, walls
+/// and pockets, and the ball radius.
+ojson table_json(const BsGame& g);
+/// bs_game_check_placement's reply: {"ok"} and, if not, {"reason"}.
+std::string check_placement_json(const BsGame& g, double x, double y);
+
+/// Plays `action` (as chosen) for the seat to act; nullopt and the game
+/// unchanged if the rules refuse it (`why` says why).
+std::optional<ojson> play(BsGame& g, const bs::Action& action, std::string& why);
+/// bs_game_act's reply: the action played, its ruling and the state after
+/// (play), or {"error"} if the rules refuse it.
+std::string act_json(BsGame& g, const char* action_text);
+/// bs_game_ai_action's reply: {"action"} as the AI of `level` (or of the
+/// seat to act, when null or empty) chooses it.
+std::string ai_action_json(BsGame& g, const char* level);
+
+/// bs_game_shot_playback's playback: the scenario of action `index` (a
+/// shot) from the state before it.
+std::unique_ptr<BsPlayback> shot_playback(const BsGame& g, int index);
+/// bs_game_undo_to's reply: the state once the game is taken back to its
+/// first `n` actions.
+std::string undo_to_json(BsGame& g, int n);
 
 }  // namespace facade
 
