@@ -6,6 +6,7 @@
 //   playback.cpp  playbacks (BsPlayback): frames and events
 //   game.cpp      games (BsGame): configs, actions, the AI's, state,
 //                 table, undo
+//   link.cpp      links: a game as "v1." text and back
 //   web_api.cpp   the C API's entry points, each a call into the parts,
 //                 and bs_version with the engine's defaults
 //
@@ -262,6 +263,19 @@ std::unique_ptr<BsPlayback> shot_playback(const BsGame& g, int index);
 /// bs_game_undo_to's reply: the state once the game is taken back to its
 /// first `n` actions.
 std::string undo_to_json(BsGame& g, int n);
+
+}  // namespace facade
+
+// ---------------------------------------------------------------------------
+// Links (link.cpp)
+
+namespace facade {
+
+/// bs_game_link's reply: {"link": "v1...."}.
+std::string link_json(const BsGame& g);
+/// bs_game_from_link's game: the link's actions replayed through the
+/// rules; a bad input naming the first action refused.
+std::unique_ptr<BsGame> game_from_link(const char* link);
 
 }  // namespace facade
 

@@ -23,7 +23,6 @@
 
 #include "facade.hpp"
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
