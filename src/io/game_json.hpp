@@ -1,5 +1,5 @@
 // The JSON of the game's types: one encoding of each, used by game
-// records (record_json.cpp) and by the web facade (web/api/web_api.cpp).
+// records (record_json.cpp) and by the web facade (web/api).
 // Internal: not installed.
 //
 //   GameConfig  {"game", "table_size", "ball_radius", "ball_mass", "max_shots"}

@@ -1,6 +1,6 @@
 // Strict JSON reading, shared by the scenario reader (scenario_json.cpp),
 // the record reader (record_json.cpp) and the web facade
-// (web/api/web_api.cpp). Internal: not installed, and the only place
+// (web/api). Internal: not installed, and the only place
 // besides those readers that sees nlohmann::json.
 //
 // Strict on purpose: a repeated key, an unknown field or a wrong type is

@@ -1,6 +1,6 @@
 // JSON number and string output, shared by the result writer
 // (result_json.cpp), the readers' messages and the web facade
-// (web/api/web_api.cpp). Internal: not installed.
+// (web/api). Internal: not installed.
 //
 // Two number forms, each the shortest text that reads back as the same
 // double, and each kept because bytes already written depend on it:

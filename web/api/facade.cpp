@@ -1,0 +1,110 @@
+// The facade's errors and its reading of JSON input (facade.hpp).
+
+#include "facade.hpp"
+
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "breakshot/ai.hpp"
+
+namespace facade {
+
+[[noreturn]] void bad(const std::string& path, const std::string& what) {
+  throw BadInput{path.empty() ? what : path + ": " + what};
+}
+
+std::string error_json(const std::string& message) {
+  ojson j = ojson::object();
+  j["error"] = message;
+  return j.dump();
+}
+
+thread_local std::string g_last_error = error_json("no error");
+
+const char* keep(std::string& slot, std::string text) {
+  slot = std::move(text);
+  return slot.c_str();
+}
+
+const char* null_handle() {
+  static const std::string reply = error_json("handle: a null handle");
+  return reply.c_str();
+}
+
+char* copy_out(const std::string& s) {
+  char* p = static_cast<char*>(std::malloc(s.size() + 1));
+  if (p != nullptr) std::memcpy(p, s.c_str(), s.size() + 1);
+  return p;
+}
+
+// ---------------------------------------------------------------------------
+// Reading JSON input: io/json_read.hpp's strict reading, its problems
+// thrown as bad inputs
+
+const json* find(const json& obj, std::string_view key) { return Reader::find(obj, key); }
+
+json parse_text(const char* text, const std::string& what, const std::string& root) {
+  if (text == nullptr) bad(what, "missing (a null pointer)");
+  json doc;
+  bs::json_io::ParseOptions options;
+  options.root_path = root;
+  if (auto problem = bs::json_io::parse_strict(text, doc, options)) {
+    if (problem->syntax) bad(what, "not valid JSON: " + problem->error.reason);
+    bad(problem->error.path, problem->error.reason);
+  }
+  return doc;
+}
+
+const json& object(const json& v, const std::string& path,
+                   std::initializer_list<std::string_view> known) {
+  Reader r;
+  r.must(r.object(v, path, known));
+  return v;
+}
+
+const json& required(const json& obj, const std::string& path, std::string_view key) {
+  Reader r;
+  const json* v = nullptr;
+  r.must(r.required(obj, path, key, v));
+  return *v;
+}
+
+std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi) {
+  Reader r;
+  std::int64_t i = 0;
+  r.must(r.integer(v, path, lo, hi, i));
+  return i;
+}
+
+const std::string& text(const json& v, const std::string& path) {
+  Reader r;
+  std::string unused;
+  r.must(r.text(v, path, unused));
+  return v.get_ref<const std::string&>();
+}
+
+std::uint64_t seed_value(const json& v, const std::string& path) {
+  if (v.is_number_integer()) {
+    return static_cast<std::uint64_t>(integer(v, path, 0, std::int64_t{1} << 53));
+  }
+  Reader r;
+  std::uint64_t seed = 0;
+  r.must(r.seed(v, path, seed));
+  return seed;
+}
+
+std::string seat_name(const json& v, const std::string& path) {
+  const std::string& s = text(v, path);
+  if (s == kHuman) return s;
+  try {
+    (void)bs::ai_level(s);
+  } catch (const std::invalid_argument& e) {
+    bad(path, std::string("\"human\" or ") + e.what());
+  }
+  return s;
+}
+
+}  // namespace facade

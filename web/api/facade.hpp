@@ -1,0 +1,282 @@
+// The parts of the facade of the browser version (web/api/web_api.hpp,
+// docs/web.md) and what they share. Internal: only web/api/*.cpp include
+// it.
+//
+//   facade.cpp    errors, and the reading of JSON input
+//   playback.cpp  playbacks (BsPlayback): frames and events
+//   game.cpp      games (BsGame): configs, actions, the AI's, state,
+//                 table, undo
+//   link.cpp      links: a game as "v1." text and back
+//   web_api.cpp   the C API's entry points, each a call into the parts,
+//                 and bs_version with the engine's defaults
+//
+// Replies are built with nlohmann::ordered_json and dumped compactly: its
+// number printing (Grisu2 on the bits, integer arithmetic only) and its
+// parsing (strtod, correctly rounded in glibc and musl) are the same code
+// native and wasm, so a reply is the same bytes on both. Doubles are
+// printed so that they read back exactly (JavaScript's JSON.parse too).
+
+#ifndef BREAKSHOT_WEB_FACADE_HPP
+#define BREAKSHOT_WEB_FACADE_HPP
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <initializer_list>
+#include <memory>
+#include <new>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "breakshot/ai.hpp"
+#include "breakshot/game.hpp"
+#include "breakshot/noise.hpp"
+#include "breakshot/scenario.hpp"
+#include "breakshot/session.hpp"
+#include "breakshot/simulation.hpp"
+#include "io/game_json.hpp"
+#include "io/json_read.hpp"
+
+namespace bs = breakshot;
+using ojson = nlohmann::ordered_json;
+using json = nlohmann::json;
+
+namespace facade {
+
+inline constexpr std::string_view kHuman = "human";
+
+// ---------------------------------------------------------------------------
+// Errors never cross the boundary: every entry point catches everything
+// and answers {"error": "..."} (those that return a pointer: NULL, and
+// the error in bs_last_error); input errors name the JSON path.
+
+/// A bad input: its path and what is wrong with it.
+struct BadInput {
+  std::string message;
+};
+
+[[noreturn]] void bad(const std::string& path, const std::string& what);
+
+std::string error_json(const std::string& message);
+
+/// Runs `body`, turning any exception into {"error"}.
+template <class F>
+std::string guarded(F&& body) {
+  try {
+    return body();
+  } catch (const BadInput& e) {
+    return error_json(e.message);
+  } catch (const std::bad_alloc&) {
+    return error_json("out of memory");
+  } catch (const std::exception& e) {
+    return error_json(std::string("internal error: ") + e.what());
+  } catch (...) {
+    return error_json("internal error");
+  }
+}
+
+/// bs_last_error's reply.
+extern thread_local std::string g_last_error;
+
+template <class T>
+T* fail_null(const std::string& message) {
+  g_last_error = error_json(message);
+  return nullptr;
+}
+
+/// Runs a body that returns a pointer: the pointer, or NULL with
+/// bs_last_error set to the error.
+template <class T, class F>
+T* guarded_ptr(F&& body) {
+  try {
+    return body();
+  } catch (const BadInput& e) {
+    return fail_null<T>(e.message);
+  } catch (const std::bad_alloc&) {
+    return fail_null<T>("out of memory");
+  } catch (const std::exception& e) {
+    return fail_null<T>(std::string("internal error: ") + e.what());
+  } catch (...) {
+    return fail_null<T>("internal error");
+  }
+}
+
+/// Runs a *_new body: the handle, or NULL with bs_last_error set.
+template <class T, class F>
+T* guarded_new(F&& body) {
+  return guarded_ptr<T>([&] { return body().release(); });
+}
+
+/// A reply kept in a handle's slot until the next call on it.
+const char* keep(std::string& slot, std::string text);
+
+// The replies of calls on a NULL handle.
+const char* null_handle();
+
+/// A reply the caller owns (bs_free).
+char* copy_out(const std::string& s);
+
+// ---------------------------------------------------------------------------
+// Reading JSON input: io/json_read.hpp's strict reading, its problems
+// thrown as bad inputs. JSON input is read as strictly as scenarios and
+// records, by the same code: repeated keys and unknown fields are errors.
+
+using bs::json_io::index_path;
+
+/// The readers of io/game_json.hpp, with must() to throw the first
+/// problem found.
+struct Reader : bs::json_io::GameReader {
+  void must(bool ok) const {
+    if (!ok) bad(error->path, error->reason);
+  }
+};
+
+const json* find(const json& obj, std::string_view key);
+
+/// The JSON text of an argument named `what`, parsed strictly (a repeated
+/// key is an error too); `root` is the path of the document in messages.
+json parse_text(const char* text, const std::string& what, const std::string& root = "");
+
+/// An object whose keys must all be in `known`.
+const json& object(const json& v, const std::string& path,
+                   std::initializer_list<std::string_view> known);
+
+const json& required(const json& obj, const std::string& path, std::string_view key);
+
+std::int64_t integer(const json& v, const std::string& path, std::int64_t lo, std::int64_t hi);
+
+const std::string& text(const json& v, const std::string& path);
+
+/// A seed: a decimal string, or an integer number up to 2^53.
+std::uint64_t seed_value(const json& v, const std::string& path);
+
+/// "human" or a known AI level.
+std::string seat_name(const json& v, const std::string& path);
+
+}  // namespace facade
+
+// ---------------------------------------------------------------------------
+// Playbacks (playback.cpp)
+
+struct BsPlayback {
+  explicit BsPlayback(const bs::Scenario& s) : scenario(s), sim(scenario) {}
+  bs::Scenario scenario;
+  bs::Simulation sim;
+  bool limit = false;  // max_events stopped a frame
+  std::string reply;
+  std::vector<double> frame;  // the last frame (layout: kFrame* in playback.cpp)
+};
+
+namespace facade {
+
+/// bs_playback_frame's reply: the frame computed by compute_frame, as JSON.
+std::string frame_json(BsPlayback& pb, double t);
+/// bs_playback_frame_data's reply: the same frame as doubles, in pb.frame.
+const double* frame_data(BsPlayback& pb, double t);
+/// {"from": from, "events": [...]}, each event as the result file writes
+/// it (io/result_json.hpp: ids for balls, names for cushions and pockets).
+std::string events_json(const BsPlayback& pb, int from);
+/// A scenario given as JSON text (read_scenario, scenario_io.hpp).
+bs::Scenario scenario_from(const char* scenario_json);
+
+}  // namespace facade
+
+// ---------------------------------------------------------------------------
+// Games (game.cpp)
+
+struct BsGame {
+  BsGame(const bs::GameConfig& config, const std::array<std::string, 2>& seat_names,
+         std::uint64_t seed, int breaker, std::optional<std::int64_t> budget)
+      : session(config, seats_of(seat_names), seed, breaker), seats(seat_names), ai_budget(budget) {}
+
+  /// A human seat plays without noise; an AI seat with its level's noise.
+  static bs::Seats seats_of(const std::array<std::string, 2>& names) {
+    bs::Seats s;
+    s.names = names;
+    for (std::size_t k = 0; k < 2; ++k) {
+      s.noise[k] = names[k] == facade::kHuman ? bs::NoiseModel{} : bs::ai_level(names[k]).noise;
+    }
+    return s;
+  }
+
+  const bs::Rules& rules() const { return session.rules(); }
+  const bs::GameRecord& record() const { return session.record(); }
+  const bs::GameState& state() const { return session.state(); }
+  const bs::GameState& state_before(std::size_t i) const { return session.state_before(i); }
+
+  bs::GameSession session;
+  std::array<std::string, 2> seats;
+  std::optional<std::int64_t> ai_budget;
+  std::string reply;
+};
+
+namespace facade {
+
+/// Simulations per AI decision in the browser, by level (game.cpp).
+std::int64_t web_budget(std::string_view level);
+
+struct GameConfigInput {
+  bs::GameConfig config;
+  std::array<std::string, 2> seats;
+  std::uint64_t seed = 0;
+  int breaker = 0;
+  std::optional<std::int64_t> ai_budget;
+};
+
+inline constexpr std::int64_t kMaxBudget = 1'000'000'000;
+
+bs::GameType game_type(const json& v, const std::string& path);
+std::string table_size(const json& v, const std::string& path);
+/// bs_game_new's config: {"game", "table", "seed", "breaker", "players",
+/// "ai_budget"}.
+GameConfigInput read_config(const json& doc);
+std::unique_ptr<BsGame> make_game(const GameConfigInput& in);
+
+/// bs_game_state's reply: the state as game records write it
+/// (src/io/game_json.hpp), then the seats, the number of actions and what
+/// the rules allow next.
+ojson state_json(const BsGame& g);
+/// bs_game_table's reply: the table's size, lines, spots, outline, walls
+/// and pockets, and the ball radius.
+ojson table_json(const BsGame& g);
+/// bs_game_check_placement's reply: {"ok"} and, if not, {"reason"}.
+std::string check_placement_json(const BsGame& g, double x, double y);
+
+/// Plays `action` (as chosen) for the seat to act; nullopt and the game
+/// unchanged if the rules refuse it (`why` says why).
+std::optional<ojson> play(BsGame& g, const bs::Action& action, std::string& why);
+/// bs_game_act's reply: the action played, its ruling and the state after
+/// (play), or {"error"} if the rules refuse it.
+std::string act_json(BsGame& g, const char* action_text);
+/// bs_game_ai_action's reply: {"action"} as the AI of `level` (or of the
+/// seat to act, when null or empty) chooses it.
+std::string ai_action_json(BsGame& g, const char* level);
+
+/// bs_game_shot_playback's playback: the scenario of action `index` (a
+/// shot) from the state before it.
+std::unique_ptr<BsPlayback> shot_playback(const BsGame& g, int index);
+/// bs_game_undo_to's reply: the state once the game is taken back to its
+/// first `n` actions.
+std::string undo_to_json(BsGame& g, int n);
+
+}  // namespace facade
+
+// ---------------------------------------------------------------------------
+// Links (link.cpp)
+
+namespace facade {
+
+/// bs_game_link's reply: {"link": "v1...."}.
+std::string link_json(const BsGame& g);
+/// bs_game_from_link's game: the link's actions replayed through the
+/// rules; a bad input naming the first action refused.
+std::unique_ptr<BsGame> game_from_link(const char* link);
+
+}  // namespace facade
+
+#endif  // BREAKSHOT_WEB_FACADE_HPP

@@ -1,0 +1,316 @@
+// Games (BsGame): configs, actions, the AI's actions, the state and the
+// table as JSON, a shot's playback, and undo. The game's types (state,
+// action, strike, ruling) are in the one JSON of game records
+// (src/io/game_json.hpp), both ways: what a reply shows is what the
+// record holds.
+//
+// Games. A BsGame holds the rules and a GameRecord (record.hpp) that
+// grows with every action, so bs_game_record is that record as
+// write_record writes it, and `breakshot replay` accepts it. A BsGame
+// plays through a GameSession (session.hpp), as play_game does, so its
+// seeds are play_game's and a game between two AI seats is the game
+// play_game plays with the same players (tests/test_web_api.cpp checks it). A seat is "human" (no
+// noise: the strike is played as given) or an AI level name (ai.hpp): it
+// shoots with the level's noise, whoever chose the shot. The AI decides
+// with one thread, no time budget and a budget in simulations per
+// decision (AiLevel::simulation_budget), so that a decision is the same
+// on every machine and, in wasm, quick enough for a page (measured in
+// docs/web.md):
+//   beginner 100 (it samples nothing)   amateur 600   club 2000
+//   expert 4000   champion 24000 (its 9-ball lookahead alone can take 12000,
+//   and its sampling of up to 105 candidates before that 9000)
+// A game's config may set "ai_budget" to override them all (tests).
+
+#include "facade.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "breakshot/ai.hpp"
+#include "breakshot/game.hpp"
+#include "breakshot/player.hpp"
+#include "breakshot/record.hpp"
+#include "breakshot/session.hpp"
+
+namespace facade {
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// Writing replies
+
+// The one JSON of each of the game's types (src/io/game_json.hpp), as
+// game records write them.
+using bs::json_io::action_json;
+using bs::json_io::ruling_json;
+using bs::json_io::strike_json;
+using bs::json_io::vec2_json;
+
+ojson ints_json(const std::vector<int>& v) {
+  ojson a = ojson::array();
+  for (const int i : v) a.push_back(i);
+  return a;
+}
+
+std::string_view action_kind(const bs::Action& a) {
+  if (std::holds_alternative<bs::PlaceCueBall>(a)) return "place";
+  if (std::holds_alternative<bs::Shoot>(a)) return "shoot";
+  return "decide";
+}
+
+ojson facts_json(const bs::ShotFacts& f) {
+  ojson j = ojson::object();
+  j["first_hit"] = f.first_hit;
+  j["pocketed"] = ints_json(f.pocketed);
+  j["pocket_of"] = ints_json(f.pocket_of);
+  j["miscue"] = f.miscue;
+  j["cushion_after_contact"] = f.cushion_after_contact;
+  j["object_balls_to_cushion"] = f.object_balls_to_cushion;
+  return j;
+}
+
+std::string_view wall_kind(bs::WallKind k) {
+  switch (k) {
+    case bs::WallKind::segment:
+      return "segment";
+    case bs::WallKind::corner:
+      return "corner";
+    case bs::WallKind::arc:
+      return "arc";
+  }
+  return "segment";
+}
+
+// ---------------------------------------------------------------------------
+// Games
+
+/// An action in the records' form (src/io/game_json.hpp), every field
+/// required.
+bs::Action read_action(const json& doc) {
+  Reader r;
+  bs::Action action;
+  r.must(r.action(doc, "", action));
+  return action;
+}
+
+ojson legal_json(const bs::LegalActions& la) {
+  ojson j = ojson::object();
+  j["place"] = bs::to_string(la.place);
+  j["must_place"] = la.must_place;
+  j["shoot"] = la.shoot;
+  j["push_out"] = la.push_out;
+  j["call"] = la.call;
+  j["targets"] = ints_json(la.targets);
+  ojson choices = ojson::array();
+  for (const bs::Choice c : la.choices) choices.push_back(bs::to_string(c));
+  j["choices"] = choices;
+  return j;
+}
+
+bs::AiLevel web_level(const std::string& name, const std::optional<std::int64_t>& budget) {
+  bs::AiLevel l = bs::ai_level(name);
+  l.threads = 1;
+  l.time_budget = 0.0;
+  l.simulation_budget = budget ? *budget : web_budget(name);
+  return l;
+}
+
+}  // namespace
+
+/// Simulations per AI decision in the browser (see the top of this file).
+/// Each is above what the level's own search takes in nearly every
+/// position (measured: the decisions with and without the budget agree),
+/// so the budget only bounds the rare long decision.
+std::int64_t web_budget(std::string_view level) {
+  if (level == "amateur") return 600;
+  if (level == "club") return 2000;
+  if (level == "expert") return 4000;
+  if (level == "champion") return 24000;
+  return 100;  // beginner: samples nothing, the budget is never taken
+}
+
+bs::GameType game_type(const json& v, const std::string& path) {
+  Reader r;
+  bs::GameType g{};
+  r.must(r.game_type(v, path, g));
+  return g;
+}
+
+std::string table_size(const json& v, const std::string& path) {
+  Reader r;
+  std::string size;
+  r.must(r.table_size(v, path, size));
+  return size;
+}
+
+GameConfigInput read_config(const json& doc) {
+  object(doc, "", {"game", "table", "seed", "breaker", "players", "ai_budget"});
+  GameConfigInput in;
+  in.config.game = game_type(required(doc, "", "game"), "game");
+  if (const json* t = find(doc, "table")) in.config.table_size = table_size(*t, "table");
+  if (const json* s = find(doc, "seed")) in.seed = seed_value(*s, "seed");
+  if (const json* b = find(doc, "breaker")) in.breaker = static_cast<int>(integer(*b, "breaker", 0, 1));
+  const json& players = required(doc, "", "players");
+  if (!players.is_array() || players.size() != 2) {
+    bad("players", "expected an array of two seats (\"human\" or an AI level)");
+  }
+  for (std::size_t k = 0; k < 2; ++k) in.seats[k] = seat_name(players[k], index_path("players", k));
+  if (const json* n = find(doc, "ai_budget")) in.ai_budget = integer(*n, "ai_budget", 1, kMaxBudget);
+  return in;
+}
+
+std::unique_ptr<BsGame> make_game(const GameConfigInput& in) {
+  return std::make_unique<BsGame>(in.config, in.seats, in.seed, in.breaker, in.ai_budget);
+}
+
+ojson state_json(const BsGame& g) {
+  const bs::GameState& s = g.state();
+  ojson j = bs::json_io::state_json(s);
+  j["players"] = ojson::array({g.seats[0], g.seats[1]});
+  j["actions"] = g.record().actions.size();
+  j["legal"] = legal_json(g.rules().legal_actions(s));
+  return j;
+}
+
+ojson table_json(const BsGame& g) {
+  const bs::Table& t = g.rules().table();
+  ojson j = ojson::object();
+  j["length"] = t.length;
+  j["width"] = t.width;
+  j["ball_radius"] = g.rules().config().ball_radius;
+  j["head_string"] = g.rules().head_string();
+  j["head_spot"] = vec2_json(t.head_spot);
+  j["foot_spot"] = vec2_json(t.foot_spot);
+  ojson outline = ojson::array();
+  for (const bs::Vec2 v : t.outline) outline.push_back(vec2_json(v));
+  j["outline"] = outline;
+  ojson walls = ojson::array();
+  for (const bs::Wall& w : t.walls) {
+    ojson wj = ojson::object();
+    wj["kind"] = wall_kind(w.kind);
+    wj["a"] = vec2_json(w.a);
+    wj["b"] = vec2_json(w.b);
+    wj["normal"] = vec2_json(w.normal);
+    wj["radius"] = w.radius;
+    wj["name"] = w.name;
+    walls.push_back(wj);
+  }
+  j["walls"] = walls;
+  ojson pockets = ojson::array();
+  for (const bs::Pocket& p : t.pockets) {
+    ojson pj = ojson::object();
+    pj["centre"] = vec2_json(p.centre);
+    pj["radius"] = p.radius;
+    pj["name"] = p.name;
+    pockets.push_back(pj);
+  }
+  j["pockets"] = pockets;
+  return j;
+}
+
+std::optional<ojson> play(BsGame& g, const bs::Action& action, std::string& why) {
+  if (auto reason = g.session.check(action)) {
+    why = *reason;
+    return std::nullopt;
+  }
+  const std::size_t i = g.session.actions();
+  bs::Outcome out;
+  try {
+    out = g.session.play(action);
+  } catch (const std::exception& e) {
+    why = std::string("the action as executed was refused: ") + e.what();
+    return std::nullopt;
+  }
+  const bs::RecordedAction& ra = g.record().actions.back();
+  ojson j = ojson::object();
+  j["index"] = i;
+  j["player"] = ra.player;
+  j["kind"] = action_kind(ra.action);
+  j["executed"] = action_json(ra.action);
+  if (ra.intended) {
+    std::vector<int> numbers;
+    (void)g.rules().shot_scenario(g.state_before(i), std::get<bs::Shoot>(ra.action).strike,
+                                  &numbers);
+    j["intended"] = strike_json(*ra.intended);
+    j["numbers"] = ints_json(numbers);
+  }
+  j["ruling"] = ruling_json(out.ruling);
+  j["facts"] = facts_json(out.facts);
+  j["state"] = state_json(g);
+  return j;
+}
+
+std::string act_json(BsGame& g, const char* action_text) {
+  const bs::Action action = read_action(parse_text(action_text, "action"));
+  std::string why;
+  std::optional<ojson> j = play(g, action, why);
+  if (!j) return error_json(why);
+  return j->dump();
+}
+
+std::string ai_action_json(BsGame& g, const char* level) {
+  const bs::GameState& state = g.state();
+  if (state.phase == bs::Phase::game_over) bad("", "the game is over");
+  std::string name;
+  if (level != nullptr && level[0] != '\0') {
+    name = level;
+    if (name == kHuman) bad("level", "\"human\" is not an AI level");
+    try {
+      (void)bs::ai_level(name);
+    } catch (const std::invalid_argument& e) {
+      bad("level", e.what());
+    }
+  } else {
+    name = g.seats[static_cast<std::size_t>(state.player)];
+    if (name == kHuman) {
+      bad("level", "the seat to act (" + std::to_string(state.player) +
+                       ") is human: name an AI level for a hint");
+    }
+  }
+  const std::unique_ptr<bs::Player> ai = bs::make_ai_player(web_level(name, g.ai_budget));
+  const bs::Action a = ai->decide(g.rules(), state, g.session.next_player_seed());
+  ojson j = ojson::object();
+  j["action"] = action_json(a);
+  return j.dump();
+}
+
+std::string check_placement_json(const BsGame& g, double x, double y) {
+  ojson j = ojson::object();
+  const auto why = g.rules().check_placement(g.state(), {x, y});
+  j["ok"] = !why;
+  if (why) j["reason"] = *why;
+  return j.dump();
+}
+
+std::unique_ptr<BsPlayback> shot_playback(const BsGame& g, int index) {
+  const std::size_t n = g.record().actions.size();
+  if (index < 0 || static_cast<std::size_t>(index) >= n) {
+    bad("index", "must be in [0, " + std::to_string(n) + "), not " + std::to_string(index));
+  }
+  const bs::RecordedAction& ra = g.record().actions[static_cast<std::size_t>(index)];
+  const auto* shot = std::get_if<bs::Shoot>(&ra.action);
+  if (shot == nullptr) {
+    bad("index", "action " + std::to_string(index) + " is not a shot (" +
+                     std::string(action_kind(ra.action)) + ")");
+  }
+  return std::make_unique<BsPlayback>(
+      g.rules().shot_scenario(g.state_before(static_cast<std::size_t>(index)), shot->strike));
+}
+
+std::string undo_to_json(BsGame& g, int n) {
+  const std::size_t size = g.record().actions.size();
+  if (n < 0 || static_cast<std::size_t>(n) > size) {
+    bad("n", "must be in [0, " + std::to_string(size) + "], not " + std::to_string(n));
+  }
+  g.session.take_back_to(static_cast<std::size_t>(n));
+  return state_json(g).dump();
+}
+
+}  // namespace facade

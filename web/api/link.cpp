@@ -1,0 +1,241 @@
+// Links. A link is "v1." followed by the base64url (RFC 4648 section 5,
+// no padding) of a compact JSON object:
+//   {"g": game, "t": table, "s": "seed (decimal)", "b": breaker,
+//    "p": [seat0, seat1], "n": ai_budget (only when set),
+//    "a": [action, ...]}
+// with each action as chosen (before noise):
+//   ["p", X, Y]                                      place the cue ball
+//   ["s", SPEED, PHI, THETA, A, B, ball, pocket, f]  shoot; ball and
+//        pocket -1 without a call; f = 1 safety + 2 push-out
+//   ["d", "choice"]                                  decide
+// where the capitals are doubles written as the hexadecimal of their IEEE
+// bits, without leading zeros ("0" for +0, "8000000000000000" for -0,
+// "3ff0000000000000" for 1.0), so nothing is rounded. The executed strike
+// is not stored: it is perturb(intended, seat noise, radius,
+// GameSeeds::noise(S, i)), re-derived exactly as the record's replay does, so a
+// link holds the same game as the record, at about half the length.
+// bs_game_from_link replays the actions through the rules and stops with
+// an error naming the first one refused ("a[7]: ...").
+
+#include "facade.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "breakshot/game.hpp"
+#include "breakshot/record.hpp"
+
+namespace facade {
+
+namespace {
+
+constexpr std::string_view kLinkPrefix = "v1.";
+
+// ---------------------------------------------------------------------------
+// Links: base64url and doubles as bits
+
+constexpr char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+
+std::string base64url(std::string_view in) {
+  std::string out;
+  out.reserve((in.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 3 <= in.size(); i += 3) {
+    const std::uint32_t v = (std::uint32_t{static_cast<unsigned char>(in[i])} << 16) |
+                            (std::uint32_t{static_cast<unsigned char>(in[i + 1])} << 8) |
+                            std::uint32_t{static_cast<unsigned char>(in[i + 2])};
+    for (int k = 3; k >= 0; --k) out.push_back(kB64[(v >> (6 * k)) & 63]);
+  }
+  const std::size_t rest = in.size() - i;
+  if (rest > 0) {
+    std::uint32_t v = std::uint32_t{static_cast<unsigned char>(in[i])} << 16;
+    if (rest == 2) v |= std::uint32_t{static_cast<unsigned char>(in[i + 1])} << 8;
+    out.push_back(kB64[(v >> 18) & 63]);
+    out.push_back(kB64[(v >> 12) & 63]);
+    if (rest == 2) out.push_back(kB64[(v >> 6) & 63]);
+  }
+  return out;
+}
+
+std::optional<std::string> unbase64url(std::string_view in) {
+  if (in.size() % 4 == 1) return std::nullopt;
+  std::string out;
+  out.reserve(in.size() / 4 * 3 + 2);
+  std::uint32_t acc = 0;
+  int bits = 0;
+  for (const char c : in) {
+    std::uint32_t v = 0;
+    if (c >= 'A' && c <= 'Z') {
+      v = static_cast<std::uint32_t>(c - 'A');
+    } else if (c >= 'a' && c <= 'z') {
+      v = static_cast<std::uint32_t>(c - 'a' + 26);
+    } else if (c >= '0' && c <= '9') {
+      v = static_cast<std::uint32_t>(c - '0' + 52);
+    } else if (c == '-') {
+      v = 62;
+    } else if (c == '_') {
+      v = 63;
+    } else {
+      return std::nullopt;
+    }
+    acc = (acc << 6) | v;
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out.push_back(static_cast<char>((acc >> bits) & 0xff));
+    }
+  }
+  return out;
+}
+
+std::string double_hex(double d) {
+  std::uint64_t u = 0;
+  std::memcpy(&u, &d, sizeof u);
+  if (u == 0) return "0";
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string s;
+  while (u != 0) {
+    s.insert(s.begin(), kHex[u & 15]);
+    u >>= 4;
+  }
+  return s;
+}
+
+double hex_double(const json& v, const std::string& path) {
+  const std::string& s = text(v, path);
+  bool ok = !s.empty() && s.size() <= 16;
+  std::uint64_t u = 0;
+  for (const char c : s) {
+    unsigned d = 0;
+    if (c >= '0' && c <= '9') {
+      d = static_cast<unsigned>(c - '0');
+    } else if (c >= 'a' && c <= 'f') {
+      d = static_cast<unsigned>(c - 'a' + 10);
+    } else {
+      ok = false;
+      break;
+    }
+    u = (u << 4) | d;
+  }
+  if (!ok) bad(path, "expected the hexadecimal bits of a double (1 to 16 digits 0-9a-f)");
+  double d = 0.0;
+  std::memcpy(&d, &u, sizeof d);
+  if (!std::isfinite(d)) bad(path, "not a finite number");
+  return d;
+}
+
+std::string link_text(const BsGame& g) {
+  ojson j = ojson::object();
+  j["g"] = bs::to_string(g.record().config.game);
+  j["t"] = g.record().config.table_size;
+  j["s"] = bs::json_io::seed_json(g.record().seed);
+  j["b"] = g.record().start.breaker;
+  j["p"] = ojson::array({g.seats[0], g.seats[1]});
+  if (g.ai_budget) j["n"] = *g.ai_budget;
+  ojson actions = ojson::array();
+  for (const bs::RecordedAction& ra : g.record().actions) {
+    if (const auto* p = std::get_if<bs::PlaceCueBall>(&ra.action)) {
+      actions.push_back(ojson::array({"p", double_hex(p->position.x), double_hex(p->position.y)}));
+    } else if (const auto* s = std::get_if<bs::Shoot>(&ra.action)) {
+      const bs::CueStrike& k = ra.intended ? *ra.intended : s->strike;
+      actions.push_back(ojson::array(
+          {"s", double_hex(k.speed), double_hex(k.phi), double_hex(k.theta), double_hex(k.a),
+           double_hex(k.b), s->call ? s->call->ball : -1, s->call ? s->call->pocket : -1,
+           (s->safety ? 1 : 0) + (s->push_out ? 2 : 0)}));
+    } else {
+      actions.push_back(ojson::array({"d", bs::to_string(std::get<bs::Decide>(ra.action).choice)}));
+    }
+  }
+  j["a"] = actions;
+  return std::string(kLinkPrefix) + base64url(j.dump());
+}
+
+bs::Action link_action(const json& v, const std::string& path) {
+  if (!v.is_array() || v.empty() || !v[0].is_string()) bad(path, "expected an action array [\"p\"|\"s\"|\"d\", ...]");
+  const std::string& k = v[0].get_ref<const std::string&>();
+  if (k == "p") {
+    if (v.size() != 3) bad(path, "expected [\"p\", X, Y]");
+    return bs::PlaceCueBall{{hex_double(v[1], index_path(path, 1)), hex_double(v[2], index_path(path, 2))}};
+  }
+  if (k == "s") {
+    if (v.size() != 9) bad(path, "expected [\"s\", SPEED, PHI, THETA, A, B, ball, pocket, flags]");
+    bs::Shoot s;
+    s.strike.speed = hex_double(v[1], index_path(path, 1));
+    s.strike.phi = hex_double(v[2], index_path(path, 2));
+    s.strike.theta = hex_double(v[3], index_path(path, 3));
+    s.strike.a = hex_double(v[4], index_path(path, 4));
+    s.strike.b = hex_double(v[5], index_path(path, 5));
+    const auto ball = integer(v[6], index_path(path, 6), -1, 1000);
+    const auto pocket = integer(v[7], index_path(path, 7), -1, 1000);
+    if ((ball < 0) != (pocket < 0)) bad(index_path(path, 6), "a call needs both a ball and a pocket");
+    if (ball >= 0) s.call = bs::Call{static_cast<int>(ball), static_cast<int>(pocket)};
+    const auto flags = integer(v[8], index_path(path, 8), 0, 3);
+    s.safety = (flags & 1) != 0;
+    s.push_out = (flags & 2) != 0;
+    return s;
+  }
+  if (k == "d") {
+    if (v.size() != 2) bad(path, "expected [\"d\", \"choice\"]");
+    Reader r;
+    bs::Decide decide;
+    r.must(r.choice(v[1], index_path(path, 1), decide.choice));
+    return decide;
+  }
+  bad(index_path(path, 0), "unknown action kind \"" + k + "\" (known: p, s, d)");
+}
+
+}  // namespace
+
+std::string link_json(const BsGame& g) {
+  ojson j = ojson::object();
+  j["link"] = link_text(g);
+  return j.dump();
+}
+
+std::unique_ptr<BsGame> game_from_link(const char* link) {
+  if (link == nullptr) bad("link", "missing (a null pointer)");
+  std::string_view text_view(link);
+  // A link pasted with its URL fragment around it.
+  if (const auto at = text_view.find("game="); at != std::string_view::npos) {
+    text_view.remove_prefix(at + 5);
+    text_view = text_view.substr(0, text_view.find('&'));
+  }
+  if (text_view.substr(0, kLinkPrefix.size()) != kLinkPrefix) {
+    bad("link", "expected a link starting with \"v1.\"");
+  }
+  const std::optional<std::string> decoded = unbase64url(text_view.substr(kLinkPrefix.size()));
+  if (!decoded) bad("link", "not base64url text after \"v1.\"");
+  const json doc = parse_text(decoded->c_str(), "link", "link");
+  object(doc, "link", {"g", "t", "s", "b", "p", "n", "a"});
+  GameConfigInput in;
+  in.config.game = game_type(required(doc, "link", "g"), "link.g");
+  in.config.table_size = table_size(required(doc, "link", "t"), "link.t");
+  {
+    Reader r;
+    r.must(r.seed(required(doc, "link", "s"), "link.s", in.seed));
+  }
+  in.breaker = static_cast<int>(integer(required(doc, "link", "b"), "link.b", 0, 1));
+  const json& players = required(doc, "link", "p");
+  if (!players.is_array() || players.size() != 2) bad("link.p", "expected two seats");
+  for (std::size_t k = 0; k < 2; ++k) in.seats[k] = seat_name(players[k], index_path("link.p", k));
+  if (const json* n = find(doc, "n")) in.ai_budget = integer(*n, "link.n", 1, kMaxBudget);
+  const json& actions = required(doc, "link", "a");
+  if (!actions.is_array()) bad("link.a", "expected an array of actions");
+  std::unique_ptr<BsGame> g = make_game(in);
+  for (std::size_t i = 0; i < actions.size(); ++i) {
+    const std::string path = index_path("link.a", i);
+    const bs::Action a = link_action(actions[i], path);
+    std::string why;
+    if (!play(*g, a, why)) bad(path, "refused: " + why);
+  }
+  return g;
+}
+
+}  // namespace facade

@@ -1,0 +1,141 @@
+// Playbacks (BsPlayback): the exact states of a scenario at frame times,
+// and its events.
+//
+// Frames. bs_playback_frame_data gives a frame as doubles in a buffer of
+// the playback (no text: a 1000-ball frame as JSON costs ~10 ms in wasm);
+// bs_playback_frame writes its JSON from the same buffer, so the two
+// always carry the same numbers. Playback events are written as the
+// result file writes them (src/io/result_json.hpp).
+
+#include "facade.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "breakshot/lab.hpp"
+#include "breakshot/scenario_io.hpp"
+#include "breakshot/simulation.hpp"
+#include "io/json_write.hpp"
+#include "io/result_json.hpp"
+
+namespace facade {
+
+namespace {
+
+// A frame as doubles (bs_playback_frame_data's buffer, from which
+// bs_playback_frame's JSON is written): a header, then kFrameStride
+// doubles per ball in scenario order.
+enum FrameHeader : std::size_t {
+  kFrameT,         // the simulation's time
+  kFrameEvents,    // events so far (exact: below 2^53)
+  kFrameAtRest,    // 1 or 0
+  kFrameComplete,  // 1, or 0 once max_events stopped the run
+  kFrameEnergy,    // total kinetic energy (J), summed in scenario order
+  kFramePx,        // total momentum (kg m/s)
+  kFramePy,
+  kFrameBalls,     // the number of balls
+  kFrameHeaderSize
+};
+// Per ball: x, y, on_table (1 or 0), vx, vy, energy, px, py.
+constexpr std::size_t kFrameStride = 8;
+
+/// Advances the playback to t and writes its frame into pb.frame: the one
+/// computation of a frame, for both the JSON and the binary reply.
+void compute_frame(BsPlayback& pb, double t) {
+  if (!std::isfinite(t)) bad("t", "not a finite number");
+  if (t < pb.sim.time()) {
+    bad("t", "the frame time goes backwards (" + bs::json_io::format_number(t) + " < " +
+                 bs::json_io::format_number(pb.sim.time()) + ")");
+  }
+  // A run that ends at a time ends there (as simulate() does).
+  const double target = pb.scenario.until.rest ? t : std::fmin(t, pb.scenario.until.time);
+  if (!pb.limit && pb.sim.advance_to(target) == bs::StopReason::event_limit) pb.limit = true;
+  const std::size_t n = pb.sim.ball_count();
+  std::vector<double>& d = pb.frame;
+  d.assign(kFrameHeaderSize + kFrameStride * n, 0.0);
+  double energy = 0.0;
+  bs::Vec2 p;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bs::BallState st = pb.sim.ball(i);
+    const bs::BallSpec& spec = pb.scenario.balls[i];
+    const double e = bs::kinetic_energy(spec, st);
+    const bs::Vec2 m = bs::momentum(spec, st);
+    // Summed in scenario order, as the result file's samples are.
+    energy += e;
+    p += m;
+    double* b = d.data() + kFrameHeaderSize + kFrameStride * i;
+    b[0] = st.position.x;
+    b[1] = st.position.y;
+    b[2] = st.state == bs::MotionState::pocketed ? 0.0 : 1.0;
+    b[3] = st.velocity.x;
+    b[4] = st.velocity.y;
+    b[5] = e;
+    b[6] = m.x;
+    b[7] = m.y;
+  }
+  d[kFrameT] = pb.sim.time();
+  d[kFrameEvents] = static_cast<double>(pb.sim.events().size());
+  d[kFrameAtRest] = pb.sim.at_rest() ? 1.0 : 0.0;
+  d[kFrameComplete] = pb.limit ? 0.0 : 1.0;
+  d[kFrameEnergy] = energy;
+  d[kFramePx] = p.x;
+  d[kFramePy] = p.y;
+  d[kFrameBalls] = static_cast<double>(n);
+}
+
+}  // namespace
+
+std::string frame_json(BsPlayback& pb, double t) {
+  compute_frame(pb, t);
+  const std::vector<double>& d = pb.frame;
+  const auto n = static_cast<std::size_t>(d[kFrameBalls]);
+  ojson j = ojson::object();
+  j["t"] = d[kFrameT];
+  ojson balls = ojson::array();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* b = d.data() + kFrameHeaderSize + kFrameStride * i;
+    balls.push_back(ojson::array({b[0], b[1], b[2] != 0.0 ? 1 : 0, b[3], b[4], b[5], b[6], b[7]}));
+  }
+  j["balls"] = balls;
+  j["energy"] = d[kFrameEnergy];
+  j["momentum"] = ojson::array({d[kFramePx], d[kFramePy]});
+  j["events"] = static_cast<std::size_t>(d[kFrameEvents]);
+  j["at_rest"] = d[kFrameAtRest] != 0.0;
+  j["complete"] = d[kFrameComplete] != 0.0;
+  return j.dump();
+}
+
+const double* frame_data(BsPlayback& pb, double t) {
+  compute_frame(pb, t);
+  return pb.frame.data();
+}
+
+std::string events_json(const BsPlayback& pb, int from) {
+  const std::vector<bs::Event>& ev = pb.sim.events();
+  if (from < 0 || static_cast<std::size_t>(from) > ev.size()) {
+    bad("from", "must be in [0, " + std::to_string(ev.size()) + "], not " + std::to_string(from));
+  }
+  std::string out = "{\"from\":" + std::to_string(from) + ",\"events\":[";
+  bs::json_io::JsonWriter w(out);
+  for (std::size_t k = static_cast<std::size_t>(from); k < ev.size(); ++k) {
+    if (k > static_cast<std::size_t>(from)) out += ',';
+    bs::json_io::write_event(w, pb.scenario, ev[k]);
+  }
+  out += "]}";
+  return out;
+}
+
+bs::Scenario scenario_from(const char* scenario_json) {
+  if (scenario_json == nullptr) bad("scenario", "missing (a null pointer)");
+  auto parsed = bs::read_scenario(scenario_json);
+  if (const auto* err = std::get_if<bs::ScenarioError>(&parsed)) {
+    bad(err->path, (err->unsupported ? "not supported: " : "") + err->reason);
+  }
+  return std::get<bs::Scenario>(std::move(parsed));
+}
+
+}  // namespace facade
