@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "breakshot/lab.hpp"
+#include "breakshot/plot.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"

@@ -45,6 +45,7 @@
 #include "breakshot/match.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
+#include "breakshot/plot.hpp"
 #include "breakshot/record.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/serve.hpp"

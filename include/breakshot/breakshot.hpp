@@ -5,6 +5,7 @@
 #include "breakshot/event.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/physics.hpp"
+#include "breakshot/plot.hpp"
 #include "breakshot/roots.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/scenario_io.hpp"

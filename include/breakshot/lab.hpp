@@ -1,7 +1,7 @@
 // The physics lab: energy, momentum and dense traces of a run.
 #pragma once
 
-#include <string>
+#include <cstddef>
 #include <vector>
 
 #include "breakshot/scenario.hpp"
@@ -22,12 +22,5 @@ Vec2 momentum(const BallSpec& spec, const BallState& state);
 /// of the simulation and never changes the events.
 std::vector<Sample> trace(const Scenario& scenario, std::size_t points = 2000,
                           std::size_t max_frames = 200000);
-
-/// Writes PREFIX-trajectories.svg, PREFIX-energy.svg and
-/// PREFIX-momentum.svg from a trace. Returns the paths written. Throws
-/// std::runtime_error naming the file if one cannot be written.
-std::vector<std::string> write_plots(const Scenario& scenario,
-                                     const std::vector<Sample>& frames,
-                                     const std::string& prefix);
 
 }  // namespace breakshot

@@ -1,5 +1,6 @@
 // The physics lab: energy and momentum of a ball, and dense traces of a
-// run for plotting (the plots themselves are in src/io/svg_plot.cpp).
+// run for plotting (the plots themselves are in src/io/svg_plot.cpp,
+// plot.hpp).
 
 #include <algorithm>
 #include <cstddef>
