@@ -75,10 +75,8 @@ Engine::Engine(const Scenario& scenario) : scenario_(scenario) {
     cluster_out_.velocity.reserve(n);
     cluster_out_.touched.reserve(pairs);
   }
-  next_.resize(n);
   event_.resize(n);
-  heap_.resize(n);
-  heap_pos_.resize(n);
+  queue_.reset(n);
   for (std::size_t i = 0; i < n; ++i) {
     Trajectory& tr = traj_[i];
     tr.t0 = 0.0;
@@ -196,12 +194,8 @@ Engine::Engine(const Scenario& scenario) : scenario_(scenario) {
     }
   }
 
-  for (std::size_t i = 0; i < n; ++i) {
-    heap_[i] = static_cast<std::int32_t>(i);
-    heap_pos_[i] = static_cast<std::int32_t>(i);
-  }
   for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
-  for (std::size_t k = n / 2; k-- > 0;) heap_sift_down(k);  // bottom-up
+  queue_.build();
 }
 
 // ---------------------------------------------------------------------------
@@ -454,7 +448,7 @@ Engine::Kinematics Engine::kinematics(std::int32_t i) const {
       if (disc < 0.0) return;
       tau = c / (-b + std::sqrt(disc));
     }
-    consider(best, t + tau, Kind::ball, j, counter_[static_cast<std::size_t>(j)]);
+    consider(best, t + tau, EventKind::ball, j, counter_[static_cast<std::size_t>(j)]);
     return;
   }
   predict_accelerating_pair(ki, j, best);
@@ -499,7 +493,7 @@ void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
     tau = first_contact(c, 4, window);
     if (!(tau < kInf)) return;
   }
-  consider(best, t + tau, Kind::ball, j, counter_[static_cast<std::size_t>(j)]);
+  consider(best, t + tau, EventKind::ball, j, counter_[static_cast<std::size_t>(j)]);
 }
 
 void Engine::predict_walls(const Kinematics& ki, Prediction& best) const {
@@ -549,7 +543,7 @@ void Engine::predict_wall(const Kinematics& ki, std::size_t w, double window,
     // In a convex table the earliest crossing of any wall's line always
     // is, and the later ones never win, so there is nothing to check.
     if (convex_) {
-      consider(best, t + tau, Kind::wall, static_cast<std::int32_t>(w), 0);
+      consider(best, t + tau, EventKind::wall, static_cast<std::int32_t>(w), 0);
       return;
     }
     const Vec2 q = p + v * tau + a * (0.5 * tau * tau);
@@ -580,7 +574,7 @@ void Engine::predict_wall(const Kinematics& ki, std::size_t w, double window,
       if (cross(wall.b, q) < -slack || cross(q, wall.normal) < -slack) return;
     }
   }
-  consider(best, t + tau, Kind::wall, static_cast<std::int32_t>(w), 0);
+  consider(best, t + tau, EventKind::wall, static_cast<std::int32_t>(w), 0);
 }
 
 // A ball falls into a pocket when its centre comes within the pocket's
@@ -609,7 +603,7 @@ void Engine::predict_pockets(const Kinematics& ki, Prediction& best) const {
                            dot(ki.v, ki.a), 0.25 * norm2(ki.a)};
       tau = first_contact(c, 4, window);
     }
-    if (tau <= window) consider(best, t + tau, Kind::pocket, static_cast<std::int32_t>(k), 0);
+    if (tau <= window) consider(best, t + tau, EventKind::pocket, static_cast<std::int32_t>(k), 0);
   }
 }
 
@@ -639,22 +633,22 @@ void Engine::predict_cell(std::int32_t i, Prediction& best) const {
       // the crossing time is a division.
       if (vel[axis] > 0.0 && idx[axis] + 1 < count[axis]) {
         const double tau = std::max(0.0, (lo[axis] + cell_size_ - pos[axis]) / vel[axis]);
-        if (tau <= window) consider(best, t + tau, Kind::cell, 2 * axis, 0);
+        if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis, 0);
       } else if (vel[axis] < 0.0 && idx[axis] > 0) {
         const double tau = std::max(0.0, (lo[axis] - pos[axis]) / vel[axis]);
-        if (tau <= window) consider(best, t + tau, Kind::cell, 2 * axis + 1, 0);
+        if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis + 1, 0);
       }
       continue;
     }
     if (idx[axis] + 1 < count[axis]) {
       const double c[3] = {lo[axis] + cell_size_ - pos[axis], -vel[axis], -0.5 * acc[axis]};
       const double tau = first_contact(c, 2, window);
-      if (tau <= window) consider(best, t + tau, Kind::cell, 2 * axis, 0);
+      if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis, 0);
     }
     if (idx[axis] > 0) {
       const double c[3] = {pos[axis] - lo[axis], vel[axis], 0.5 * acc[axis]};
       const double tau = first_contact(c, 2, window);
-      if (tau <= window) consider(best, t + tau, Kind::cell, 2 * axis + 1, 0);
+      if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis + 1, 0);
     }
   }
 }
@@ -678,10 +672,10 @@ void Engine::predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0
 
 void Engine::predict(std::int32_t i) {
   const auto ui = static_cast<std::size_t>(i);
-  Prediction best{kInf, Kind::none, -1, 0};
+  Prediction best{kInf, EventKind::none, -1, 0};
   if (traj_[ui].state == MotionState::pocketed) {
     event_[ui] = best;
-    next_[ui] = best;
+    queue_.set(i, best);
     return;
   }
   const Kinematics ki = kinematics(i);
@@ -690,7 +684,7 @@ void Engine::predict(std::int32_t i) {
   // candidate so far, so the cheap ones go first.
   const Trajectory& tr = traj_[ui];
   if (!resting(tr.state) && tr.t_end < kInf) {
-    consider(best, tr.t_end, Kind::stop, -1, 0);
+    consider(best, tr.t_end, EventKind::stop, -1, 0);
   }
   if (use_cells_) {
     const std::int32_t cell = ball_cell_[ui];
@@ -713,49 +707,7 @@ void Engine::finish_prediction(std::int32_t i) {
   const auto ui = static_cast<std::size_t>(i);
   Prediction best = event_[ui];
   if (use_cells_) predict_cell(i, best);
-  next_[ui] = best;
-}
-
-// ---------------------------------------------------------------------------
-// The heap of balls, ordered by their next event's time, then by index so
-// that simultaneous events come out in a fixed order.
-
-bool Engine::heap_less(std::int32_t a, std::int32_t b) const {
-  const double ta = next_[static_cast<std::size_t>(a)].time;
-  const double tb = next_[static_cast<std::size_t>(b)].time;
-  if (ta != tb) return ta < tb;
-  return a < b;
-}
-
-void Engine::heap_swap(std::size_t a, std::size_t b) {
-  std::swap(heap_[a], heap_[b]);
-  heap_pos_[static_cast<std::size_t>(heap_[a])] = static_cast<std::int32_t>(a);
-  heap_pos_[static_cast<std::size_t>(heap_[b])] = static_cast<std::int32_t>(b);
-}
-
-void Engine::heap_fix(std::int32_t i) {
-  auto pos = static_cast<std::size_t>(heap_pos_[static_cast<std::size_t>(i)]);
-  while (pos > 0) {
-    const std::size_t parent = (pos - 1) / 2;
-    if (!heap_less(heap_[pos], heap_[parent])) break;
-    heap_swap(pos, parent);
-    pos = parent;
-  }
-  heap_sift_down(pos);
-}
-
-void Engine::heap_sift_down(std::size_t pos) {
-  const std::size_t n = heap_.size();
-  for (;;) {
-    const std::size_t l = 2 * pos + 1;
-    const std::size_t r = l + 1;
-    std::size_t m = pos;
-    if (l < n && heap_less(heap_[l], heap_[m])) m = l;
-    if (r < n && heap_less(heap_[r], heap_[m])) m = r;
-    if (m == pos) break;
-    heap_swap(pos, m);
-    pos = m;
-  }
+  queue_.set(i, best);
 }
 
 // ---------------------------------------------------------------------------
@@ -1000,7 +952,7 @@ bool Engine::collide_cluster(std::int32_t i, std::int32_t j, double t) {
   }
   for (std::int32_t k : group) {
     predict(k);
-    heap_fix(k);
+    queue_.fix(k);
   }
   return true;
 }
@@ -1114,20 +1066,20 @@ void Engine::collide_wall(std::int32_t i, std::int32_t w) {
 // The loop
 
 bool Engine::step(double limit) {
-  if (heap_.empty()) return false;
-  const std::int32_t i = heap_[0];
-  const Prediction p = next_[static_cast<std::size_t>(i)];
-  if (p.kind == Kind::none || p.time > limit) return false;
+  if (queue_.empty()) return false;
+  const std::int32_t i = queue_.top();
+  const Prediction p = queue_.next(i);
+  if (p.kind == EventKind::none || p.time > limit) return false;
   const auto ui = static_cast<std::size_t>(i);
 
-  if (p.kind == Kind::ball && counter_[static_cast<std::size_t>(p.other)] != p.other_counter) {
+  if (p.kind == EventKind::ball && counter_[static_cast<std::size_t>(p.other)] != p.other_counter) {
     // The partner had an event since this was predicted: predict again.
     origin_ = std::max(origin_, p.time);
     predict(i);
-    heap_fix(i);
+    queue_.fix(i);
     return true;
   }
-  if (p.kind == Kind::cell) {
+  if (p.kind == EventKind::cell) {
     // Crossing into a neighbouring cell changes no motion, so no one
     // else's prediction is affected; only this ball looks around again.
     origin_ = std::max(origin_, p.time);
@@ -1153,7 +1105,7 @@ bool Engine::step(double limit) {
     }
     event_[ui] = best;
     finish_prediction(i);
-    heap_fix(i);
+    queue_.fix(i);
     return true;
   }
   if (event_count_ >= scenario_.max_events) {
@@ -1168,7 +1120,7 @@ bool Engine::step(double limit) {
   ev.time = t;
   ev.ball = i;
   switch (p.kind) {
-    case Kind::ball: {
+    case EventKind::ball: {
       const std::int32_t j = p.other;
       move_to(i, t);
       move_to(j, t);
@@ -1182,18 +1134,18 @@ bool Engine::step(double limit) {
       events_.push_back(ev);
       ++event_count_;
       predict(i);
-      heap_fix(i);
+      queue_.fix(i);
       predict(j);
-      heap_fix(j);
+      queue_.fix(j);
       return true;
     }
-    case Kind::wall:
+    case EventKind::wall:
       move_to(i, t);
       collide_wall(i, p.other);
       ev.type = EventType::ball_cushion;
       ev.wall = p.other;
       break;
-    case Kind::stop: {
+    case EventKind::stop: {
       // The phase ends exactly where its closed-form motion ends.
       Trajectory& tr = traj_[ui];
       const MotionState from = tr.state;
@@ -1225,7 +1177,7 @@ bool Engine::step(double limit) {
       ev.to = tr.state;
       break;
     }
-    case Kind::pocket: {
+    case EventKind::pocket: {
       Trajectory& tr = traj_[ui];
       move_to(i, t);
       set_motion(i, {}, {});  // at rest (counted as such) ...
@@ -1243,7 +1195,7 @@ bool Engine::step(double limit) {
   events_.push_back(ev);
   ++event_count_;
   predict(i);
-  heap_fix(i);
+  queue_.fix(i);
   return true;
 }
 
@@ -1269,13 +1221,13 @@ double Engine::next_event_time() {
   // answer is the time of a real event. Doing that early changes nothing:
   // they are handled in the same order whenever they are handled.
   for (;;) {
-    if (heap_.empty()) return kInf;
-    const std::int32_t i = heap_[0];
-    const Prediction& p = next_[static_cast<std::size_t>(i)];
-    if (p.kind == Kind::none) return kInf;
+    if (queue_.empty()) return kInf;
+    const std::int32_t i = queue_.top();
+    const Prediction& p = queue_.next(i);
+    if (p.kind == EventKind::none) return kInf;
     const bool stale =
-        p.kind == Kind::ball && counter_[static_cast<std::size_t>(p.other)] != p.other_counter;
-    if (!stale && p.kind != Kind::cell) return p.time;
+        p.kind == EventKind::ball && counter_[static_cast<std::size_t>(p.other)] != p.other_counter;
+    if (!stale && p.kind != EventKind::cell) return p.time;
     step(p.time);
   }
 }

@@ -14,6 +14,7 @@
 #include "breakshot/pool.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/simulation.hpp"
+#include "physics/event_queue.hpp"
 
 namespace breakshot::detail {
 
@@ -40,19 +41,6 @@ class Engine {
   const Trajectory& trajectory(std::size_t i) const { return traj_[i]; }
 
  private:
-  // A ball's earliest predicted event. Ball-ball predictions remember the
-  // partner's event counter so that one made stale by the partner's own
-  // later event is recognised when it comes up, instead of being searched
-  // for and removed (the DynamO way).
-  // Kinds in the order simultaneous events of one ball are taken.
-  enum class Kind : std::uint8_t { ball, wall, pocket, stop, cell, none };
-  struct Prediction {
-    double time = 0.0;
-    Kind kind = Kind::none;
-    std::int32_t other = -1;          // ball, wall, or cell direction
-    std::uint64_t other_counter = 0;  // partner's counter at prediction
-  };
-
   // A ball's motion at the prediction origin, computed once per prediction.
   struct Kinematics {
     Vec2 p, v, a;
@@ -73,10 +61,6 @@ class Engine {
   void predict_wall(const Kinematics& ki, std::size_t w, double window, Prediction& best) const;
   void predict_cell(std::int32_t i, Prediction& best) const;
   void predict_pockets(const Kinematics& ki, Prediction& best) const;
-  void heap_fix(std::int32_t i);
-  void heap_sift_down(std::size_t pos);
-  bool heap_less(std::int32_t a, std::int32_t b) const;
-  void heap_swap(std::size_t a, std::size_t b);
   bool step(double limit);
   void move_to(std::int32_t i, double t);
   BallState state_at(std::int32_t i, double t) const;
@@ -119,10 +103,8 @@ class Engine {
   bool ideal_ = false;          // no ball ever accelerates
   bool convex_ = false;         // the table has no corner walls
   std::vector<std::uint64_t> counter_;  // events each ball took part in
-  std::vector<Prediction> next_;        // each ball's earliest event
-  std::vector<Prediction> event_;       // the same, cell crossings left out
-  std::vector<std::int32_t> heap_;      // ball indices, min-heap on next_
-  std::vector<std::int32_t> heap_pos_;  // where each ball sits in heap_
+  std::vector<Prediction> event_;       // each ball's earliest event, cell crossings left out
+  EventQueue queue_;                    // the same with cell crossings, ordered
   std::vector<Event> events_;
   std::optional<StrikeResult> cue_result_;
   struct Box {
