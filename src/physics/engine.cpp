@@ -16,10 +16,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Below this many balls every pair is checked; above it a grid of cells
-// keeps the per-event cost independent of the number of balls.
-constexpr std::size_t kCellThreshold = 48;
-
 // With ball_clusters, the working memory of cluster impacts is reserved at
 // set-up for up to this many balls (any pool game); larger scenes grow it
 // when a cluster first needs it.
@@ -142,36 +138,19 @@ Engine::Engine(const Scenario& scenario) : scenario_(scenario) {
   }
 
   if (n >= kCellThreshold) {
-    // Cells at least a ball diameter wide (with a margin for round-off) so
-    // that two balls in contact are always in neighbouring cells, and
-    // about one ball per cell otherwise.
+    // With many balls, the grid of cells.
     double max_r = 0.0;
     for (const BallSpec& b : scenario_.balls) max_r = std::max(max_r, b.radius);
-    const Vec2 size = scenario_.table.max - scenario_.table.min;
-    const double per_ball = std::sqrt(size.x * size.y / static_cast<double>(n));
-    cell_size_ = std::max(2.0 * max_r * 1.01, per_ball);
-    const double nx = std::ceil(size.x / cell_size_);
-    const double ny = std::ceil(size.y / cell_size_);
-    // A very large table with tiny balls would want billions of cells;
-    // then cells would not pay off and we check every pair.
-    if (nx * ny <= 16.0 * static_cast<double>(n) + 64.0) {
-      use_cells_ = true;
-      grid_origin_ = scenario_.table.min;
-      grid_nx_ = std::max<std::int32_t>(1, static_cast<std::int32_t>(nx));
-      grid_ny_ = std::max<std::int32_t>(1, static_cast<std::int32_t>(ny));
-      cell_head_.assign(static_cast<std::size_t>(grid_nx_) * static_cast<std::size_t>(grid_ny_), -1);
-      cell_next_.assign(n, -1);
-      cell_prev_.assign(n, -1);
-      ball_cell_.assign(n, -1);
+    if (grid_.build(scenario_.table.min, scenario_.table.max, n, max_r)) {
       for (std::size_t i = 0; i < n; ++i) {
         const auto bi = static_cast<std::int32_t>(i);
-        cell_link(bi, cell_index(traj_[i].p0));
+        grid_.link(bi, grid_.index(traj_[i].p0));
       }
       // Cluster impacts gather the balls within kClusterGap of a member:
       // their cells are at most this many away, one more for a ball on a
       // cell's edge whose crossing falls at the impact's time.
       cluster_reach_ =
-          static_cast<std::int32_t>(std::ceil((2.0 * max_r + kClusterGap) / cell_size_)) + 1;
+          static_cast<std::int32_t>(std::ceil((2.0 * max_r + kClusterGap) / grid_.cell_size())) + 1;
     }
   }
 
@@ -615,15 +594,16 @@ void Engine::predict_cell(std::int32_t i, Prediction& best) const {
   const Vec2 p = position_at(i, t);
   const Vec2 v = velocity_at(i, t);
   const Vec2 a = t < A.t_end ? A.acc : Vec2{};
-  const std::int32_t cell = ball_cell_[static_cast<std::size_t>(i)];
-  const std::int32_t cx = cell % grid_nx_;
-  const std::int32_t cy = cell / grid_nx_;
-  const double lo[2] = {grid_origin_.x + cell_size_ * cx, grid_origin_.y + cell_size_ * cy};
+  const std::int32_t cell = grid_.cell_of(i);
+  const std::int32_t cx = cell % grid_.nx();
+  const std::int32_t cy = cell / grid_.nx();
+  const double size = grid_.cell_size();
+  const double lo[2] = {grid_.origin().x + size * cx, grid_.origin().y + size * cy};
   const double pos[2] = {p.x, p.y};
   const double vel[2] = {v.x, v.y};
   const double acc[2] = {a.x, a.y};
   const std::int32_t idx[2] = {cx, cy};
-  const std::int32_t count[2] = {grid_nx_, grid_ny_};
+  const std::int32_t count[2] = {grid_.nx(), grid_.ny()};
   // Direction codes: 0 = +x, 1 = -x, 2 = +y, 3 = -y. Leaving a cell is a
   // "contact" of the ball's centre with the cell's edge, found with the
   // same root finder as the collisions.
@@ -632,7 +612,7 @@ void Engine::predict_cell(std::int32_t i, Prediction& best) const {
       // Straight motion along this axis (always so in the ideal model):
       // the crossing time is a division.
       if (vel[axis] > 0.0 && idx[axis] + 1 < count[axis]) {
-        const double tau = std::max(0.0, (lo[axis] + cell_size_ - pos[axis]) / vel[axis]);
+        const double tau = std::max(0.0, (lo[axis] + size - pos[axis]) / vel[axis]);
         if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis, 0);
       } else if (vel[axis] < 0.0 && idx[axis] > 0) {
         const double tau = std::max(0.0, (lo[axis] - pos[axis]) / vel[axis]);
@@ -641,7 +621,7 @@ void Engine::predict_cell(std::int32_t i, Prediction& best) const {
       continue;
     }
     if (idx[axis] + 1 < count[axis]) {
-      const double c[3] = {lo[axis] + cell_size_ - pos[axis], -vel[axis], -0.5 * acc[axis]};
+      const double c[3] = {lo[axis] + size - pos[axis], -vel[axis], -0.5 * acc[axis]};
       const double tau = first_contact(c, 2, window);
       if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis, 0);
     }
@@ -658,12 +638,11 @@ void Engine::predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0
                                Prediction& best) const {
   x0 = std::max(0, x0);
   y0 = std::max(0, y0);
-  x1 = std::min(grid_nx_ - 1, x1);
-  y1 = std::min(grid_ny_ - 1, y1);
+  x1 = std::min(grid_.nx() - 1, x1);
+  y1 = std::min(grid_.ny() - 1, y1);
   for (std::int32_t y = y0; y <= y1; ++y) {
     for (std::int32_t x = x0; x <= x1; ++x) {
-      for (std::int32_t j = cell_head_[static_cast<std::size_t>(y * grid_nx_ + x)]; j >= 0;
-           j = cell_next_[static_cast<std::size_t>(j)]) {
+      for (std::int32_t j = grid_.first(y * grid_.nx() + x); j >= 0; j = grid_.next(j)) {
         if (j != i) predict_ball_pair(ki, j, best);
       }
     }
@@ -686,10 +665,10 @@ void Engine::predict(std::int32_t i) {
   if (!resting(tr.state) && tr.t_end < kInf) {
     consider(best, tr.t_end, EventKind::stop, -1, 0);
   }
-  if (use_cells_) {
-    const std::int32_t cell = ball_cell_[ui];
-    const std::int32_t cx = cell % grid_nx_;
-    const std::int32_t cy = cell / grid_nx_;
+  if (grid_.used()) {
+    const std::int32_t cell = grid_.cell_of(i);
+    const std::int32_t cx = cell % grid_.nx();
+    const std::int32_t cy = cell / grid_.nx();
     predict_cells(i, ki, cx - 1, cx + 1, cy - 1, cy + 1, best);
   } else {
     const auto n = static_cast<std::int32_t>(traj_.size());
@@ -706,45 +685,8 @@ void Engine::predict(std::int32_t i) {
 void Engine::finish_prediction(std::int32_t i) {
   const auto ui = static_cast<std::size_t>(i);
   Prediction best = event_[ui];
-  if (use_cells_) predict_cell(i, best);
+  if (grid_.used()) predict_cell(i, best);
   queue_.set(i, best);
-}
-
-// ---------------------------------------------------------------------------
-// Cells
-
-std::int32_t Engine::cell_index(Vec2 p) const {
-  auto clamp_axis = [&](double v, double o, std::int32_t count) {
-    const double k = std::floor((v - o) / cell_size_);
-    if (!(k >= 0.0)) return 0;
-    if (k >= static_cast<double>(count - 1)) return count - 1;
-    return static_cast<std::int32_t>(k);
-  };
-  return clamp_axis(p.y, grid_origin_.y, grid_ny_) * grid_nx_ +
-         clamp_axis(p.x, grid_origin_.x, grid_nx_);
-}
-
-void Engine::cell_link(std::int32_t i, std::int32_t cell) {
-  const auto ui = static_cast<std::size_t>(i);
-  const auto uc = static_cast<std::size_t>(cell);
-  ball_cell_[ui] = cell;
-  cell_prev_[ui] = -1;
-  cell_next_[ui] = cell_head_[uc];
-  if (cell_head_[uc] >= 0) cell_prev_[static_cast<std::size_t>(cell_head_[uc])] = i;
-  cell_head_[uc] = i;
-}
-
-void Engine::cell_unlink(std::int32_t i) {
-  const auto ui = static_cast<std::size_t>(i);
-  const std::int32_t prev = cell_prev_[ui];
-  const std::int32_t next = cell_next_[ui];
-  if (prev >= 0) {
-    cell_next_[static_cast<std::size_t>(prev)] = next;
-  } else {
-    cell_head_[static_cast<std::size_t>(ball_cell_[ui])] = next;
-  }
-  if (next >= 0) cell_prev_[static_cast<std::size_t>(next)] = prev;
-  ball_cell_[ui] = -1;
 }
 
 // ---------------------------------------------------------------------------
@@ -856,22 +798,21 @@ bool Engine::collide_cluster(std::int32_t i, std::int32_t j, double t) {
       group.push_back(k);
     }
   };
-  if (use_cells_) {
+  if (grid_.used()) {
     // Only the balls of the cells within reach: a large scene pays for
     // the balls near the impact, not for all of them.
     std::vector<std::int32_t>& near = cluster_place_index_;
     for (std::size_t g = 0; g < group.size(); ++g) {
       const auto ug = static_cast<std::size_t>(group[g]);
       const Vec2 pg = traj_[ug].p0;
-      const std::int32_t cx = ball_cell_[ug] % grid_nx_;
-      const std::int32_t cy = ball_cell_[ug] / grid_nx_;
+      const std::int32_t cx = grid_.cell_of(group[g]) % grid_.nx();
+      const std::int32_t cy = grid_.cell_of(group[g]) / grid_.nx();
       near.clear();
       for (std::int32_t y = std::max(0, cy - cluster_reach_);
-           y <= std::min(grid_ny_ - 1, cy + cluster_reach_); ++y) {
+           y <= std::min(grid_.ny() - 1, cy + cluster_reach_); ++y) {
         for (std::int32_t x = std::max(0, cx - cluster_reach_);
-             x <= std::min(grid_nx_ - 1, cx + cluster_reach_); ++x) {
-          for (std::int32_t k = cell_head_[static_cast<std::size_t>(y * grid_nx_ + x)]; k >= 0;
-               k = cell_next_[static_cast<std::size_t>(k)]) {
+             x <= std::min(grid_.nx() - 1, cx + cluster_reach_); ++x) {
+          for (std::int32_t k = grid_.first(y * grid_.nx() + x); k >= 0; k = grid_.next(k)) {
             if (traj_[static_cast<std::size_t>(k)].state != MotionState::pocketed) {
               near.push_back(k);
             }
@@ -1083,22 +1024,20 @@ bool Engine::step(double limit) {
     // Crossing into a neighbouring cell changes no motion, so no one
     // else's prediction is affected; only this ball looks around again.
     origin_ = std::max(origin_, p.time);
-    const std::int32_t cell = ball_cell_[ui];
-    const std::int32_t step_x[4] = {1, -1, 0, 0};
-    const std::int32_t step_y[4] = {0, 0, 1, -1};
-    const std::int32_t cx = cell % grid_nx_ + step_x[p.other];
-    const std::int32_t cy = cell / grid_nx_ + step_y[p.other];
-    cell_unlink(i);
-    cell_link(i, cy * grid_nx_ + cx);
+    const std::int32_t cell = grid_.cell_of(i);
+    const std::int32_t cx = cell % grid_.nx() + kStepX[p.other];
+    const std::int32_t cy = cell / grid_.nx() + kStepY[p.other];
+    grid_.unlink(i);
+    grid_.link(i, cy * grid_.nx() + cx);
     // Only the row or column of cells that just came into the
     // neighbourhood holds new partners; the best event found before still
     // stands (if its partner has moved on since, it is found stale when it
     // comes up, as any other).
     const Kinematics ki = kinematics(i);
     Prediction best = event_[ui];
-    const std::int32_t fx = cx + step_x[p.other];
-    const std::int32_t fy = cy + step_y[p.other];
-    if (step_x[p.other] != 0) {
+    const std::int32_t fx = cx + kStepX[p.other];
+    const std::int32_t fy = cy + kStepY[p.other];
+    if (kStepX[p.other] != 0) {
       predict_cells(i, ki, fx, fx, cy - 1, cy + 1, best);
     } else {
       predict_cells(i, ki, cx - 1, cx + 1, fy, fy, best);
@@ -1183,7 +1122,7 @@ bool Engine::step(double limit) {
       set_motion(i, {}, {});  // at rest (counted as such) ...
       tr.state = MotionState::pocketed;  // ... and out of play
       update_box(tr);
-      if (use_cells_) cell_unlink(i);
+      if (grid_.used()) grid_.unlink(i);
       ev.type = EventType::ball_pocket;
       ev.pocket = p.other;
       break;

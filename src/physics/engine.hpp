@@ -14,6 +14,7 @@
 #include "breakshot/pool.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/simulation.hpp"
+#include "physics/cell_grid.hpp"
 #include "physics/event_queue.hpp"
 
 namespace breakshot::detail {
@@ -79,9 +80,6 @@ class Engine {
   bool collide_cluster(std::int32_t i, std::int32_t j, double t);
   void collide_pool_wall(std::int32_t i, std::int32_t w);
   void collide_wall(std::int32_t i, std::int32_t w);
-  std::int32_t cell_index(Vec2 p) const;
-  void cell_link(std::int32_t i, std::int32_t cell);
-  void cell_unlink(std::int32_t i);
 
   Scenario scenario_;
   // Working memory of collide_cluster (reserved when the scenario has
@@ -119,16 +117,7 @@ class Engine {
   // Pairs with a restitution of their own: sorted keys a * n + b (a < b).
   std::vector<std::uint64_t> pair_keys_;
   std::vector<double> pair_values_;
-  // Uniform grid of cells, used when there are many balls.
-  bool use_cells_ = false;
-  double cell_size_ = 0.0;
-  Vec2 grid_origin_;
-  std::int32_t grid_nx_ = 1;
-  std::int32_t grid_ny_ = 1;
-  std::vector<std::int32_t> cell_head_;  // first ball in each cell, or -1
-  std::vector<std::int32_t> cell_next_;  // next ball in the same cell
-  std::vector<std::int32_t> cell_prev_;
-  std::vector<std::int32_t> ball_cell_;
+  CellGrid grid_;  // used when there are many balls
 };
 
 }  // namespace breakshot::detail
