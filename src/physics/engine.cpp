@@ -14,8 +14,6 @@ namespace breakshot::detail {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // With ball_clusters, the working memory of cluster impacts is reserved at
 // set-up for up to this many balls (any pool game); larger scenes grow it
 // when a cluster first needs it.
@@ -26,16 +24,6 @@ constexpr std::size_t kClusterReserveBalls = 64;
 // segment's length) so that a ball arriving exactly at the junction of
 // two walls is caught by one of them.
 constexpr double kSegmentSlack = 1e-9;
-
-// Does a ball in this state change position?
-bool translating(MotionState s) {
-  return s == MotionState::moving || s == MotionState::sliding || s == MotionState::rolling;
-}
-
-// Is a ball in this state done (nothing more will happen by itself)?
-bool resting(MotionState s) {
-  return s == MotionState::stationary || s == MotionState::pocketed;
-}
 
 }  // namespace
 
@@ -178,175 +166,7 @@ Engine::Engine(const Scenario& scenario) : scenario_(scenario) {
 }
 
 // ---------------------------------------------------------------------------
-// Motion
-
-Vec2 Engine::acceleration_for(Vec2 v) const {
-  if (scenario_.physics.model == Model::friction) {
-    const double s = norm(v);
-    if (s > 0.0) return v * (-scenario_.physics.deceleration / s);
-  }
-  return {};
-}
-
-void Engine::set_velocity(std::int32_t i, Vec2 v) {
-  set_motion(i, v, traj_[static_cast<std::size_t>(i)].w0);
-}
-
-// A new motion from t0 on: picks the state and the polynomial of this
-// phase. The pool model's phases (docs/physics.md):
-//   sliding  contact point slips (u != 0): friction -mu_s m g u/|u| until
-//            the slip stops at 2|u| / (7 mu_s g);
-//   rolling  u = 0: rolling resistance -mu_r m g v/|v| until the ball
-//            stops at |v| / (mu_r g); the spin follows the velocity;
-//   spinning in place about z until w_z has decayed;
-// and w_z decays at 5 mu_sp g / (2 R) in every state.
-void Engine::set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls) {
-  const auto ui = static_cast<std::size_t>(i);
-  Trajectory& tr = traj_[ui];
-  const bool was_active = !resting(tr.state);
-  const PhysicsParams& ph = scenario_.physics;
-  tr.v0 = v;
-  tr.acc = {};
-  tr.alpha = {};
-  tr.wz_rate = 0.0;
-  tr.t_end = kInf;
-  if (ph.model != Model::pool) {
-    tr.w0 = {};
-    tr.acc = acceleration_for(v);
-    const double speed = norm(v);
-    tr.state = speed > 0.0 ? MotionState::moving : MotionState::stationary;
-    if (speed > 0.0 && ph.model == Model::friction && ph.deceleration > 0.0) {
-      tr.t_end = tr.t0 + speed / ph.deceleration;
-    }
-  } else {
-    const double r = radius_[ui];
-    tr.w0 = w;
-    tr.wz_rate = 2.5 * ph.spinning_friction * ph.gravity / r;
-    const Vec2 u{v.x - r * w.y, v.y + r * w.x};  // slip of the contact point
-    const double slip = norm(u);
-    const double speed = norm(v);
-    // `rolls`: the slip has just stopped. w = z x v / R is exact only up
-    // to rounding, so the state is set, not inferred from the slip.
-    if (slip > 0.0 && !rolls) {
-      tr.state = MotionState::sliding;
-      const Vec2 uh = u / slip;
-      const double f = ph.sliding_friction * ph.gravity;
-      tr.acc = uh * -f;
-      tr.alpha = perp(uh) * (2.5 * f / r);
-      if (f > 0.0) tr.t_end = tr.t0 + slip / (3.5 * f);
-    } else if (speed > 0.0) {
-      tr.state = MotionState::rolling;
-      const double f = ph.rolling_friction * ph.gravity;
-      tr.acc = v * (-f / speed);
-      tr.alpha = perp(tr.acc) / r;
-      if (f > 0.0) tr.t_end = tr.t0 + speed / f;
-    } else if (w.z != 0.0) {
-      tr.state = MotionState::spinning;
-      if (tr.wz_rate > 0.0) tr.t_end = tr.t0 + std::abs(w.z) / tr.wz_rate;
-    } else {
-      tr.state = MotionState::stationary;
-    }
-  }
-  const bool active = !resting(tr.state);
-  if (active && !was_active) ++moving_;
-  if (!active && was_active) --moving_;
-  update_box(tr);
-}
-
-// The box that holds the ball's centre from t0 until its motion changes by
-// itself, widened a little against round-off. Two balls whose boxes stay
-// further apart than their radii cannot meet before one of them has an
-// event, so most pairs need no quartic at all.
-void Engine::update_box(Trajectory& tr) {
-  if (!translating(tr.state)) {
-    tr.box_lo = tr.p0;
-    tr.box_hi = tr.p0;
-    return;
-  }
-  if (!(tr.t_end < kInf)) {
-    tr.box_lo = {-kInf, -kInf};
-    tr.box_hi = {kInf, kInf};
-    return;
-  }
-  const double T = tr.t_end - tr.t0;
-  const double p[2] = {tr.p0.x, tr.p0.y};
-  const double v[2] = {tr.v0.x, tr.v0.y};
-  const double a[2] = {tr.acc.x, tr.acc.y};
-  double lo[2], hi[2];
-  for (int k = 0; k < 2; ++k) {
-    const double end = p[k] + v[k] * T + 0.5 * a[k] * T * T;
-    lo[k] = std::min(p[k], end);
-    hi[k] = std::max(p[k], end);
-    if (a[k] != 0.0) {
-      const double s = -v[k] / a[k];
-      if (s > 0.0 && s < T) {
-        const double x = p[k] + v[k] * s + 0.5 * a[k] * s * s;
-        lo[k] = std::min(lo[k], x);
-        hi[k] = std::max(hi[k], x);
-      }
-    }
-    const double margin = 1e-9 * (1.0 + std::abs(lo[k]) + std::abs(hi[k]));
-    lo[k] -= margin;
-    hi[k] += margin;
-  }
-  tr.box_lo = {lo[0], lo[1]};
-  tr.box_hi = {hi[0], hi[1]};
-}
-
-Vec2 Engine::position_at(std::int32_t i, double t) const {
-  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
-  const double dt = std::min(t, tr.t_end) - tr.t0;
-  return tr.p0 + tr.v0 * dt + tr.acc * (0.5 * dt * dt);
-}
-
-Vec2 Engine::velocity_at(std::int32_t i, double t) const {
-  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
-  if (t >= tr.t_end) {
-    // A ball of the friction model stops at t_end; a pool ball's phase
-    // ends there with the velocity the phase reached.
-    if (tr.state == MotionState::moving) return {};
-    t = tr.t_end;
-  }
-  return tr.v0 + tr.acc * (t - tr.t0);
-}
-
-Vec3 Engine::spin_at(std::int32_t i, double t) const {
-  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
-  const double dt = std::min(t, tr.t_end) - tr.t0;
-  Vec3 w = tr.w0;
-  w.x += tr.alpha.x * dt;
-  w.y += tr.alpha.y * dt;
-  // w_z decays linearly to zero and stays there.
-  const double left = std::max(0.0, std::abs(tr.w0.z) - tr.wz_rate * dt);
-  w.z = tr.w0.z < 0.0 ? -left : (tr.w0.z > 0.0 ? left : 0.0);
-  return w;
-}
-
-BallState Engine::state_at(std::int32_t i, double t) const {
-  const Trajectory& tr = traj_[static_cast<std::size_t>(i)];
-  BallState s;
-  s.position = position_at(i, t);
-  s.velocity = velocity_at(i, t);
-  s.spin = spin_at(i, t);
-  s.state = (t >= tr.t_end && tr.state == MotionState::moving) ? MotionState::stationary : tr.state;
-  return s;
-}
-
-void Engine::move_to(std::int32_t i, double t) {
-  Trajectory& tr = traj_[static_cast<std::size_t>(i)];
-  if (t == tr.t0) return;
-  const Vec2 p = position_at(i, t);
-  const Vec2 v = velocity_at(i, t);
-  const Vec3 w = spin_at(i, t);
-  tr.p0 = p;
-  tr.v0 = v;
-  tr.w0 = w;
-  tr.t0 = t;
-}
-
-BallState Engine::ball(std::size_t i) const {
-  return state_at(static_cast<std::int32_t>(i), now_);
-}
+// The state of the balls
 
 std::vector<BallState> Engine::balls() const {
   std::vector<BallState> out;
@@ -354,8 +174,6 @@ std::vector<BallState> Engine::balls() const {
   for (std::size_t i = 0; i < traj_.size(); ++i) out.push_back(ball(i));
   return out;
 }
-
-bool Engine::at_rest() const { return moving_ == 0; }
 
 // ---------------------------------------------------------------------------
 // Prediction
@@ -390,8 +208,8 @@ Engine::Kinematics Engine::kinematics(std::int32_t i) const {
   const Trajectory& A = traj_[static_cast<std::size_t>(i)];
   const double t = origin_;
   Kinematics k;
-  k.p = position_at(i, t);
-  k.v = velocity_at(i, t);
+  k.p = position_at(A, t);
+  k.v = velocity_at(A, t);
   k.a = t < A.t_end ? A.acc : Vec2{};
   k.t_end = A.t_end;
   k.radius = scenario_.balls[static_cast<std::size_t>(i)].radius;
@@ -591,8 +409,8 @@ void Engine::predict_cell(std::int32_t i, Prediction& best) const {
   if (!translating(A.state)) return;
   const double t = origin_;
   const double window = std::max(0.0, A.t_end - t);
-  const Vec2 p = position_at(i, t);
-  const Vec2 v = velocity_at(i, t);
+  const Vec2 p = position_at(A, t);
+  const Vec2 v = velocity_at(A, t);
   const Vec2 a = t < A.t_end ? A.acc : Vec2{};
   const std::int32_t cell = grid_.cell_of(i);
   const std::int32_t cx = cell % grid_.nx();
@@ -794,7 +612,7 @@ bool Engine::collide_cluster(std::int32_t i, std::int32_t j, double t) {
     const auto uk = static_cast<std::size_t>(k);
     if (norm(pk - pg) - radius_[uk] - radius_[ug] < kClusterGap &&
         std::find(group.begin(), group.end(), k) == group.end()) {
-      move_to(k, t);
+      move_to(traj_[uk], t);
       group.push_back(k);
     }
   };
@@ -820,16 +638,17 @@ bool Engine::collide_cluster(std::int32_t i, std::int32_t j, double t) {
         }
       }
       std::sort(near.begin(), near.end());
-      for (std::int32_t k : near) join(ug, pg, k, position_at(k, t));
+      for (std::int32_t k : near) {
+        join(ug, pg, k, position_at(traj_[static_cast<std::size_t>(k)], t));
+      }
     }
   } else {
     // Every ball's place at t, once (pocketed balls are never gathered).
     std::vector<Vec2>& at = cluster_place_;
     at.clear();
     for (std::int32_t k = 0; k < n; ++k) {
-      at.push_back(traj_[static_cast<std::size_t>(k)].state == MotionState::pocketed
-                       ? Vec2{}
-                       : position_at(k, t));
+      const Trajectory& tk = traj_[static_cast<std::size_t>(k)];
+      at.push_back(tk.state == MotionState::pocketed ? Vec2{} : position_at(tk, t));
     }
     for (std::size_t g = 0; g < group.size(); ++g) {
       const auto ug = static_cast<std::size_t>(group[g]);
@@ -1061,8 +880,8 @@ bool Engine::step(double limit) {
   switch (p.kind) {
     case EventKind::ball: {
       const std::int32_t j = p.other;
-      move_to(i, t);
-      move_to(j, t);
+      move_to(traj_[ui], t);
+      move_to(traj_[static_cast<std::size_t>(j)], t);
       if (scenario_.physics.ball_clusters && collide_cluster(i, j, t)) return true;
       collide_balls(i, j);
       ++counter_[ui];
@@ -1079,46 +898,19 @@ bool Engine::step(double limit) {
       return true;
     }
     case EventKind::wall:
-      move_to(i, t);
+      move_to(traj_[ui], t);
       collide_wall(i, p.other);
       ev.type = EventType::ball_cushion;
       ev.wall = p.other;
       break;
-    case EventKind::stop: {
-      // The phase ends exactly where its closed-form motion ends.
-      Trajectory& tr = traj_[ui];
-      const MotionState from = tr.state;
-      Vec2 v = velocity_at(i, tr.t_end);
-      Vec3 w = spin_at(i, tr.t_end);
-      tr.p0 = position_at(i, tr.t_end);
-      tr.t0 = t;
-      const double r = radius_[ui];
-      switch (from) {
-        case MotionState::sliding:  // the slip has stopped: roll exactly
-          w.x = -v.y / r;
-          w.y = v.x / r;
-          break;
-        case MotionState::rolling:  // stopped; maybe still spinning
-          v = {};
-          w.x = 0.0;
-          w.y = 0.0;
-          break;
-        case MotionState::spinning:
-          w = {};
-          break;
-        default:  // the friction model's stop
-          v = {};
-          break;
-      }
-      set_motion(i, v, w, from == MotionState::sliding);
+    case EventKind::stop:
       ev.type = EventType::state_change;
-      ev.from = from;
-      ev.to = tr.state;
+      ev.from = end_phase(i, t);
+      ev.to = traj_[ui].state;
       break;
-    }
     case EventKind::pocket: {
       Trajectory& tr = traj_[ui];
-      move_to(i, t);
+      move_to(tr, t);
       set_motion(i, {}, {});  // at rest (counted as such) ...
       tr.state = MotionState::pocketed;  // ... and out of play
       update_box(tr);

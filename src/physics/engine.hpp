@@ -16,13 +16,12 @@
 #include "breakshot/simulation.hpp"
 #include "physics/cell_grid.hpp"
 #include "physics/event_queue.hpp"
+#include "physics/motion.hpp"
 
 namespace breakshot::detail {
 
 class Engine {
  public:
-  using Trajectory = Simulation::Trajectory;
-
   // The scenario must be valid (see validate()).
   explicit Engine(const Scenario& scenario);
 
@@ -31,8 +30,8 @@ class Engine {
   StopReason advance_to(double t);
   StopReason advance_to_rest();
   double next_event_time();
-  bool at_rest() const;
-  BallState ball(std::size_t i) const;
+  bool at_rest() const { return moving_ == 0; }
+  BallState ball(std::size_t i) const { return state_at(traj_[i], now_); }
   std::vector<BallState> balls() const;
   std::size_t ball_count() const { return traj_.size(); }
   const std::vector<Event>& events() const { return events_; }
@@ -63,15 +62,9 @@ class Engine {
   void predict_cell(std::int32_t i, Prediction& best) const;
   void predict_pockets(const Kinematics& ki, Prediction& best) const;
   bool step(double limit);
-  void move_to(std::int32_t i, double t);
-  BallState state_at(std::int32_t i, double t) const;
-  Vec2 position_at(std::int32_t i, double t) const;
-  Vec2 velocity_at(std::int32_t i, double t) const;
-  Vec2 acceleration_for(Vec2 v) const;
   void set_velocity(std::int32_t i, Vec2 v);
   void set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls = false);
-  Vec3 spin_at(std::int32_t i, double t) const;
-  static void update_box(Trajectory& tr);
+  MotionState end_phase(std::int32_t i, double t);
   double pair_restitution(std::int32_t i, std::int32_t j) const;
   double outgoing_speed(double closing, double restitution) const;
   bool pressed(double out, double acc_n, double window) const;
@@ -119,5 +112,22 @@ class Engine {
   std::vector<double> pair_values_;
   CellGrid grid_;  // used when there are many balls
 };
+
+// The motion laws are inline (motion.hpp): the responses call them for
+// every impact.
+// A new motion for ball i, keeping count of the balls in motion.
+inline void Engine::set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls) {
+  const auto ui = static_cast<std::size_t>(i);
+  Trajectory& tr = traj_[ui];
+  const bool was_active = !resting(tr.state);
+  start_motion(tr, v, w, rolls, scenario_.physics, radius_[ui]);
+  const bool active = !resting(tr.state);
+  if (active && !was_active) ++moving_;
+  if (!active && was_active) --moving_;
+}
+
+inline void Engine::set_velocity(std::int32_t i, Vec2 v) {
+  set_motion(i, v, traj_[static_cast<std::size_t>(i)].w0);
+}
 
 }  // namespace breakshot::detail
