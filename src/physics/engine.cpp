@@ -1,14 +1,13 @@
 // The event loop: predict each ball's earliest event, pop the earliest of
 // all, re-check it, advance only the balls involved, resolve, re-predict.
 // docs/architecture.md follows one scenario through this file.
-#include "physics/engine.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "breakshot/pool.hpp"
-#include "breakshot/roots.hpp"
+#include "physics/engine.hpp"
+#include "physics/prediction.hpp"
 
 namespace breakshot::detail {
 
@@ -18,12 +17,6 @@ namespace {
 // set-up for up to this many balls (any pool game); larger scenes grow it
 // when a cluster first needs it.
 constexpr std::size_t kClusterReserveBalls = 64;
-
-// A wall contact counts if the foot of the ball's centre on the wall's
-// line lies on the segment, with this much slack (as a fraction of the
-// segment's length) so that a ball arriving exactly at the junction of
-// two walls is caught by one of them.
-constexpr double kSegmentSlack = 1e-9;
 
 }  // namespace
 
@@ -36,9 +29,6 @@ Engine::Engine(const Scenario& scenario) : scenario_(scenario) {
   radius_.resize(n);
   for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
   ideal_ = scenario_.physics.model == Model::ideal;
-  // Corner walls exist exactly where a polygon has a reflex vertex.
-  convex_ = std::none_of(scenario_.table.walls.begin(), scenario_.table.walls.end(),
-                         [](const Wall& w) { return w.kind != WallKind::segment; });
   counter_.assign(n, 0);
   // Room for the events of a typical shot, so that simulating one
   // allocates nothing after set-up (a break has about 100 events).
@@ -71,46 +61,7 @@ Engine::Engine(const Scenario& scenario) : scenario_(scenario) {
     set_motion(static_cast<std::int32_t>(i), scenario_.start[i].velocity, scenario_.start[i].spin);
   }
 
-  // Boxes around the walls, to skip the ones a ball's path never nears.
-  for (const Wall& w : scenario_.table.walls) {
-    Box b;
-    if (w.kind == WallKind::segment) {
-      b.lo = {std::min(w.a.x, w.b.x), std::min(w.a.y, w.b.y)};
-      b.hi = {std::max(w.a.x, w.b.x), std::max(w.a.y, w.b.y)};
-    } else {
-      const double rad = w.kind == WallKind::arc ? w.radius : 0.0;
-      b.lo = w.a - Vec2{rad, rad};
-      b.hi = w.a + Vec2{rad, rad};
-    }
-    const double margin = 1e-9 * (1.0 + std::abs(b.lo.x) + std::abs(b.hi.x) + std::abs(b.lo.y) +
-                                  std::abs(b.hi.y));
-    b.lo -= Vec2{margin, margin};
-    b.hi += Vec2{margin, margin};
-    wall_box_.push_back(b);
-  }
-  // Runs of consecutive walls (tables list them around the boundary, so
-  // a run is a pocket's jaw pieces or a stretch of a polygon) under one
-  // box: a ball far from a run skips all its walls with one test.
-  Box all{{kInf, kInf}, {-kInf, -kInf}};
-  for (const Box& b : wall_box_) {
-    all.lo = {std::min(all.lo.x, b.lo.x), std::min(all.lo.y, b.lo.y)};
-    all.hi = {std::max(all.hi.x, b.hi.x), std::max(all.hi.y, b.hi.y)};
-  }
-  const double run_size = norm(all.hi - all.lo) / 16.0;
-  for (std::size_t w = 0; w < wall_box_.size(); ++w) {
-    const Box& b = wall_box_[w];
-    if (!wall_runs_.empty()) {
-      WallRun& run = wall_runs_.back();
-      const Box merged{{std::min(run.box.lo.x, b.lo.x), std::min(run.box.lo.y, b.lo.y)},
-                       {std::max(run.box.hi.x, b.hi.x), std::max(run.box.hi.y, b.hi.y)}};
-      if (norm(merged.hi - merged.lo) <= run_size) {
-        run.box = merged;
-        run.end = static_cast<std::uint32_t>(w + 1);
-        continue;
-      }
-    }
-    wall_runs_.push_back({b, static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(w + 1)});
-  }
+  set_up_walls();
 
   // Pair restitutions, sorted for binary search at collision time.
   std::vector<std::pair<std::uint64_t, double>> pairs;
@@ -173,338 +124,6 @@ std::vector<BallState> Engine::balls() const {
   out.reserve(traj_.size());
   for (std::size_t i = 0; i < traj_.size(); ++i) out.push_back(ball(i));
   return out;
-}
-
-// ---------------------------------------------------------------------------
-// Prediction
-
-namespace {
-
-// Among a ball's candidate events at the same time the order is fixed by
-// kind (ball, wall, stop, cell) and then by index, so the choice never
-// depends on the order in which candidates were examined (cells list
-// balls in arbitrary order).
-template <class P, class K>
-void consider(P& best, double t, K kind, std::int32_t other, std::uint64_t counter) {
-  if (best.kind == K::none || t < best.time ||
-      (t == best.time && (kind < best.kind || (kind == best.kind && other < best.other)))) {
-    best = {t, kind, other, counter};
-  }
-}
-
-// The part of a window worth searching: a contact later than the best
-// candidate so far can never be taken, so the search stops a little past
-// it (the slack covers the rounding of t + tau; anything found beyond the
-// best loses in `consider`).
-template <class P>
-double within_best(const P& best, double t, double window) {
-  const double left = best.time - t;
-  return std::min(window, left + left * 1e-12 + best.time * 1e-15);
-}
-
-}  // namespace
-
-Engine::Kinematics Engine::kinematics(std::int32_t i) const {
-  const Trajectory& A = traj_[static_cast<std::size_t>(i)];
-  const double t = origin_;
-  Kinematics k;
-  k.p = position_at(A, t);
-  k.v = velocity_at(A, t);
-  k.a = t < A.t_end ? A.acc : Vec2{};
-  k.t_end = A.t_end;
-  k.radius = scenario_.balls[static_cast<std::size_t>(i)].radius;
-  k.still = !translating(A.state);
-  k.box_lo = A.box_lo;
-  k.box_hi = A.box_hi;
-  return k;
-}
-
-// Inlined into the neighbour loops: it is most of the cost of an event.
-[[gnu::always_inline]] inline void Engine::predict_ball_pair(const Kinematics& ki,
-                                                                  std::int32_t j,
-                                                                  Prediction& best) const {
-  const Trajectory& B = traj_[static_cast<std::size_t>(j)];
-  if (ideal_) {
-    // No ball ever accelerates: the quadratic case, written out because
-    // this loop is most of the cost of an event.
-    const double t = origin_;
-    const double dt = t - B.t0;
-    const Vec2 dp = B.p0 + B.v0 * dt - ki.p;
-    const Vec2 dv = B.v0 - ki.v;
-    const double b = dot(dp, dv);
-    if (b >= 0.0) return;  // not approaching
-    const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
-    const double c = norm2(dp) - sigma * sigma;
-    // The root c / (-b + sqrt(b^2 - a c)) is at least c / (-2 b): skip
-    // the square root when even that is later than the best so far.
-    if (c > 0.0 && c > (best.time - t) * (-2.0 * b)) return;
-    // first_contact_quadratic, inlined.
-    double tau = 0.0;
-    if (c > 0.0) {
-      const double disc = b * b - norm2(dv) * c;
-      if (disc < 0.0) return;
-      tau = c / (-b + std::sqrt(disc));
-    }
-    consider(best, t + tau, EventKind::ball, j, counter_[static_cast<std::size_t>(j)]);
-    return;
-  }
-  predict_accelerating_pair(ki, j, best);
-}
-
-void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
-                                           Prediction& best) const {
-  const Trajectory& B = traj_[static_cast<std::size_t>(j)];
-  if (B.state == MotionState::pocketed) return;
-  const bool b_still = !translating(B.state);
-  if (ki.still && b_still) return;
-  const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
-  if (B.box_lo.x - ki.box_hi.x > sigma || ki.box_lo.x - B.box_hi.x > sigma ||
-      B.box_lo.y - ki.box_hi.y > sigma || ki.box_lo.y - B.box_hi.y > sigma) {
-    return;  // their paths never come within reach
-  }
-  const double t = origin_;
-  // B's kinematics at t, inline (this is the innermost loop).
-  const double dt = std::min(t, B.t_end) - B.t0;
-  const Vec2 pb = B.p0 + B.v0 * dt + B.acc * (0.5 * dt * dt);
-  const bool b_moves = t < B.t_end;
-  const Vec2 dp = pb - ki.p;
-  const Vec2 dv = (b_moves ? B.v0 + B.acc * dt : Vec2{}) - ki.v;
-  const Vec2 da = (b_moves ? B.acc : Vec2{}) - ki.a;
-  const double dist2 = norm2(dp);
-  double tau = kInf;
-  if (da.x == 0.0 && da.y == 0.0) {
-    const double b = dot(dp, dv);
-    if (b >= 0.0) return;  // moving apart or not at all: never closer
-    tau = first_contact_quadratic(dist2 - sigma * sigma, b, norm2(dv));
-    if (!(tau <= std::min(ki.t_end, B.t_end) - t)) return;
-  } else {
-    const double window =
-        within_best(best, t, std::max(0.0, std::min(ki.t_end, B.t_end) - t));
-    // Cheap rejection: the gap can close by at most |dv| w + |da| w^2 / 2.
-    const double gap = std::sqrt(dist2) - sigma;
-    const double w = window;
-    if (gap > 0.0 && w < kInf && norm(dv) * w + 0.5 * norm(da) * w * w < gap) return;
-    // |dp + dv s + da s^2 / 2|^2 - sigma^2 as a quartic in s.
-    const double c[5] = {dist2 - sigma * sigma, 2.0 * dot(dp, dv), norm2(dv) + dot(dp, da),
-                         dot(dv, da), 0.25 * norm2(da)};
-    tau = first_contact(c, 4, window);
-    if (!(tau < kInf)) return;
-  }
-  consider(best, t + tau, EventKind::ball, j, counter_[static_cast<std::size_t>(j)]);
-}
-
-void Engine::predict_walls(const Kinematics& ki, Prediction& best) const {
-  if (ki.still) return;
-  const double t = origin_;
-  const double r = ki.radius;
-  for (const WallRun& run : wall_runs_) {
-    const Box& rb = run.box;
-    if (rb.lo.x - ki.box_hi.x > r || ki.box_lo.x - rb.hi.x > r || rb.lo.y - ki.box_hi.y > r ||
-        ki.box_lo.y - rb.hi.y > r) {
-      continue;  // the ball's path never comes within reach of these walls
-    }
-    for (std::size_t w = run.begin; w < run.end; ++w) {
-      predict_wall(ki, w, within_best(best, t, std::max(0.0, ki.t_end - t)), best);
-    }
-  }
-}
-
-void Engine::predict_wall(const Kinematics& ki, std::size_t w, double window,
-                              Prediction& best) const {
-  const double t = origin_;
-  const Vec2 p = ki.p;
-  const Vec2 v = ki.v;
-  const Vec2 a = ki.a;
-  const double r = ki.radius;
-  const Wall& wall = scenario_.table.walls[w];
-  const Box& wb = wall_box_[w];
-  if (wb.lo.x - ki.box_hi.x > r || ki.box_lo.x - wb.hi.x > r || wb.lo.y - ki.box_hi.y > r ||
-      ki.box_lo.y - wb.hi.y > r) {
-    return;  // the ball's path never comes within reach of this wall
-  }
-  double tau = kInf;
-  if (wall.kind == WallKind::segment) {
-    const Vec2 n = wall.normal;
-    const double c1 = dot(n, v);
-    const double c2 = 0.5 * dot(n, a);
-    if (c2 == 0.0 && c1 >= 0.0) return;  // moving away or along
-    const double c0 = dot(n, p - wall.a) - r;
-    if (c2 == 0.0) {
-      tau = c0 <= 0.0 ? 0.0 : -c0 / c1;
-    } else {
-      const double c[3] = {c0, c1, c2};
-      tau = first_contact(c, 2, window);
-    }
-    if (!(tau <= window)) return;
-    // Is the contact on the segment itself, not on its line's extension?
-    // In a convex table the earliest crossing of any wall's line always
-    // is, and the later ones never win, so there is nothing to check.
-    if (convex_) {
-      consider(best, t + tau, EventKind::wall, static_cast<std::int32_t>(w), 0);
-      return;
-    }
-    const Vec2 q = p + v * tau + a * (0.5 * tau * tau);
-    const Vec2 ab = wall.b - wall.a;
-    const double s = dot(q - wall.a, ab) / norm2(ab);
-    if (s < -kSegmentSlack || s > 1.0 + kSegmentSlack) return;
-  } else {
-    // A corner is a point; an arc is a circle of its radius, hit from
-    // outside. Either way: the centre's distance to wall.a reaches
-    // r (+ the arc's radius).
-    const double reach = r + (wall.kind == WallKind::arc ? wall.radius : 0.0);
-    const Vec2 d = p - wall.a;
-    if (a.x == 0.0 && a.y == 0.0) {
-      const double b = dot(d, v);
-      if (b >= 0.0) return;
-      tau = first_contact_quadratic(norm2(d) - reach * reach, b, norm2(v));
-    } else {
-      const double c[5] = {norm2(d) - reach * reach, 2.0 * dot(d, v), norm2(v) + dot(d, a),
-                           dot(v, a), 0.25 * norm2(a)};
-      tau = first_contact(c, 4, window);
-    }
-    if (!(tau <= window)) return;
-    if (wall.kind == WallKind::arc) {
-      // Only the part of the circle between the directions b and normal
-      // (counter-clockwise) is there.
-      const Vec2 q = p + v * tau + a * (0.5 * tau * tau) - wall.a;
-      const double slack = kSegmentSlack * norm(q);
-      if (cross(wall.b, q) < -slack || cross(q, wall.normal) < -slack) return;
-    }
-  }
-  consider(best, t + tau, EventKind::wall, static_cast<std::int32_t>(w), 0);
-}
-
-// A ball falls into a pocket when its centre comes within the pocket's
-// radius of the pocket's centre (docs/physics.md, "Pockets").
-void Engine::predict_pockets(const Kinematics& ki, Prediction& best) const {
-  if (ki.still) return;
-  const double t = origin_;
-  const double window = within_best(best, t, std::max(0.0, ki.t_end - t));
-  const auto& pockets = scenario_.table.pockets;
-  for (std::size_t k = 0; k < pockets.size(); ++k) {
-    const Vec2 centre = pockets[k].centre;
-    const double pr = pockets[k].radius;
-    if (centre.x - pr > ki.box_hi.x || ki.box_lo.x > centre.x + pr ||
-        centre.y - pr > ki.box_hi.y || ki.box_lo.y > centre.y + pr) {
-      continue;
-    }
-    const Vec2 d = ki.p - centre;
-    const double rr = pockets[k].radius * pockets[k].radius;
-    double tau = kInf;
-    if (ki.a.x == 0.0 && ki.a.y == 0.0) {
-      const double b = dot(d, ki.v);
-      if (b >= 0.0) continue;
-      tau = first_contact_quadratic(norm2(d) - rr, b, norm2(ki.v));
-    } else {
-      const double c[5] = {norm2(d) - rr, 2.0 * dot(d, ki.v), norm2(ki.v) + dot(d, ki.a),
-                           dot(ki.v, ki.a), 0.25 * norm2(ki.a)};
-      tau = first_contact(c, 4, window);
-    }
-    if (tau <= window) consider(best, t + tau, EventKind::pocket, static_cast<std::int32_t>(k), 0);
-  }
-}
-
-void Engine::predict_cell(std::int32_t i, Prediction& best) const {
-  const Trajectory& A = traj_[static_cast<std::size_t>(i)];
-  if (!translating(A.state)) return;
-  const double t = origin_;
-  const double window = std::max(0.0, A.t_end - t);
-  const Vec2 p = position_at(A, t);
-  const Vec2 v = velocity_at(A, t);
-  const Vec2 a = t < A.t_end ? A.acc : Vec2{};
-  const std::int32_t cell = grid_.cell_of(i);
-  const std::int32_t cx = cell % grid_.nx();
-  const std::int32_t cy = cell / grid_.nx();
-  const double size = grid_.cell_size();
-  const double lo[2] = {grid_.origin().x + size * cx, grid_.origin().y + size * cy};
-  const double pos[2] = {p.x, p.y};
-  const double vel[2] = {v.x, v.y};
-  const double acc[2] = {a.x, a.y};
-  const std::int32_t idx[2] = {cx, cy};
-  const std::int32_t count[2] = {grid_.nx(), grid_.ny()};
-  // Direction codes: 0 = +x, 1 = -x, 2 = +y, 3 = -y. Leaving a cell is a
-  // "contact" of the ball's centre with the cell's edge, found with the
-  // same root finder as the collisions.
-  for (int axis = 0; axis < 2; ++axis) {
-    if (acc[axis] == 0.0) {
-      // Straight motion along this axis (always so in the ideal model):
-      // the crossing time is a division.
-      if (vel[axis] > 0.0 && idx[axis] + 1 < count[axis]) {
-        const double tau = std::max(0.0, (lo[axis] + size - pos[axis]) / vel[axis]);
-        if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis, 0);
-      } else if (vel[axis] < 0.0 && idx[axis] > 0) {
-        const double tau = std::max(0.0, (lo[axis] - pos[axis]) / vel[axis]);
-        if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis + 1, 0);
-      }
-      continue;
-    }
-    if (idx[axis] + 1 < count[axis]) {
-      const double c[3] = {lo[axis] + size - pos[axis], -vel[axis], -0.5 * acc[axis]};
-      const double tau = first_contact(c, 2, window);
-      if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis, 0);
-    }
-    if (idx[axis] > 0) {
-      const double c[3] = {pos[axis] - lo[axis], vel[axis], 0.5 * acc[axis]};
-      const double tau = first_contact(c, 2, window);
-      if (tau <= window) consider(best, t + tau, EventKind::cell, 2 * axis + 1, 0);
-    }
-  }
-}
-
-void Engine::predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0,
-                               std::int32_t x1, std::int32_t y0, std::int32_t y1,
-                               Prediction& best) const {
-  x0 = std::max(0, x0);
-  y0 = std::max(0, y0);
-  x1 = std::min(grid_.nx() - 1, x1);
-  y1 = std::min(grid_.ny() - 1, y1);
-  for (std::int32_t y = y0; y <= y1; ++y) {
-    for (std::int32_t x = x0; x <= x1; ++x) {
-      for (std::int32_t j = grid_.first(y * grid_.nx() + x); j >= 0; j = grid_.next(j)) {
-        if (j != i) predict_ball_pair(ki, j, best);
-      }
-    }
-  }
-}
-
-void Engine::predict(std::int32_t i) {
-  const auto ui = static_cast<std::size_t>(i);
-  Prediction best{kInf, EventKind::none, -1, 0};
-  if (traj_[ui].state == MotionState::pocketed) {
-    event_[ui] = best;
-    queue_.set(i, best);
-    return;
-  }
-  const Kinematics ki = kinematics(i);
-
-  // breaks ties by kind and index), but each search stops at the best
-  // candidate so far, so the cheap ones go first.
-  const Trajectory& tr = traj_[ui];
-  if (!resting(tr.state) && tr.t_end < kInf) {
-    consider(best, tr.t_end, EventKind::stop, -1, 0);
-  }
-  if (grid_.used()) {
-    const std::int32_t cell = grid_.cell_of(i);
-    const std::int32_t cx = cell % grid_.nx();
-    const std::int32_t cy = cell / grid_.nx();
-    predict_cells(i, ki, cx - 1, cx + 1, cy - 1, cy + 1, best);
-  } else {
-    const auto n = static_cast<std::int32_t>(traj_.size());
-    for (std::int32_t j = 0; j < n; ++j) {
-      if (j != i) predict_ball_pair(ki, j, best);
-    }
-  }
-  predict_walls(ki, best);
-  if (!scenario_.table.pockets.empty()) predict_pockets(ki, best);
-  event_[ui] = best;
-  finish_prediction(i);
-}
-
-void Engine::finish_prediction(std::int32_t i) {
-  const auto ui = static_cast<std::size_t>(i);
-  Prediction best = event_[ui];
-  if (grid_.used()) predict_cell(i, best);
-  queue_.set(i, best);
 }
 
 // ---------------------------------------------------------------------------

@@ -20,6 +20,8 @@
 
 namespace breakshot::detail {
 
+struct Kinematics;  // prediction.hpp
+
 class Engine {
  public:
   // The scenario must be valid (see validate()).
@@ -41,26 +43,27 @@ class Engine {
   const Trajectory& trajectory(std::size_t i) const { return traj_[i]; }
 
  private:
-  // A ball's motion at the prediction origin, computed once per prediction.
-  struct Kinematics {
-    Vec2 p, v, a;
-    Vec2 box_lo, box_hi;
-    double t_end = 0.0;
-    double radius = 0.0;
-    bool still = true;
-  };
-
+  // --- prediction (predict*.cpp)
+  void set_up_walls();  // predict_walls.cpp
   Kinematics kinematics(std::int32_t i) const;
   void predict(std::int32_t i);
-  void finish_prediction(std::int32_t i);
+  void finish_prediction(std::int32_t i) {
+    // The ball's next event: the earliest predict() found, or leaving its
+    // cell if that comes first.
+    Prediction best = event_[static_cast<std::size_t>(i)];
+    if (grid_.used()) predict_cell_crossing(i, best);
+    queue_.set(i, best);
+  }
+  void predict_partners(std::int32_t i, const Kinematics& ki, Prediction& best) const;
   void predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0, std::int32_t x1,
                      std::int32_t y0, std::int32_t y1, Prediction& best) const;
   void predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
   void predict_accelerating_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
   void predict_walls(const Kinematics& ki, Prediction& best) const;
   void predict_wall(const Kinematics& ki, std::size_t w, double window, Prediction& best) const;
-  void predict_cell(std::int32_t i, Prediction& best) const;
   void predict_pockets(const Kinematics& ki, Prediction& best) const;
+  void predict_cell_crossing(std::int32_t i, Prediction& best) const;
+
   bool step(double limit);
   void set_velocity(std::int32_t i, Vec2 v);
   void set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls = false);
