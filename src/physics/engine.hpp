@@ -68,25 +68,31 @@ class Engine {
   void set_velocity(std::int32_t i, Vec2 v);
   void set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls = false);
   MotionState end_phase(std::int32_t i, double t);
+
+  // --- collision responses (collide_*.cpp)
+  void set_up_pair_restitution();  // collide_balls.cpp
+  void reserve_cluster_work();     // collide_cluster.cpp
   double pair_restitution(std::int32_t i, std::int32_t j) const;
-  double outgoing_speed(double closing, double restitution) const;
-  bool pressed(double out, double acc_n, double window) const;
   void collide_balls(std::int32_t i, std::int32_t j);
   void collide_pool_balls(std::int32_t i, std::int32_t j);
   bool collide_cluster(std::int32_t i, std::int32_t j, double t);
-  void collide_pool_wall(std::int32_t i, std::int32_t w);
+  void gather_cluster(std::int32_t i, std::int32_t j, double t);
   void collide_wall(std::int32_t i, std::int32_t w);
+  void collide_pool_wall(std::int32_t i, std::int32_t w);
 
   Scenario scenario_;
   // Working memory of collide_cluster (reserved when the scenario has
   // ball_clusters, so that an impact allocates nothing).
-  std::vector<std::int32_t> cluster_group_;
-  std::vector<Vec2> cluster_place_;
-  std::vector<std::int32_t> cluster_place_index_;  // candidates of the cells nearby
-  std::int32_t cluster_reach_ = 1;                 // cells searched on each side
-  std::vector<ClusterBody> cluster_bodies_;
-  ClusterScratch cluster_scratch_;
-  ClusterOutcome cluster_out_;
+  struct ClusterWork {
+    std::vector<std::int32_t> group;
+    std::vector<Vec2> place;
+    std::vector<std::int32_t> near;  // candidates of the cells nearby
+    std::int32_t reach = 1;          // cells searched on each side
+    std::vector<ClusterBody> bodies;
+    ClusterScratch scratch;
+    ClusterOutcome out;
+  };
+  ClusterWork cluster_;
   double now_ = 0.0;     // the clock
   double origin_ = 0.0;  // time of the last event: origin of predictions
   std::uint64_t event_count_ = 0;
