@@ -1,6 +1,24 @@
 // The engine behind Simulation: the working state of a run and the event
-// loop (engine.cpp). Simulation (include/breakshot/simulation.hpp) owns one
-// and copies it whole. Not installed.
+// loop. Predict each ball's earliest event, pop the earliest of all,
+// re-check it, advance only the balls involved, resolve, re-predict.
+// docs/architecture.md follows one scenario through it.
+//
+// The concepts live in files of their own, as in DynamO:
+//   engine_setup.cpp           set-up: the constructor, in steps
+//   event_loop.cpp             the loop: step() and the events it takes
+//   event_queue.hpp/.cpp       the indexed heap of the balls' next events
+//   cell_grid.hpp/.cpp         the grid of cells (neighbour list)
+//   motion.hpp/.cpp            the motion laws of each model
+//   prediction.hpp, predict.cpp  each ball's earliest event
+//   predict_balls.hpp/.cpp     ... against the other balls
+//   predict_walls.cpp          ... against the walls
+//   predict_pockets.cpp        ... into a pocket
+//   predict_cell_crossing.cpp  ... out of its cell
+//   response.hpp               rules the collision responses share
+//   collide_balls.cpp          ball-ball responses, pair restitutions
+//   collide_walls.cpp          ball-wall (cushion) responses
+//   collide_cluster.cpp        gathering a cluster and resolving it at once
+// Not installed: the public face is include/breakshot/simulation.hpp.
 #pragma once
 
 #include <cstddef>
@@ -43,8 +61,29 @@ class Engine {
   const Trajectory& trajectory(std::size_t i) const { return traj_[i]; }
 
  private:
+  // --- set-up (engine_setup.cpp, and the files named)
+  void set_up_balls();
+  void reserve_events();
+  void reserve_cluster_work();     // collide_cluster.cpp
+  void set_up_walls();             // predict_walls.cpp
+  void set_up_pair_restitution();  // collide_balls.cpp
+  void set_up_cells();
+  void strike_cue();
+  void predict_all();
+
+  // --- the loop (event_loop.cpp)
+  bool step(double limit);
+  void take_cell_crossing(std::int32_t i, std::int32_t direction, double time);
+  void take_ball_ball(std::int32_t i, std::int32_t j, double t);
+  void take_pocket(std::int32_t i, double t);
+  void finish_event(std::int32_t i, const Event& ev);
+
+  // --- motion (motion.cpp)
+  void set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls = false);
+  void set_velocity(std::int32_t i, Vec2 v);
+  MotionState end_phase(std::int32_t i, double t);
+
   // --- prediction (predict*.cpp)
-  void set_up_walls();  // predict_walls.cpp
   Kinematics kinematics(std::int32_t i) const;
   void predict(std::int32_t i);
   void finish_prediction(std::int32_t i) {
@@ -64,14 +103,7 @@ class Engine {
   void predict_pockets(const Kinematics& ki, Prediction& best) const;
   void predict_cell_crossing(std::int32_t i, Prediction& best) const;
 
-  bool step(double limit);
-  void set_velocity(std::int32_t i, Vec2 v);
-  void set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls = false);
-  MotionState end_phase(std::int32_t i, double t);
-
   // --- collision responses (collide_*.cpp)
-  void set_up_pair_restitution();  // collide_balls.cpp
-  void reserve_cluster_work();     // collide_cluster.cpp
   double pair_restitution(std::int32_t i, std::int32_t j) const;
   void collide_balls(std::int32_t i, std::int32_t j);
   void collide_pool_balls(std::int32_t i, std::int32_t j);
