@@ -55,10 +55,17 @@ class Engine {
   std::vector<BallState> balls() const;
   std::size_t ball_count() const { return traj_.size(); }
   const std::vector<Event>& events() const { return events_; }
+  std::vector<Event>& events() { return events_; }
   std::uint64_t event_count() const { return event_count_; }
   const Scenario& scenario() const { return scenario_; }
   const std::optional<StrikeResult>& cue_result() const { return cue_result_; }
   const Trajectory& trajectory(std::size_t i) const { return traj_[i]; }
+
+  // advance_to_rest() up to time t: takes every event up to t unless the
+  // run to rest ends first. Returns true once that run is over: every
+  // ball at rest, max_events reached, or no event left to come. Then the
+  // events are exactly those advance_to_rest() takes (simulate.cpp).
+  bool rest_by(double t);
 
  private:
   // --- set-up (engine_setup.cpp, and the files named)

@@ -159,6 +159,21 @@ StopReason Engine::advance_to_rest() {
   return limit_hit_ ? StopReason::event_limit : StopReason::reached;
 }
 
+bool Engine::rest_by(double t) {
+  for (;;) {
+    limit_hit_ = false;
+    while (moving_ > 0 && step(t)) {
+    }
+    if (moving_ == 0 || event_count_ >= scenario_.max_events) return true;
+    // Every event up to t is taken; is one still to come? (This takes
+    // stale predictions and cell crossings at the top early, which
+    // changes nothing: see next_event_time.)
+    const double next = next_event_time();
+    if (!(next < kInf)) return true;
+    if (next > t) return false;
+  }
+}
+
 double Engine::next_event_time() {
   // Resolve stale predictions and cell crossings at the top so that the
   // answer is the time of a real event. Doing that early changes nothing:

@@ -2,8 +2,6 @@
 // copyable value that owns the working state of one run.
 #include "breakshot/simulation.hpp"
 
-#include <cstdint>
-
 #include "physics/engine.hpp"
 
 namespace breakshot {
@@ -44,45 +42,6 @@ const std::optional<StrikeResult>& Simulation::cue_result() const {
 }
 const Simulation::Trajectory& Simulation::trajectory(std::size_t i) const {
   return engine_->trajectory(i);
-}
-
-RunResult simulate(const Scenario& scenario) {
-  RunResult result;
-  Simulation sim(scenario);
-  double end = scenario.until.time;
-  if (scenario.until.rest) {
-    // Learn when the run ends so that samples can include the end.
-    if (scenario.sample_dt) {
-      Simulation probe = sim;
-      probe.advance_to_rest();
-      end = probe.time();
-    }
-  }
-  bool complete = true;
-  if (scenario.sample_dt) {
-    const double dt = *scenario.sample_dt;
-    for (std::uint64_t k = 0;; ++k) {
-      double t = static_cast<double>(k) * dt;
-      const bool last = t >= end;
-      if (last) t = end;
-      if (sim.advance_to(t) == StopReason::event_limit) {
-        complete = false;
-        break;
-      }
-      result.samples.push_back({t, sim.balls()});
-      if (last) break;
-    }
-  }
-  if (complete) {
-    const StopReason r = scenario.until.rest ? sim.advance_to_rest() : sim.advance_to(end);
-    complete = r == StopReason::reached;
-  }
-  result.complete = complete;
-  result.cue = sim.cue_result();
-  result.events = sim.events();
-  result.final_time = sim.time();
-  result.final_balls = sim.balls();
-  return result;
 }
 
 }  // namespace breakshot
