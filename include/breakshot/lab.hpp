@@ -18,9 +18,18 @@ Vec2 momentum(const BallSpec& spec, const BallState& state);
 
 /// A dense record of a run for plotting: the state of every ball at the
 /// time of every event (just after it) and at `points` evenly spaced
-/// times from 0 to the end, merged in time order. It runs its own copy
-/// of the simulation and never changes the events.
+/// times from 0 to the end, merged in time order. It runs the scenario
+/// once, on its own, and never changes the events.
 std::vector<Sample> trace(const Scenario& scenario, std::size_t points = 2000,
+                          std::size_t max_frames = 200000);
+
+/// simulate() and trace() of one scenario from a single run of it:
+/// `result` is what simulate() returns, `frames` what trace() returns.
+struct TracedRun {
+  RunResult result;
+  std::vector<Sample> frames;
+};
+TracedRun simulate_traced(const Scenario& scenario, std::size_t points = 2000,
                           std::size_t max_frames = 200000);
 
 }  // namespace breakshot

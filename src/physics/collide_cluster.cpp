@@ -171,6 +171,7 @@ bool Engine::collide_cluster(std::int32_t i, std::int32_t j, double t) {
     ++event_count_;
   }
   for (std::int32_t k : group) {
+    note_change(k, t);
     predict(k);
     queue_.fix(k);
   }

@@ -18,6 +18,7 @@
 //   collide_balls.cpp          ball-ball responses, pair restitutions
 //   collide_walls.cpp          ball-wall (cushion) responses
 //   collide_cluster.cpp        gathering a cluster and resolving it at once
+//   run_record.hpp/.cpp        recording a run to read its states afterwards
 // Not installed: the public face is include/breakshot/simulation.hpp.
 #pragma once
 
@@ -39,6 +40,7 @@
 namespace breakshot::detail {
 
 struct Kinematics;  // prediction.hpp
+struct RunRecord;   // run_record.hpp
 
 class Engine {
  public:
@@ -66,6 +68,12 @@ class Engine {
   // ball at rest, max_events reached, or no event left to come. Then the
   // events are exactly those advance_to_rest() takes (simulate.cpp).
   bool rest_by(double t);
+
+  // From now on, writes every change of a ball's trajectory to `record`
+  // (run_record.hpp); finish_record() notes how the run ended. When not
+  // recording, the cost is one test per event.
+  void start_record(RunRecord& record);
+  void finish_record();
 
  private:
   // --- set-up (engine_setup.cpp, and the files named)
@@ -119,6 +127,13 @@ class Engine {
   void collide_wall(std::int32_t i, std::int32_t w);
   void collide_pool_wall(std::int32_t i, std::int32_t w);
 
+  // --- recording (run_record.cpp)
+  // Ball i's trajectory changed at an event at time t.
+  void note_change(std::int32_t i, double t) {
+    if (record_ != nullptr) record_change(i, t);
+  }
+  void record_change(std::int32_t i, double t);
+
   Scenario scenario_;
   // Working memory of collide_cluster (reserved when the scenario has
   // ball_clusters, so that an impact allocates nothing).
@@ -159,6 +174,7 @@ class Engine {
   std::vector<std::uint64_t> pair_keys_;
   std::vector<double> pair_values_;
   CellGrid grid_;  // used when there are many balls
+  RunRecord* record_ = nullptr;  // where changes go, if recording
 };
 
 // The motion laws are inline (motion.hpp): the responses call them for

@@ -48,6 +48,8 @@ namespace breakshot::detail {
   collide_balls(i, j);
   ++counter_[static_cast<std::size_t>(i)];
   ++counter_[static_cast<std::size_t>(j)];
+  note_change(i, t);
+  note_change(j, t);
   Event ev;
   ev.time = t;
   ev.type = EventType::ball_ball;
@@ -76,6 +78,7 @@ void Engine::take_pocket(std::int32_t i, double t) {
 // ball again.
 [[gnu::always_inline]] inline void Engine::finish_event(std::int32_t i, const Event& ev) {
   ++counter_[static_cast<std::size_t>(i)];
+  note_change(i, ev.time);
   events_.push_back(ev);
   ++event_count_;
   predict(i);

@@ -5,8 +5,11 @@
 #include <utility>
 
 #include "physics/engine.hpp"
+#include "physics/run_record.hpp"
 
 namespace breakshot {
+
+namespace detail {
 
 namespace {
 
@@ -14,15 +17,14 @@ namespace {
 // of its last event, or 0 before any. That is the time advance_to_rest()
 // leaves on the clock of a fresh simulation: it takes events in time
 // order and the clock follows them.
-double rest_time(const detail::Engine& sim) {
+double rest_time(const Engine& sim) {
   return sim.events().empty() ? 0.0 : sim.events().back().time;
 }
 
-}  // namespace
-
-RunResult simulate(const Scenario& scenario) {
+RunResult run(const Scenario& scenario, RunRecord* record) {
   RunResult result;
-  detail::Engine sim(scenario);
+  Engine sim(scenario);
+  if (record != nullptr) sim.start_record(*record);
   // Until rest, the end is known once the run to rest is over.
   bool end_known = !scenario.until.rest;
   double end = scenario.until.time;
@@ -50,6 +52,7 @@ RunResult simulate(const Scenario& scenario) {
     const StopReason r = scenario.until.rest ? sim.advance_to_rest() : sim.advance_to(end);
     complete = r == StopReason::reached;
   }
+  if (record != nullptr) sim.finish_record();
   result.complete = complete;
   result.cue = sim.cue_result();
   result.final_time = sim.time();
@@ -57,5 +60,15 @@ RunResult simulate(const Scenario& scenario) {
   result.events = std::move(sim.events());
   return result;
 }
+
+}  // namespace
+
+RunResult simulate_recorded(const Scenario& scenario, RunRecord& record) {
+  return run(scenario, &record);
+}
+
+}  // namespace detail
+
+RunResult simulate(const Scenario& scenario) { return detail::run(scenario, nullptr); }
 
 }  // namespace breakshot
