@@ -57,7 +57,7 @@ class Engine {
   std::vector<BallState> balls() const;
   std::size_t ball_count() const { return traj_.size(); }
   const std::vector<Event>& events() const { return events_; }
-  std::vector<Event>& events() { return events_; }
+  std::vector<Event>& events() { return events_; }  // simulate() moves them out
   std::uint64_t event_count() const { return event_count_; }
   const Scenario& scenario() const { return scenario_; }
   const std::optional<StrikeResult>& cue_result() const { return cue_result_; }
@@ -93,7 +93,7 @@ class Engine {
   void take_pocket(std::int32_t i, double t);
   void finish_event(std::int32_t i, const Event& ev);
 
-  // --- motion (motion.cpp)
+  // --- motion (set_motion, set_velocity below; end_phase in motion.cpp)
   void set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls = false);
   void set_velocity(std::int32_t i, Vec2 v);
   MotionState end_phase(std::int32_t i, double t);
@@ -174,12 +174,14 @@ class Engine {
   std::vector<std::uint64_t> pair_keys_;
   std::vector<double> pair_values_;
   CellGrid grid_;  // used when there are many balls
-  RunRecord* record_ = nullptr;  // where changes go, if recording
+  // Where changes go while recording (simulate_recorded); never set in
+  // the engine of a Simulation, so copies do not share it.
+  RunRecord* record_ = nullptr;
 };
 
-// The motion laws are inline (motion.hpp): the responses call them for
-// every impact.
-// A new motion for ball i, keeping count of the balls in motion.
+// A new motion for ball i, keeping count of the balls in motion. Inline,
+// as the motion laws (motion.hpp) are: the responses call it at every
+// impact.
 inline void Engine::set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls) {
   const auto ui = static_cast<std::size_t>(i);
   Trajectory& tr = traj_[ui];
