@@ -22,7 +22,7 @@ set(BREAKSHOT_LAYER_physics_HEADERS
   version)
 set(BREAKSHOT_LAYER_game_HEADERS game match noise player rack record session)
 set(BREAKSHOT_LAYER_ai_HEADERS ai players)
-set(BREAKSHOT_LAYER_io_HEADERS scenario_io record_io match_io)
+set(BREAKSHOT_LAYER_io_HEADERS scenario_io record_io match_io plot)
 # Headers of the programs on top (src/web is the server of `breakshot
 # serve`) and the umbrella header; no layer may include them.
 set(BREAKSHOT_TOP_HEADERS serve breakshot)

@@ -5,16 +5,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "breakshot/lab.hpp"
+#include "breakshot/plot.hpp"
+#include "breakshot/rack.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
@@ -267,6 +272,143 @@ TEST(Lab, TraceToRestEndsWhenEverythingStops) {
   EXPECT_EQ(frames.back().time, rest);
   for (const BallState& b : frames.back().balls) {
     EXPECT_EQ(b.velocity, Vec2{});
+  }
+}
+
+// trace() and simulate_traced() run the shot once and read the frames
+// from a record of it. The frames are exactly those of the way trace()
+// used to work: a run to the end for the end time and the event times,
+// then a second run advanced through the frame times.
+std::vector<Sample> trace_in_two_runs(const Scenario& scenario, std::size_t points,
+                                      std::size_t max_frames) {
+  const Simulation start(scenario);
+  Simulation probe = start;
+  if (scenario.until.rest) {
+    probe.advance_to_rest();
+  } else {
+    probe.advance_to(scenario.until.time);
+  }
+  const double end = probe.time();
+  std::vector<double> event_times;
+  for (const Event& e : probe.events()) {
+    if (event_times.empty() || e.time != event_times.back()) event_times.push_back(e.time);
+  }
+  std::size_t budget = std::max<std::size_t>(max_frames, 2);
+  const std::size_t n_balls = std::max<std::size_t>(start.ball_count(), 1);
+  budget = std::min(budget, std::max<std::size_t>((std::size_t{1} << 22) / n_balls, 2));
+  const std::size_t grid_points = std::min(std::max<std::size_t>(points, 2), budget);
+  std::vector<double> times;
+  for (std::size_t k = 0; k + 1 < grid_points; ++k) {
+    times.push_back(end * static_cast<double>(k) / static_cast<double>(grid_points - 1));
+  }
+  times.push_back(end);
+  const std::size_t event_budget = budget - grid_points;
+  if (event_times.size() <= event_budget) {
+    times.insert(times.end(), event_times.begin(), event_times.end());
+  } else if (event_budget == 1) {
+    times.push_back(event_times.back());
+  } else if (event_budget > 1) {
+    const std::size_t n = event_times.size();
+    for (std::size_t k = 0; k < event_budget; ++k) {
+      times.push_back(event_times[k * (n - 1) / (event_budget - 1)]);
+    }
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  std::vector<Sample> frames;
+  Simulation sim = start;
+  for (double t : times) {
+    const StopReason reason = sim.advance_to(t);
+    Sample f{sim.time(), sim.balls()};
+    if (!frames.empty() && frames.back().time >= f.time) {
+      frames.back() = std::move(f);
+    } else {
+      frames.push_back(std::move(f));
+    }
+    if (reason == StopReason::event_limit) break;
+  }
+  return frames;
+}
+
+void expect_same_states(const std::vector<BallState>& a, const std::vector<BallState>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].position, b[i].position) << "ball " << i;
+    EXPECT_EQ(a[i].velocity, b[i].velocity) << "ball " << i;
+    EXPECT_EQ(a[i].spin, b[i].spin) << "ball " << i;
+    EXPECT_EQ(a[i].state, b[i].state) << "ball " << i;
+  }
+}
+
+TEST(Lab, OneRunGivesTheResultAndTheFramesOfSeparateRuns) {
+  std::vector<Scenario> scenarios = {two_ball_collision(), box_of_three(1.0), box_of_three(0.3)};
+  Scenario friction = box_of_three(0.8);
+  friction.physics.model = Model::friction;
+  friction.physics.deceleration = 0.2;
+  friction.until.rest = true;
+  scenarios.push_back(friction);
+  scenarios.push_back(make_break_scenario("eight_ball", "9ft", 1, 7.5));
+  Scenario spinning = make_break_scenario("nine_ball", "9ft", 3, 6.0);
+  spinning.physics.spinning_friction = 0.0;  // balls may spin forever
+  scenarios.push_back(spinning);
+  // A gas of 60 balls: the grid of cells, and cell crossings between
+  // events.
+  Scenario gas;
+  gas.physics.model = Model::ideal;
+  gas.table = make_rectangle({0.0, 0.0}, {1.0, 1.0});
+  for (int k = 0; k < 60; ++k) {
+    gas.balls.push_back(BallSpec{"g" + std::to_string(k), 0.02, 0.1, 1.0});
+    gas.start.push_back(moving({0.06 + 0.125 * (k % 8), 0.06 + 0.125 * (k / 8)},
+                               {std::cos(1.3 * k), std::sin(1.7 * k)}));
+  }
+  gas.until.rest = false;
+  gas.until.time = 2.0;
+  scenarios.push_back(gas);
+  // A Newton's cradle: collisions at one instant, so that max_events can
+  // stop the run between two events at the same time.
+  Scenario cradle;
+  cradle.physics.model = Model::ideal;
+  cradle.table = make_rectangle({0.0, 0.0}, {2.0, 0.2});
+  cradle.balls.push_back(BallSpec{"s", 0.02, 0.1, 1.0});
+  cradle.start.push_back(moving({0.3, 0.1}, {1.0, 0.0}));
+  for (int k = 0; k < 5; ++k) {
+    cradle.balls.push_back(BallSpec{"r" + std::to_string(k), 0.02, 0.1, 1.0});
+    cradle.start.push_back(moving({0.8 + 0.04 * k, 0.1}, {0.0, 0.0}));
+  }
+  cradle.until.rest = false;
+  cradle.until.time = 1.0;
+  scenarios.push_back(cradle);
+  for (Scenario s : scenarios) {
+    for (std::uint64_t max_events : {std::uint64_t{1}, std::uint64_t{3}, std::uint64_t{9},
+                                     std::uint64_t{100}, std::uint64_t{10000000}}) {
+      for (const std::optional<double> dt : {std::optional<double>{}, std::optional<double>{0.25}}) {
+        s.max_events = max_events;
+        s.sample_dt = dt;
+        for (const auto& [points, max_frames] :
+             {std::pair<std::size_t, std::size_t>{2000, 200000}, {50, 80}, {10, 12}}) {
+          SCOPED_TRACE(testing::Message() << s.balls.size() << " balls, max_events " << max_events
+                                          << ", points " << points << ", max_frames " << max_frames
+                                          << (dt ? ", samples" : ""));
+          const TracedRun run = simulate_traced(s, points, max_frames);
+          const RunResult want = simulate(s);
+          EXPECT_EQ(run.result.complete, want.complete);
+          EXPECT_EQ(run.result.events, want.events);
+          EXPECT_EQ(run.result.final_time, want.final_time);
+          expect_same_states(run.result.final_balls, want.final_balls);
+          ASSERT_EQ(run.result.samples.size(), want.samples.size());
+          for (std::size_t k = 0; k < want.samples.size(); ++k) {
+            EXPECT_EQ(run.result.samples[k].time, want.samples[k].time);
+            expect_same_states(run.result.samples[k].balls, want.samples[k].balls);
+          }
+          const std::vector<Sample> frames = trace_in_two_runs(s, points, max_frames);
+          ASSERT_EQ(run.frames.size(), frames.size());
+          for (std::size_t k = 0; k < frames.size(); ++k) {
+            EXPECT_EQ(run.frames[k].time, frames[k].time) << "frame " << k;
+            expect_same_states(run.frames[k].balls, frames[k].balls);
+          }
+        }
+      }
+    }
   }
 }
 

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "breakshot/lab.hpp"
+#include "breakshot/rack.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 
@@ -278,6 +279,92 @@ TEST(Simulation, CopyRestoresState) {
   sim.advance_to(7.0);
   EXPECT_EQ(sim.events(), events_after);
   for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(sim.ball(i).position, balls_after[i].position);
+}
+
+// simulate() with samples until rest learns the end as it goes, in one
+// run. It gives exactly what two runs give: one to rest to learn the end,
+// then the sampled one (the way simulate() used to work).
+namespace {
+
+RunResult simulate_in_two_runs(const Scenario& scenario) {
+  RunResult result;
+  Simulation sim(scenario);
+  Simulation probe = sim;
+  probe.advance_to_rest();
+  const double end = probe.time();
+  bool complete = true;
+  for (std::uint64_t k = 0;; ++k) {
+    double t = static_cast<double>(k) * *scenario.sample_dt;
+    const bool last = t >= end;
+    if (last) t = end;
+    if (sim.advance_to(t) == StopReason::event_limit) {
+      complete = false;
+      break;
+    }
+    result.samples.push_back({t, sim.balls()});
+    if (last) break;
+  }
+  if (complete) complete = sim.advance_to_rest() == StopReason::reached;
+  result.complete = complete;
+  result.events = sim.events();
+  result.final_time = sim.time();
+  result.final_balls = sim.balls();
+  return result;
+}
+
+void expect_same_balls(const std::vector<BallState>& a, const std::vector<BallState>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].position, b[i].position) << "ball " << i;
+    EXPECT_EQ(a[i].velocity, b[i].velocity) << "ball " << i;
+    EXPECT_EQ(a[i].spin, b[i].spin) << "ball " << i;
+    EXPECT_EQ(a[i].state, b[i].state) << "ball " << i;
+  }
+}
+
+}  // namespace
+
+TEST(Simulate, SamplesUntilRestAreThoseOfTwoRuns) {
+  std::vector<Scenario> scenarios;
+  Scenario friction = box(0, 0, 1.5, 1.0, Model::friction);
+  friction.physics.deceleration = 0.2;
+  friction.physics.ball_ball_restitution = 0.9;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < 10; ++k) {
+    add(friction, spec("b", 0.03, 0.17, 0.8),
+        at(0.1 + 0.13 * k, 0.2 + 0.6 * u(rng), 2 * u(rng) - 1, 2 * u(rng) - 1));
+  }
+  scenarios.push_back(friction);
+  Scenario still = box(0, 0, 1, 1, Model::friction);
+  add(still, spec("a", 0.03, 0.17), at(0.5, 0.5));
+  scenarios.push_back(still);
+  scenarios.push_back(make_break_scenario("eight_ball", "9ft", 2, 8.0));
+  Scenario no_spin_decay = make_break_scenario("nine_ball", "9ft", 4, 6.0);
+  no_spin_decay.physics.spinning_friction = 0.0;  // balls may spin forever
+  scenarios.push_back(no_spin_decay);
+  for (Scenario s : scenarios) {
+    s.until.rest = true;
+    for (double dt : {0.01, 0.3, 2.0, 100.0}) {
+      for (std::uint64_t max_events : {std::uint64_t{3}, std::uint64_t{40}, std::uint64_t{1000000}}) {
+        s.sample_dt = dt;
+        s.max_events = max_events;
+        SCOPED_TRACE(testing::Message() << s.balls.size() << " balls, dt " << dt << ", max_events "
+                                        << max_events);
+        const RunResult want = simulate_in_two_runs(s);
+        const RunResult got = simulate(s);
+        EXPECT_EQ(got.complete, want.complete);
+        EXPECT_EQ(got.events, want.events);
+        EXPECT_EQ(got.final_time, want.final_time);
+        expect_same_balls(got.final_balls, want.final_balls);
+        ASSERT_EQ(got.samples.size(), want.samples.size());
+        for (std::size_t k = 0; k < got.samples.size(); ++k) {
+          EXPECT_EQ(got.samples[k].time, want.samples[k].time) << "sample " << k;
+          expect_same_balls(got.samples[k].balls, want.samples[k].balls);
+        }
+      }
+    }
+  }
 }
 
 // Inelastic collapse: a fast ball into a row of touching balls with very

@@ -35,6 +35,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -45,6 +46,7 @@
 #include "breakshot/match.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
+#include "breakshot/plot.hpp"
 #include "breakshot/record.hpp"
 #include "breakshot/players.hpp"
 #include "breakshot/match_io.hpp"
@@ -145,7 +147,16 @@ int run_simulate(const SimulateOptions& opt) {
   }
   const bs::Scenario& scenario = std::get<bs::Scenario>(parsed);
 
-  const bs::RunResult result = bs::simulate(scenario);
+  // With --plot, one run gives both the result and the plots' frames.
+  bs::RunResult result;
+  std::vector<bs::Sample> frames;
+  if (opt.plot_prefix.empty()) {
+    result = bs::simulate(scenario);
+  } else {
+    bs::TracedRun traced = bs::simulate_traced(scenario);
+    result = std::move(traced.result);
+    frames = std::move(traced.frames);
+  }
   check_finite(result);
   write_output(opt.output, bs::write_result(scenario, result));
   if (!result.complete) {
@@ -154,7 +165,6 @@ int run_simulate(const SimulateOptions& opt) {
   }
 
   if (!opt.plot_prefix.empty()) {
-    const std::vector<bs::Sample> frames = bs::trace(scenario);
     try {
       for (const std::string& path : bs::write_plots(scenario, frames, opt.plot_prefix)) {
         std::cerr << "breakshot: wrote " << path << '\n';

@@ -31,7 +31,8 @@
 #include "breakshot/ai.hpp"
 #include "breakshot/players.hpp"
 
-// io: scenario and result files, game records, match summaries
+// io: scenario and result files, plots, game records, match summaries
 #include "breakshot/match_io.hpp"
+#include "breakshot/plot.hpp"
 #include "breakshot/record_io.hpp"
 #include "breakshot/scenario_io.hpp"

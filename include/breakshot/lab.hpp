@@ -1,7 +1,7 @@
 // The physics lab: energy, momentum and dense traces of a run.
 #pragma once
 
-#include <string>
+#include <cstddef>
 #include <vector>
 
 #include "breakshot/scenario.hpp"
@@ -18,16 +18,18 @@ Vec2 momentum(const BallSpec& spec, const BallState& state);
 
 /// A dense record of a run for plotting: the state of every ball at the
 /// time of every event (just after it) and at `points` evenly spaced
-/// times from 0 to the end, merged in time order. It runs its own copy
-/// of the simulation and never changes the events.
+/// times from 0 to the end, merged in time order. It runs the scenario
+/// once, on its own, and never changes the events.
 std::vector<Sample> trace(const Scenario& scenario, std::size_t points = 2000,
                           std::size_t max_frames = 200000);
 
-/// Writes PREFIX-trajectories.svg, PREFIX-energy.svg and
-/// PREFIX-momentum.svg from a trace. Returns the paths written. Throws
-/// std::runtime_error naming the file if one cannot be written.
-std::vector<std::string> write_plots(const Scenario& scenario,
-                                     const std::vector<Sample>& frames,
-                                     const std::string& prefix);
+/// simulate() and trace() of one scenario from a single run of it:
+/// `result` is what simulate() returns, `frames` what trace() returns.
+struct TracedRun {
+  RunResult result;
+  std::vector<Sample> frames;
+};
+TracedRun simulate_traced(const Scenario& scenario, std::size_t points = 2000,
+                          std::size_t max_frames = 200000);
 
 }  // namespace breakshot

@@ -1,12 +1,13 @@
 // The event-driven simulation.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "breakshot/ball.hpp"
-#include "breakshot/cluster_impact.hpp"
 #include "breakshot/event.hpp"
 #include "breakshot/scenario.hpp"
 
@@ -19,6 +20,10 @@ enum class StopReason : std::uint8_t {
 };
 
 class Simulation;
+
+namespace detail {
+class Engine;
+}  // namespace detail
 
 /// The whole result of a run: every event, the final state and the
 /// samples, if asked for.
@@ -47,8 +52,18 @@ class Simulation {
   /// The scenario must be valid (see validate()).
   explicit Simulation(const Scenario& scenario);
 
+  /// Copying saves the whole state; assigning a copy back restores it
+  /// (and reuses this one's memory).
+  Simulation(const Simulation& other);
+  Simulation& operator=(const Simulation& other);
+  /// Moving is cheap. A moved-from Simulation may only be assigned to or
+  /// destroyed.
+  Simulation(Simulation&& other) noexcept;
+  Simulation& operator=(Simulation&& other) noexcept;
+  ~Simulation();
+
   /// Current clock.
-  double time() const { return now_; }
+  double time() const;
 
   /// Processes every event with time <= t in time order, then moves the
   /// clock to t. Returns event_limit if max_events stopped it first (the
@@ -68,16 +83,16 @@ class Simulation {
   /// State of ball i at the current clock.
   BallState ball(std::size_t i) const;
   std::vector<BallState> balls() const;
-  std::size_t ball_count() const { return traj_.size(); }
+  std::size_t ball_count() const;
 
   /// Every event so far, in order.
-  const std::vector<Event>& events() const { return events_; }
-  std::uint64_t event_count() const { return event_count_; }
+  const std::vector<Event>& events() const;
+  std::uint64_t event_count() const;
 
-  const Scenario& scenario() const { return scenario_; }
+  const Scenario& scenario() const;
 
   /// The cue strike's outcome (set when the scenario has a cue).
-  const std::optional<StrikeResult>& cue_result() const { return cue_result_; }
+  const std::optional<StrikeResult>& cue_result() const;
 
   /// A ball's motion from t0 on: p(t) = p0 + v0 dt + acc dt^2 / 2 with
   /// dt = t - t0, valid until t_end (its next change of state by itself).
@@ -96,116 +111,11 @@ class Simulation {
   };
 
   /// The trajectory a ball follows now (for tools and tests).
-  const Trajectory& trajectory(std::size_t i) const { return traj_[i]; }
+  const Trajectory& trajectory(std::size_t i) const;
 
  private:
-  // A ball's earliest predicted event. Ball-ball predictions remember the
-  // partner's event counter so that one made stale by the partner's own
-  // later event is recognised when it comes up, instead of being searched
-  // for and removed (the DynamO way).
-  // Kinds in the order simultaneous events of one ball are taken.
-  enum class Kind : std::uint8_t { ball, wall, pocket, stop, cell, none };
-  struct Prediction {
-    double time = 0.0;
-    Kind kind = Kind::none;
-    std::int32_t other = -1;          // ball, wall, or cell direction
-    std::uint64_t other_counter = 0;  // partner's counter at prediction
-  };
-
-  // A ball's motion at the prediction origin, computed once per prediction.
-  struct Kinematics {
-    Vec2 p, v, a;
-    Vec2 box_lo, box_hi;
-    double t_end = 0.0;
-    double radius = 0.0;
-    bool still = true;
-  };
-
-  Kinematics kinematics(std::int32_t i) const;
-  void predict(std::int32_t i);
-  void finish_prediction(std::int32_t i);
-  void predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0, std::int32_t x1,
-                     std::int32_t y0, std::int32_t y1, Prediction& best) const;
-  void predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
-  void predict_accelerating_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
-  void predict_walls(const Kinematics& ki, Prediction& best) const;
-  void predict_wall(const Kinematics& ki, std::size_t w, double window, Prediction& best) const;
-  void predict_cell(std::int32_t i, Prediction& best) const;
-  void predict_pockets(const Kinematics& ki, Prediction& best) const;
-  void heap_fix(std::int32_t i);
-  void heap_sift_down(std::size_t pos);
-  bool heap_less(std::int32_t a, std::int32_t b) const;
-  void heap_swap(std::size_t a, std::size_t b);
-  bool step(double limit);
-  void move_to(std::int32_t i, double t);
-  BallState state_at(std::int32_t i, double t) const;
-  Vec2 position_at(std::int32_t i, double t) const;
-  Vec2 velocity_at(std::int32_t i, double t) const;
-  Vec2 acceleration_for(Vec2 v) const;
-  void set_velocity(std::int32_t i, Vec2 v);
-  void set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls = false);
-  Vec3 spin_at(std::int32_t i, double t) const;
-  static void update_box(Trajectory& tr);
-  double pair_restitution(std::int32_t i, std::int32_t j) const;
-  double outgoing_speed(double closing, double restitution) const;
-  bool pressed(double out, double acc_n, double window) const;
-  void collide_balls(std::int32_t i, std::int32_t j);
-  void collide_pool_balls(std::int32_t i, std::int32_t j);
-  bool collide_cluster(std::int32_t i, std::int32_t j, double t);
-  void collide_pool_wall(std::int32_t i, std::int32_t w);
-  void collide_wall(std::int32_t i, std::int32_t w);
-  std::int32_t cell_index(Vec2 p) const;
-  void cell_link(std::int32_t i, std::int32_t cell);
-  void cell_unlink(std::int32_t i);
-
-  Scenario scenario_;
-  // Working memory of collide_cluster (reserved when the scenario has
-  // ball_clusters, so that an impact allocates nothing).
-  std::vector<std::int32_t> cluster_group_;
-  std::vector<Vec2> cluster_place_;
-  std::vector<std::int32_t> cluster_place_index_;  // candidates of the cells nearby
-  std::int32_t cluster_reach_ = 1;                 // cells searched on each side
-  std::vector<ClusterBody> cluster_bodies_;
-  ClusterScratch cluster_scratch_;
-  ClusterOutcome cluster_out_;
-  double now_ = 0.0;     // the clock
-  double origin_ = 0.0;  // time of the last event: origin of predictions
-  std::uint64_t event_count_ = 0;
-  bool limit_hit_ = false;  // set when max_events stopped a step
-  std::size_t moving_ = 0;  // balls not at rest
-  std::vector<Trajectory> traj_;
-  std::vector<double> radius_;  // a copy of each ball's radius, packed
-  bool ideal_ = false;          // no ball ever accelerates
-  bool convex_ = false;         // the table has no corner walls
-  std::vector<std::uint64_t> counter_;  // events each ball took part in
-  std::vector<Prediction> next_;        // each ball's earliest event
-  std::vector<Prediction> event_;       // the same, cell crossings left out
-  std::vector<std::int32_t> heap_;      // ball indices, min-heap on next_
-  std::vector<std::int32_t> heap_pos_;  // where each ball sits in heap_
-  std::vector<Event> events_;
-  std::optional<StrikeResult> cue_result_;
-  struct Box {
-    Vec2 lo, hi;
-  };
-  std::vector<Box> wall_box_;  // bounds of each wall of the table
-  struct WallRun {
-    Box box;  // bounds of walls [begin, end)
-    std::uint32_t begin = 0, end = 0;
-  };
-  std::vector<WallRun> wall_runs_;
-  // Pairs with a restitution of their own: sorted keys a * n + b (a < b).
-  std::vector<std::uint64_t> pair_keys_;
-  std::vector<double> pair_values_;
-  // Uniform grid of cells, used when there are many balls.
-  bool use_cells_ = false;
-  double cell_size_ = 0.0;
-  Vec2 grid_origin_;
-  std::int32_t grid_nx_ = 1;
-  std::int32_t grid_ny_ = 1;
-  std::vector<std::int32_t> cell_head_;  // first ball in each cell, or -1
-  std::vector<std::int32_t> cell_next_;  // next ball in the same cell
-  std::vector<std::int32_t> cell_prev_;
-  std::vector<std::int32_t> ball_cell_;
+  // The working state and the event loop (src/physics/engine.hpp).
+  std::unique_ptr<detail::Engine> engine_;
 };
 
 }  // namespace breakshot

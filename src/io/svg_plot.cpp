@@ -1,4 +1,4 @@
-// SVG plots of a trace (see trace() in src/physics/lab.cpp): the balls'
+// SVG plots of a trace (plot.hpp; trace() in src/physics/lab.cpp): the balls'
 // paths on the table, kinetic energy against time and momentum against
 // time. Plain standalone SVG 1.1 text, written without any library.
 //
@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "breakshot/lab.hpp"
+#include "breakshot/plot.hpp"
 
 namespace breakshot {
 namespace {

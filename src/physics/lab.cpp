@@ -1,5 +1,6 @@
 // The physics lab: energy and momentum of a ball, and dense traces of a
-// run for plotting (the plots themselves are in src/io/svg_plot.cpp).
+// run for plotting (the plots themselves are in src/io/svg_plot.cpp,
+// plot.hpp).
 
 #include <algorithm>
 #include <cstddef>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "breakshot/lab.hpp"
+#include "physics/run_record.hpp"
 
 namespace breakshot {
 
@@ -49,18 +51,16 @@ std::vector<std::size_t> even_indices(std::size_t n, std::size_t count) {
   return out;
 }
 
-}  // namespace
-
 // How the frame times are chosen:
-//  - The end time comes from a first run of a copy of the simulation:
-//    to scenario.until.time, or to rest. If the max_events guard stops
-//    that run, the end is the time of the last event processed.
+//  - The end time is where a run to scenario.until.time, or to rest,
+//    leaves the clock. If the max_events guard stops the run, the end is
+//    the time of the last event processed.
 //  - Grid frames: `points` evenly spaced times from 0 to the end (0 and
 //    the end always included, so points < 2 counts as 2).
-//  - Event frames: every distinct event time of that first run. The
-//    state is read just after the event (advance_to(t) processes every
-//    event with time <= t), so an event at t = 0, such as a cue strike,
-//    shows in the frame at 0.
+//  - Event frames: every distinct event time of the run. The state is
+//    read just after the event (advance_to(t) processes every event with
+//    time <= t), so an event at t = 0, such as a cue strike, shows in the
+//    frame at 0.
 //  - Budget: at most max_frames frames (and at most kMaxBallStates ball
 //    states in all). The grid comes first (it is what the time plots
 //    need); if the distinct event times do not fit in what is left,
@@ -68,36 +68,28 @@ std::vector<std::size_t> even_indices(std::size_t n, std::size_t count) {
 //    the frames stay densest where events are densest. Then not every
 //    event time has a frame.
 //  - Times are merged in order and exact duplicates dropped.
-//  - A second, fresh copy is advanced through the times. The simulation
-//    guarantees that advancing to intermediate times does not change
-//    the events, so both runs see the same events.
-std::vector<Sample> trace(const Scenario& scenario, std::size_t points,
-                          std::size_t max_frames) {
-  const Simulation start(scenario);
-
-  // First run: the end time and the event times.
+//  - The states at those times are read from the record of the run
+//    (run_record.hpp), exactly as a simulation advanced through the
+//    times gives them: the physics runs once.
+std::vector<Sample> frames_of(const Scenario& scenario, const RunResult& result,
+                              const detail::RunRecord& record, std::size_t points,
+                              std::size_t max_frames) {
+  // Where the run leaves the clock: at until.time if it got there; else
+  // (at rest, at max_events, or out of events) at its last event.
+  const bool at_until = !scenario.until.rest && result.complete && scenario.until.time >= 0.0;
+  const double end = at_until               ? scenario.until.time
+                     : result.events.empty() ? 0.0
+                                             : result.events.back().time;
   std::vector<double> event_times;
-  double end = 0.0;
-  {
-    Simulation probe = start;
-    if (scenario.until.rest) {
-      probe.advance_to_rest();
-    } else {
-      probe.advance_to(scenario.until.time);
-    }
-    // Reached: the clock is at until.time or at the time of rest.
-    // event_limit: the clock stays at the last event processed.
-    end = probe.time();
-    event_times.reserve(probe.events().size());
-    for (const Event& e : probe.events()) {
-      if (event_times.empty() || e.time != event_times.back()) {
-        event_times.push_back(e.time);
-      }
+  event_times.reserve(result.events.size());
+  for (const Event& e : result.events) {
+    if (event_times.empty() || e.time != event_times.back()) {
+      event_times.push_back(e.time);
     }
   }
 
   std::size_t budget = std::max<std::size_t>(max_frames, 2);
-  const std::size_t n_balls = std::max<std::size_t>(start.ball_count(), 1);
+  const std::size_t n_balls = std::max<std::size_t>(scenario.balls.size(), 1);
   budget = std::min(budget, std::max<std::size_t>(kMaxBallStates / n_balls, 2));
 
   const std::size_t grid_points =
@@ -124,10 +116,10 @@ std::vector<Sample> trace(const Scenario& scenario, std::size_t points,
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
 
-  // Second run: read the state at every frame time.
+  // The state at every frame time.
   std::vector<Sample> frames;
   frames.reserve(times.size());
-  Simulation sim = start;
+  detail::Replay sim(record);
   for (double t : times) {
     const StopReason reason = sim.advance_to(t);
     Sample s{sim.time(), sim.balls()};
@@ -143,6 +135,22 @@ std::vector<Sample> trace(const Scenario& scenario, std::size_t points,
     }
   }
   return frames;
+}
+
+}  // namespace
+
+TracedRun simulate_traced(const Scenario& scenario, std::size_t points,
+                          std::size_t max_frames) {
+  TracedRun out;
+  detail::RunRecord record;
+  out.result = detail::simulate_recorded(scenario, record);
+  out.frames = frames_of(scenario, out.result, record, points, max_frames);
+  return out;
+}
+
+std::vector<Sample> trace(const Scenario& scenario, std::size_t points,
+                          std::size_t max_frames) {
+  return simulate_traced(scenario, points, max_frames).frames;
 }
 
 }  // namespace breakshot

@@ -1,0 +1,98 @@
+// Set-up of a run: every ball's first trajectory, working memory, the cue
+// strike and the first predictions. The set-up of the walls' boxes, the
+// pair restitutions and the clusters' working memory is in the files of
+// those concepts.
+#include <algorithm>
+#include <cmath>
+
+#include "physics/engine.hpp"
+
+namespace breakshot::detail {
+
+Engine::Engine(const Scenario& scenario) : scenario_(scenario) {
+  set_up_balls();
+  reserve_events();
+  reserve_cluster_work();
+  set_up_walls();
+  set_up_pair_restitution();
+  set_up_cells();
+  strike_cue();
+  predict_all();
+}
+
+// Each ball's trajectory from its state at t = 0.
+void Engine::set_up_balls() {
+  const std::size_t n = scenario_.balls.size();
+  traj_.resize(n);
+  radius_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
+  ideal_ = scenario_.physics.model == Model::ideal;
+  counter_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    Trajectory& tr = traj_[i];
+    tr.t0 = 0.0;
+    tr.p0 = scenario_.start[i].position;
+    tr.w0 = scenario_.start[i].spin;
+    tr.state = MotionState::stationary;
+    tr.t_end = kInf;
+    set_motion(static_cast<std::int32_t>(i), scenario_.start[i].velocity, scenario_.start[i].spin);
+  }
+}
+
+// Room for the events of a typical shot, so that simulating one allocates
+// nothing after set-up (a break has about 100 events).
+void Engine::reserve_events() {
+  const std::size_t n = scenario_.balls.size();
+  events_.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(scenario_.max_events, 64 + 16 * n)));
+}
+
+// With many balls, the grid of cells.
+void Engine::set_up_cells() {
+  const std::size_t n = scenario_.balls.size();
+  if (n < kCellThreshold) return;
+  double max_r = 0.0;
+  for (const BallSpec& b : scenario_.balls) max_r = std::max(max_r, b.radius);
+  if (!grid_.build(scenario_.table.min, scenario_.table.max, n, max_r)) return;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto bi = static_cast<std::int32_t>(i);
+    grid_.link(bi, grid_.index(traj_[i].p0));
+  }
+  // Cluster impacts gather the balls within kClusterGap of a member:
+  // their cells are at most this many away, one more for a ball on a
+  // cell's edge whose crossing falls at the impact's time.
+  cluster_.reach =
+      static_cast<std::int32_t>(std::ceil((2.0 * max_r + kClusterGap) / grid_.cell_size())) + 1;
+}
+
+// The cue strike: the shot's first event, at t = 0. A miscue is reported
+// (cue_result) and not played.
+void Engine::strike_cue() {
+  const std::size_t n = scenario_.balls.size();
+  if (!scenario_.cue || scenario_.cue->ball < 0 ||
+      static_cast<std::size_t>(scenario_.cue->ball) >= n) {
+    return;
+  }
+  const CueSpec& cue = *scenario_.cue;
+  const auto ub = static_cast<std::size_t>(cue.ball);
+  cue_result_ = strike(cue.strike, scenario_.balls[ub].mass, radius_[ub], cue.params);
+  if (cue_result_->miscue) return;
+  set_motion(cue.ball, cue_result_->velocity, cue_result_->spin);
+  Event ev;
+  ev.time = 0.0;
+  ev.type = EventType::cue_strike;
+  ev.ball = cue.ball;
+  events_.push_back(ev);
+  ++event_count_;
+  ++counter_[ub];
+}
+
+// Every ball's earliest event, and the queue in order.
+void Engine::predict_all() {
+  const std::size_t n = scenario_.balls.size();
+  event_.resize(n);
+  queue_.reset(n);
+  for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));
+  queue_.build();
+}
+
+}  // namespace breakshot::detail

@@ -1,0 +1,62 @@
+// Prediction against the other balls, the part inlined where partners are
+// searched (predict.cpp, predict_balls.cpp): a pair of balls, written out
+// for the ideal model, and the choice between every other ball and the
+// cells around the ball's own. The rest is in predict_balls.cpp.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "physics/engine.hpp"
+#include "physics/prediction.hpp"
+
+namespace breakshot::detail {
+
+// Inlined into the neighbour loops: it is most of the cost of an event.
+[[gnu::always_inline]] inline void Engine::predict_ball_pair(const Kinematics& ki,
+                                                              std::int32_t j,
+                                                              Prediction& best) const {
+  const Trajectory& B = traj_[static_cast<std::size_t>(j)];
+  if (ideal_) {
+    // No ball ever accelerates: the quadratic case, written out because
+    // this loop is most of the cost of an event.
+    const double t = origin_;
+    const double dt = t - B.t0;
+    const Vec2 dp = B.p0 + B.v0 * dt - ki.p;
+    const Vec2 dv = B.v0 - ki.v;
+    const double b = dot(dp, dv);
+    if (b >= 0.0) return;  // not approaching
+    const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
+    const double c = norm2(dp) - sigma * sigma;
+    // The root c / (-b + sqrt(b^2 - a c)) is at least c / (-2 b): skip
+    // the square root when even that is later than the best so far.
+    if (c > 0.0 && c > (best.time - t) * (-2.0 * b)) return;
+    // first_contact_quadratic, inlined.
+    double tau = 0.0;
+    if (c > 0.0) {
+      const double disc = b * b - norm2(dv) * c;
+      if (disc < 0.0) return;
+      tau = c / (-b + std::sqrt(disc));
+    }
+    consider(best, t + tau, EventKind::ball, j, counter_[static_cast<std::size_t>(j)]);
+    return;
+  }
+  predict_accelerating_pair(ki, j, best);
+}
+
+// Every other ball, or with the grid those of the 3 x 3 cells around.
+inline void Engine::predict_partners(std::int32_t i, const Kinematics& ki, Prediction& best) const {
+  if (grid_.used()) {
+    const std::int32_t cell = grid_.cell_of(i);
+    const std::int32_t cx = cell % grid_.nx();
+    const std::int32_t cy = cell / grid_.nx();
+    predict_cells(i, ki, cx - 1, cx + 1, cy - 1, cy + 1, best);
+  } else {
+    const auto n = static_cast<std::int32_t>(traj_.size());
+    for (std::int32_t j = 0; j < n; ++j) {
+      if (j != i) predict_ball_pair(ki, j, best);
+    }
+  }
+}
+
+}  // namespace breakshot::detail
