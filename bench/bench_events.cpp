@@ -50,9 +50,9 @@ Scenario ideal_gas(int n, std::uint64_t seed) {
 
 Scenario friction_break() {
   Scenario s;
-  s.physics.model = Model::friction;
-  s.physics.deceleration = 0.2;
-  s.physics.ball_ball_restitution = 0.95;
+  s.physics = default_physics(Model::friction);
+  s.physics.deceleration = 0.2;  // a faster-stopping cloth than the default
+  s.physics.ball_ball_restitution = kPoolBallBallRestitution;
   const double L = 2.54, W = 1.27, R = kPoolBallRadius;
   s.table = make_rectangle({0, 0}, {L, W});
   auto add = [&](const std::string& id, Vec2 p, Vec2 v) {

@@ -5,6 +5,7 @@
 // over the window until the first of them stops, as the simulator builds
 // them. Each benchmark cycles through a fixed set of 4096 cases so that
 // branch prediction cannot learn one input.
+#include "breakshot/ball.hpp"
 #include "breakshot/roots.hpp"
 
 #include <benchmark/benchmark.h>
@@ -18,7 +19,7 @@
 
 namespace {
 
-constexpr double kSigma = 2.0 * 0.028575;
+constexpr double kSigma = 2.0 * breakshot::kPoolBallRadius;
 constexpr std::size_t kCases = 4096;  // a power of two: cycle with a mask
 
 struct Rng {
