@@ -40,6 +40,11 @@ std::string join_fouls(const std::vector<Foul>& fouls) {
   return out;
 }
 
+std::vector<Foul> pool_foul_kinds() {
+  return {Foul::scratch, Foul::no_contact,    Foul::wrong_ball_first,
+          Foul::no_rail, Foul::illegal_break, Foul::behind_head_string};
+}
+
 void DecisionRuling::rerack(int breaker) {
   s.rack_seed = mix_seed(before.rack_seed, static_cast<std::uint64_t>(before.racks));
   GameState fresh = rules.start(s.rack_seed, breaker);

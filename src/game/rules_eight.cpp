@@ -56,10 +56,7 @@ class EightBall final : public Ruleset {
  public:
   int ball_count() const override { return 16; }
 
-  std::vector<Foul> foul_kinds() const override {
-    return {Foul::scratch, Foul::no_contact,    Foul::wrong_ball_first,
-            Foul::no_rail, Foul::illegal_break, Foul::behind_head_string};
-  }
+  std::vector<Foul> foul_kinds() const override { return pool_foul_kinds(); }
 
   std::vector<int> targets(const GameState& s) const override {
     std::vector<int> out;

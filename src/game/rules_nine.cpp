@@ -14,10 +14,9 @@ class NineBall final : public Ruleset {
   int ball_count() const override { return 10; }
 
   std::vector<Foul> foul_kinds() const override {
-    // The pool kinds, listed as 8-ball lists them (illegal_break and
-    // behind_head_string never occur in 9-ball and stay at 0).
-    return {Foul::scratch, Foul::no_contact,    Foul::wrong_ball_first,
-            Foul::no_rail, Foul::illegal_break, Foul::behind_head_string};
+    // As 8-ball lists them: behind_head_string never occurs in 9-ball
+    // and stays at 0.
+    return pool_foul_kinds();
   }
 
   std::vector<int> targets(const GameState& s) const override {

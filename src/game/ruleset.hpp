@@ -95,6 +95,10 @@ class Ruleset {
   virtual void rule_shot(ShotRuling& shot) const = 0;
 };
 
+/// The foul kinds of the games on a pool table, in the order summaries
+/// list them (8-ball and 9-ball both list them all).
+std::vector<Foul> pool_foul_kinds();
+
 std::shared_ptr<const Ruleset> make_eight_ball_ruleset();
 std::shared_ptr<const Ruleset> make_nine_ball_ruleset();
 

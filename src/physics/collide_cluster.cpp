@@ -153,22 +153,13 @@ bool Engine::collide_cluster(std::int32_t i, std::int32_t j, double t) {
   if (dot(traj_[static_cast<std::size_t>(j)].v0 - traj_[static_cast<std::size_t>(i)].v0, d) < 0.0) {
     collide_balls(i, j);
   }
-  Event ev;
-  ev.time = t;
-  ev.type = EventType::ball_ball;
-  ev.ball = std::min(i, j);
-  ev.other = std::max(i, j);
-  events_.push_back(ev);
-  ++event_count_;
+  const Event ev = ball_ball_event(t, i, j);
+  add_event(ev);
   for (const auto& [a, b] : r.touched) {
     const std::int32_t x = group[static_cast<std::size_t>(a)];
     const std::int32_t y = group[static_cast<std::size_t>(b)];
     if (std::min(x, y) == ev.ball && std::max(x, y) == ev.other) continue;
-    Event e2 = ev;
-    e2.ball = std::min(x, y);
-    e2.other = std::max(x, y);
-    events_.push_back(e2);
-    ++event_count_;
+    add_event(ball_ball_event(t, x, y));
   }
   for (std::int32_t k : group) {
     note_change(k, t);

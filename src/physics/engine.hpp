@@ -22,6 +22,7 @@
 // Not installed: the public face is include/breakshot/simulation.hpp.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -126,6 +127,22 @@ class Engine {
   void gather_cluster(std::int32_t i, std::int32_t j, double t);
   void collide_wall(std::int32_t i, std::int32_t w);
   void collide_pool_wall(std::int32_t i, std::int32_t w);
+
+  // --- the run's events
+  // Appends ev to the run's events and counts it.
+  void add_event(const Event& ev) {
+    events_.push_back(ev);
+    ++event_count_;
+  }
+  // The ball_ball event of balls i and j at time t (the lower index first).
+  static Event ball_ball_event(double t, std::int32_t i, std::int32_t j) {
+    Event ev;
+    ev.time = t;
+    ev.type = EventType::ball_ball;
+    ev.ball = std::min(i, j);
+    ev.other = std::max(i, j);
+    return ev;
+  }
 
   // --- recording (run_record.cpp)
   // Ball i's trajectory changed at an event at time t.

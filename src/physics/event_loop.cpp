@@ -50,13 +50,7 @@ namespace breakshot::detail {
   ++counter_[static_cast<std::size_t>(j)];
   note_change(i, t);
   note_change(j, t);
-  Event ev;
-  ev.time = t;
-  ev.type = EventType::ball_ball;
-  ev.ball = std::min(i, j);
-  ev.other = std::max(i, j);
-  events_.push_back(ev);
-  ++event_count_;
+  add_event(ball_ball_event(t, i, j));
   predict(i);
   queue_.fix(i);
   predict(j);
@@ -79,8 +73,7 @@ void Engine::take_pocket(std::int32_t i, double t) {
 [[gnu::always_inline]] inline void Engine::finish_event(std::int32_t i, const Event& ev) {
   ++counter_[static_cast<std::size_t>(i)];
   note_change(i, ev.time);
-  events_.push_back(ev);
-  ++event_count_;
+  add_event(ev);
   predict(i);
   queue_.fix(i);
 }
