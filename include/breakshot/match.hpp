@@ -36,7 +36,7 @@ GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
 struct MatchOptions {
   GameType game = GameType::eight_ball;
   std::string table_size = "9ft";
-  std::array<std::string, 2> players;  ///< make_player names
+  std::array<std::string, 2> players;  ///< the seats' names (players.hpp: make_player)
   int games = 1;
   std::uint64_t seed = 0;
   /// The noise of players without a noise of their own (Player::noise()).
