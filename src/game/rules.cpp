@@ -40,6 +40,15 @@ std::string join_fouls(const std::vector<Foul>& fouls) {
   return out;
 }
 
+std::optional<std::string> check_called_pocket(const Rules& rules, const Call& call) {
+  const auto pockets = rules.table().pockets.size();
+  if (call.pocket < 0 || call.pocket >= static_cast<int>(pockets)) {
+    return "called pocket " + std::to_string(call.pocket) + " does not exist (0-" +
+           std::to_string(pockets - 1) + ")";
+  }
+  return std::nullopt;
+}
+
 std::vector<Foul> pool_foul_kinds() {
   return {Foul::scratch, Foul::no_contact,    Foul::wrong_ball_first,
           Foul::no_rail, Foul::illegal_break, Foul::behind_head_string};

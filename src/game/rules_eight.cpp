@@ -103,11 +103,7 @@ class EightBall final : public Ruleset {
     if (shot.call && shot.safety) return "a declared safety has no call";
     if (shot.call) {
       const Call& call = *shot.call;
-      const auto pockets = rules.table().pockets.size();
-      if (call.pocket < 0 || call.pocket >= static_cast<int>(pockets)) {
-        return "called pocket " + std::to_string(call.pocket) + " does not exist (0-" +
-               std::to_string(pockets - 1) + ")";
-      }
+      if (auto why = check_called_pocket(rules, call)) return why;
       if (!has(targets(s), call.ball)) {
         return "called ball " + std::to_string(call.ball) + " is not a legal target";
       }

@@ -42,11 +42,7 @@ class NineBall final : public Ruleset {
     if (shot.call) {
       // Informational only: a valid pocket and an object ball on the table.
       const Call& call = *shot.call;
-      const auto pockets = rules.table().pockets.size();
-      if (call.pocket < 0 || call.pocket >= static_cast<int>(pockets)) {
-        return "called pocket " + std::to_string(call.pocket) + " does not exist (0-" +
-               std::to_string(pockets - 1) + ")";
-      }
+      if (auto why = check_called_pocket(rules, call)) return why;
       if (call.ball < 1 || call.ball >= ball_count() ||
           !s.on_table[static_cast<std::size_t>(call.ball)]) {
         return "called ball " + std::to_string(call.ball) + " is not on the table";

@@ -95,6 +95,9 @@ class Ruleset {
   virtual void rule_shot(ShotRuling& shot) const = 0;
 };
 
+/// Why a call's pocket does not exist on the rules' table, or nullopt.
+std::optional<std::string> check_called_pocket(const Rules& rules, const Call& call);
+
 /// The foul kinds of the games on a pool table, in the order summaries
 /// list them (8-ball and 9-ball both list them all).
 std::vector<Foul> pool_foul_kinds();
