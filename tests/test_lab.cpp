@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "expect_states.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/plot.hpp"
 #include "breakshot/rack.hpp"
@@ -328,16 +329,6 @@ std::vector<Sample> trace_in_two_runs(const Scenario& scenario, std::size_t poin
     if (reason == StopReason::event_limit) break;
   }
   return frames;
-}
-
-void expect_same_states(const std::vector<BallState>& a, const std::vector<BallState>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].position, b[i].position) << "ball " << i;
-    EXPECT_EQ(a[i].velocity, b[i].velocity) << "ball " << i;
-    EXPECT_EQ(a[i].spin, b[i].spin) << "ball " << i;
-    EXPECT_EQ(a[i].state, b[i].state) << "ball " << i;
-  }
 }
 
 TEST(Lab, OneRunGivesTheResultAndTheFramesOfSeparateRuns) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "expect_states.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/rack.hpp"
 #include "breakshot/simulation.hpp"
@@ -312,16 +313,6 @@ RunResult simulate_in_two_runs(const Scenario& scenario) {
   return result;
 }
 
-void expect_same_balls(const std::vector<BallState>& a, const std::vector<BallState>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].position, b[i].position) << "ball " << i;
-    EXPECT_EQ(a[i].velocity, b[i].velocity) << "ball " << i;
-    EXPECT_EQ(a[i].spin, b[i].spin) << "ball " << i;
-    EXPECT_EQ(a[i].state, b[i].state) << "ball " << i;
-  }
-}
-
 }  // namespace
 
 TEST(Simulate, SamplesUntilRestAreThoseOfTwoRuns) {
@@ -356,11 +347,11 @@ TEST(Simulate, SamplesUntilRestAreThoseOfTwoRuns) {
         EXPECT_EQ(got.complete, want.complete);
         EXPECT_EQ(got.events, want.events);
         EXPECT_EQ(got.final_time, want.final_time);
-        expect_same_balls(got.final_balls, want.final_balls);
+        expect_same_states(got.final_balls, want.final_balls);
         ASSERT_EQ(got.samples.size(), want.samples.size());
         for (std::size_t k = 0; k < got.samples.size(); ++k) {
           EXPECT_EQ(got.samples[k].time, want.samples[k].time) << "sample " << k;
-          expect_same_balls(got.samples[k].balls, want.samples[k].balls);
+          expect_same_states(got.samples[k].balls, want.samples[k].balls);
         }
       }
     }

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "breakshot/record.hpp"
+#include "io/game_json.hpp"
 #include "breakshot/record_io.hpp"
 
 namespace breakshot {
@@ -58,7 +59,7 @@ std::string match_summary_json(const MatchSummary& s) {
   ojson j = ojson::object();
   j["game"] = to_string(s.game);
   j["table_size"] = s.table_size;
-  j["seed"] = std::to_string(s.seed);  // a string, as in records: 64 bits survive any reader
+  j["seed"] = json_io::seed_json(s.seed);  // a string, as in records: 64 bits survive any reader
   j["noise"] = to_string(s.noise);
   j["games_played"] = s.games_played;
   j["draws"] = s.draws;
