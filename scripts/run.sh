@@ -48,6 +48,7 @@ scripts/setup.sh
 cmake --preset release
 cmake --build --preset release --target breakshot_cli
 scripts/web.sh
+scripts/python.sh
 
 mkdir -p out
 status=0

@@ -12,12 +12,16 @@ set -euo pipefail
 # libFuzzer and clang's sanitizer runtimes (scripts/test.sh fuzzes).
 # emscripten builds the browser version (scripts/web.sh); chromium and a
 # font are what its browser tests drive (web/tests/browser.mjs, with
-# playwright-core from npm, which never downloads a browser).
+# playwright-core from npm, which never downloads a browser). The Python
+# package (scripts/python.sh) is built with pybind11 against Debian's
+# python3 and uses its numpy, matplotlib and pytest.
 required=(
   build-essential cmake ninja-build g++ clang libclang-rt-14-dev
   libgtest-dev googletest libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
   emscripten chromium fonts-dejavu-core curl
+  python3 python3-dev python3-venv python3-pip python3-setuptools python3-wheel
+  python3-build pybind11-dev python3-numpy python3-matplotlib python3-pytest
 )
 # Optional: rsvg-convert, to turn the SVG plots into PNG previews.
 optional=(librsvg2-bin)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every check breakshot has, the way CI runs them (.ci/run calls this):
 #
-#   (a) release build, warnings as errors, and its tests      (preset release)
+#   (a) release build, warnings as errors, and its tests      (preset release);
+#       the Python package installed into .venv (scripts/python.sh) and pytest
 #   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
 #   (c) install the release build and build and run the example consumer
 #       against it (find_package(breakshot)); run scripts/run.sh --check
@@ -26,7 +27,7 @@ quick=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done
@@ -84,6 +85,25 @@ run_ctest() {
   failed=$((failed + nfail))
 }
 
+# Runs pytest and adds its counts ("N passed" and "N failed" of its last
+# line) to the totals.
+run_pytest() {
+  local log=$logs/pytest.log line np nf=0 n
+  BREAKSHOT_CLI=$root/build/release/breakshot .venv/bin/python -m pytest -q \
+    -p no:cacheprovider python/tests 2>&1 | tee "$log" || true
+  line=$(tail -n 1 "$log")
+  if ! grep -qE '[0-9]+ passed' <<<"$line"; then
+    echo "test.sh: no summary line from pytest" >&2
+    return 1
+  fi
+  np=$(grep -oE '[0-9]+ passed' <<<"$line" | cut -d' ' -f1)
+  for n in $(grep -oE '[0-9]+ (failed|errors?)' <<<"$line" | cut -d' ' -f1); do
+    nf=$((nf + n))
+  done
+  passed=$((passed + np))
+  failed=$((failed + nf))
+}
+
 # Runs a node test script that ends with "N passed, M failed" and adds its
 # counts to the totals.
 run_node_tests() {
@@ -109,6 +129,10 @@ cmake --preset release
 cmake --build --preset release
 stage "(a) release: ctest"
 run_ctest release
+stage "(a) python: .venv + pip install (scripts/python.sh)"
+scripts/python.sh
+stage "(a) python: pytest"
+run_pytest
 
 if [ "$quick" -eq 0 ]; then
   stage "(b) asan: configure + build"

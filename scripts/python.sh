@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The Python package (docs/python.md): makes the virtual environment .venv at
+# the repository root from Debian's /usr/bin/python3 with
+# --system-site-packages (numpy, matplotlib, pytest and dask come from
+# Debian's python3-* packages; PyPI is not needed) and installs breakshot
+# into it with `pip install --no-build-isolation .`. Run again after a
+# change: the extension's CMake build (build/temp.*/cmake) is incremental.
+#
+#   scripts/python.sh            make .venv if missing, install breakshot
+#   scripts/python.sh --wheel    also build a wheel into dist/ (for cluster nodes)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+wheel=0
+for arg in "$@"; do
+  case "$arg" in
+    --wheel) wheel=1 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
+    *) echo "python.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
+  esac
+done
+
+py=/usr/bin/python3
+if [ ! -x .venv/bin/python ] || ! .venv/bin/python -c 'import numpy' 2>/dev/null; then
+  rm -rf .venv
+  "$py" -m venv --system-site-packages .venv
+fi
+.venv/bin/python -m pip install --no-build-isolation --no-deps --no-index \
+  --disable-pip-version-check --quiet .
+.venv/bin/python -c 'import breakshot; print("python: breakshot", breakshot.__version__, "in .venv")'
+if [ "$wheel" -eq 1 ]; then
+  .venv/bin/python -m build --no-isolation --wheel --outdir dist .
+fi

@@ -1,0 +1,70 @@
+"""Builds breakshot's Python package: the extension breakshot._core is built
+by the project's CMake (python/CMakeLists.txt), with the same flags as the
+library and the command; no other compiler flags are set here.
+
+    pip install --no-build-isolation .          # into the active environment
+    python3 -m build --no-isolation --wheel     # a wheel for cluster nodes
+
+Environment: BREAKSHOT_BUILD_JOBS (parallel compile jobs, default all cores).
+"""
+
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+from setuptools import Extension, find_packages, setup
+from setuptools.command.build_ext import build_ext
+
+ROOT = Path(__file__).resolve().parent
+
+
+def version() -> str:
+    text = (ROOT / "include" / "breakshot" / "version.hpp").read_text()
+    m = re.search(r'kVersion = "([0-9]+\.[0-9]+\.[0-9]+)"', text)
+    if not m:
+        raise RuntimeError("no version in include/breakshot/version.hpp")
+    return m.group(1)
+
+
+class CMakeExtension(Extension):
+    def __init__(self, name: str):
+        super().__init__(name, sources=[])
+
+
+class CMakeBuild(build_ext):
+    def build_extension(self, ext: Extension) -> None:
+        out_dir = Path(self.get_ext_fullpath(ext.name)).resolve().parent
+        build_dir = Path(self.build_temp).resolve() / "cmake"
+        build_dir.mkdir(parents=True, exist_ok=True)
+        jobs = os.environ.get("BREAKSHOT_BUILD_JOBS") or str(os.cpu_count() or 2)
+        configure = [
+            "cmake", "-S", str(ROOT), "-B", str(build_dir),
+            "-DCMAKE_BUILD_TYPE=Release",
+            "-DBREAKSHOT_BUILD_PYTHON=ON",
+            "-DBREAKSHOT_BUILD_TESTS=OFF",
+            "-DBREAKSHOT_BUILD_APPS=OFF",
+            "-DBREAKSHOT_BUILD_BENCH=OFF",
+            "-DBREAKSHOT_WERROR=ON",
+            f"-DPython_EXECUTABLE={sys.executable}",
+            f"-DBREAKSHOT_PYTHON_OUTPUT_DIR={out_dir}",
+        ]
+        if subprocess.run(["ninja", "--version"], capture_output=True).returncode == 0:
+            configure += ["-G", "Ninja"]
+        subprocess.run(configure, check=True)
+        subprocess.run(
+            ["cmake", "--build", str(build_dir), "--target", "breakshot_python", "-j", jobs],
+            check=True,
+        )
+
+
+setup(
+    version=version(),
+    packages=find_packages(where="python", exclude=["tests"]),
+    package_dir={"": "python"},
+    package_data={"breakshot": ["py.typed", "*.pyi"]},
+    ext_modules=[CMakeExtension("breakshot._core")],
+    cmdclass={"build_ext": CMakeBuild},
+    zip_safe=False,
+)
