@@ -5,7 +5,8 @@
 #       the Python package installed into .venv (scripts/python.sh) and pytest
 #   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
 #   (c) install the release build and build and run the example consumer
-#       against it (find_package(breakshot)); run scripts/run.sh --check
+#       against it (find_package(breakshot)); build the Python wheel and
+#       use it from a fresh environment; run scripts/run.sh --check
 #   (d) the browser version: native and wasm give the same replies byte
 #       for byte (web/tests/identity.mjs), and playwright-core drives
 #       Chromium through the served page (web/tests/browser.mjs)
@@ -154,6 +155,19 @@ if [ "$quick" -eq 0 ]; then
     -DCMAKE_PREFIX_PATH="$root/build/install"
   cmake --build build/consumer -j 2
   build/consumer/consumer
+
+  stage "(c) python: a wheel installed into a fresh environment"
+  rm -rf build/dist build/wheel-venv
+  .venv/bin/python -m build --no-isolation --wheel --outdir build/dist . >"$logs/wheel.log" 2>&1 \
+    || { cat "$logs/wheel.log"; false; }
+  /usr/bin/python3 -m venv --system-site-packages build/wheel-venv
+  build/wheel-venv/bin/python -m pip install --no-deps --no-index --disable-pip-version-check \
+    --quiet build/dist/breakshot-*.whl
+  (cd build && wheel-venv/bin/python -c 'import sys, breakshot
+sys.stdout.write(breakshot.simulate(sys.argv[1]).to_json())' ../examples/pool/break_8ball.json) \
+    >build/wheel-break.json
+  cmp build/wheel-break.json <(build/release/breakshot simulate examples/pool/break_8ball.json)
+  echo "the wheel's breakshot.simulate gives the command's bytes"
 
   stage "(c) scripts/run.sh --check (the README's main job)"
   scripts/run.sh --check >"$logs/run.log" 2>&1 || { cat "$logs/run.log"; false; }
