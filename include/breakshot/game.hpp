@@ -37,6 +37,8 @@ enum class GameType : std::uint8_t { eight_ball, nine_ball };
 std::string_view to_string(GameType g);
 /// "eight_ball" or "nine_ball"; nullopt otherwise.
 std::optional<GameType> parse_game_type(std::string_view s);
+/// The names of every game the library plays, in GameType order.
+std::vector<std::string> game_type_names();
 
 /// Equipment and limits of a game. Everything else is fixed by the rules.
 struct GameConfig {

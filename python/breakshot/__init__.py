@@ -12,11 +12,15 @@ from __future__ import annotations
 from . import _core
 from .errors import ScenarioError
 from .result import Result
+from .game import (Call, Decide, Game, LegalActions, Outcome, PlaceCue, Player, Shot, State,
+                   action_from_dict, games, match, match_json, mix_seed, players)
 
 __version__ = _core.version
 Scenario = _core.Scenario
 
 __all__ = ["__version__", "Scenario", "ScenarioError", "Result", "simulate"]
+__all__ += ["Game", "State", "LegalActions", "Outcome", "Shot", "PlaceCue", "Decide", "Call",
+            "action_from_dict", "Player", "games", "players", "match", "match_json", "mix_seed"]
 
 
 def simulate(scenario) -> Result:

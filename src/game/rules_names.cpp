@@ -1,6 +1,8 @@
 // Names of the game enums, as used in records and rulings.
 #include <array>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "breakshot/game.hpp"
 
@@ -35,6 +37,7 @@ std::string_view to_string(GameType g) { return kGameNames[static_cast<std::size
 std::optional<GameType> parse_game_type(std::string_view s) {
   return parse<GameType>(s, kGameNames);
 }
+std::vector<std::string> game_type_names() { return {kGameNames.begin(), kGameNames.end()}; }
 std::string_view to_string(Group g) { return kGroupNames[static_cast<std::size_t>(g)]; }
 std::optional<Group> parse_group(std::string_view s) { return parse<Group>(s, kGroupNames); }
 std::string_view to_string(Phase p) { return kPhaseNames[static_cast<std::size_t>(p)]; }

@@ -1,0 +1,421 @@
+// Games, computer players and matches for Python: _core.GameCore (a
+// GameSession), _core.PlayerCore (a Player made by name) and
+// _core.match_json. Actions, states and rulings cross the boundary as the
+// JSON of src/io/game_json.hpp, the one encoding the records use, so a
+// Python dict and a record's action are the same thing; the Python
+// classes (python/breakshot/game.py) build on these.
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "bind.hpp"
+#include "breakshot/ai.hpp"
+#include "breakshot/match_io.hpp"
+#include "breakshot/players.hpp"
+#include "breakshot/record_io.hpp"
+#include "breakshot/session.hpp"
+#include "io/game_json.hpp"
+#include "io/json_read.hpp"
+
+namespace breakshot::python {
+
+namespace {
+
+using json_io::ojson;
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+GameType game_arg(const std::string& name) {
+  if (auto g = parse_game_type(name)) return *g;
+  throw std::invalid_argument("game: unknown game '" + name + "' (known games: " +
+                              join(game_type_names()) + ")");
+}
+
+NoiseModel noise_arg(const std::string& spec, const std::string& what) {
+  try {
+    return parse_noise(spec);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(what + ": " + e.what());
+  }
+}
+
+/// An action from its JSON text (the records' form); std::invalid_argument
+/// naming the path ("action.strike.speed") otherwise.
+Action parse_action(const std::string& text) {
+  json_io::json doc;
+  if (auto problem = json_io::parse_strict(text, doc)) {
+    throw std::invalid_argument("action: " + problem->error.reason);
+  }
+  json_io::GameReader reader;
+  Action a;
+  if (!reader.action(doc, "action", a)) {
+    throw std::invalid_argument(reader.error->path + ": " + reader.error->reason);
+  }
+  return a;
+}
+
+/// An event of a game shot: as the result file writes it, but the balls
+/// are ball numbers (0 the cue ball) and a pocket is given by its index
+/// (the index a call names) and its name.
+ojson event_json(const Table& table, const Event& e) {
+  ojson j = ojson::object();
+  j["time"] = e.time;
+  j["type"] = std::string(to_string(e.type));
+  ojson balls = ojson::array();
+  balls.push_back(e.ball);
+  if (e.type == EventType::ball_ball) balls.push_back(e.other);
+  j["balls"] = balls;
+  switch (e.type) {
+    case EventType::ball_cushion:
+      if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < table.walls.size()) {
+        j["cushion"] = table.walls[static_cast<std::size_t>(e.wall)].name;
+      } else {
+        j["cushion"] = nullptr;
+      }
+      break;
+    case EventType::ball_pocket:
+      j["pocket"] = e.pocket;
+      if (e.pocket >= 0 && static_cast<std::size_t>(e.pocket) < table.pockets.size()) {
+        j["pocket_name"] = table.pockets[static_cast<std::size_t>(e.pocket)].name;
+      } else {
+        j["pocket_name"] = nullptr;
+      }
+      break;
+    case EventType::state_change:
+      j["from"] = std::string(to_string(e.from));
+      j["to"] = std::string(to_string(e.to));
+      break;
+    case EventType::cue_strike:
+    case EventType::ball_ball:
+      break;
+  }
+  return j;
+}
+
+ojson facts_json(const ShotFacts& f) {
+  ojson j = ojson::object();
+  j["miscue"] = f.miscue;
+  j["first_hit"] = f.first_hit;
+  j["pocketed"] = f.pocketed;
+  j["pocket_of"] = f.pocket_of;
+  j["cushion_after_contact"] = f.cushion_after_contact;
+  j["object_balls_to_cushion"] = f.object_balls_to_cushion;
+  return j;
+}
+
+/// A game in progress: one GameSession.
+class GameCore {
+ public:
+  GameCore(const std::string& game, const std::string& table, std::uint64_t seed, int breaker,
+           const std::array<std::string, 2>& names, const std::array<std::string, 2>& noise,
+           int max_shots)
+      : session_(config(game, table, max_shots), seats(names, noise), seed, breaker) {}
+
+  explicit GameCore(GameSession session) : session_(std::move(session)) {}
+
+  /// A game from a record's text: read, checked by replay(), then played
+  /// again action by action as recorded.
+  static GameCore from_record(const std::string& text) {
+    auto parsed = read_record(text);
+    if (const auto* err = std::get_if<RecordError>(&parsed)) {
+      throw std::invalid_argument("invalid record: " + err->path + ": " + err->reason);
+    }
+    const GameRecord& record = std::get<GameRecord>(parsed);
+    const ReplayReport report = replay(record);
+    if (!report.identical) {
+      throw std::invalid_argument("the record does not replay: " + report.message);
+    }
+    GameSession session(record.config, Seats{record.players, record.noise}, record.seed,
+                        record.start.rack_seed, record.start.breaker);
+    for (const RecordedAction& ra : record.actions) {
+      session.play_executed(ra.action, ra.intended, ra.noise_seed);
+    }
+    return GameCore(std::move(session));
+  }
+
+  const GameSession& session() const { return session_; }
+
+  std::string state_json(std::size_t i) const {
+    if (i > session_.actions()) {
+      throw std::invalid_argument("state_before: action " + std::to_string(i) + " of " +
+                                  std::to_string(session_.actions()));
+    }
+    return json_io::state_json(session_.state_before(i)).dump();
+  }
+
+  std::vector<int> targets() const {
+    if (session_.over()) return {};
+    return session_.rules().targets(session_.state());
+  }
+
+  py::dict legal() const {
+    py::dict d;
+    if (session_.over()) {
+      d["place"] = "none";
+      d["must_place"] = false;
+      d["shoot"] = false;
+      d["push_out"] = false;
+      d["call"] = false;
+      d["targets"] = py::list();
+      d["choices"] = py::list();
+      return d;
+    }
+    const LegalActions la = session_.rules().legal_actions(session_.state());
+    d["place"] = std::string(to_string(la.place));
+    d["must_place"] = la.must_place;
+    d["shoot"] = la.shoot;
+    d["push_out"] = la.push_out;
+    d["call"] = la.call;
+    d["targets"] = la.targets;
+    py::list choices;
+    for (const Choice c : la.choices) choices.append(std::string(to_string(c)));
+    d["choices"] = choices;
+    return d;
+  }
+
+  std::optional<std::string> check(const std::string& action_text) const {
+    return session_.check(parse_action(action_text));
+  }
+
+  std::optional<std::string> check_placement(double x, double y) const {
+    if (session_.over()) return std::string("the game is over");
+    return session_.rules().check_placement(session_.state(), Vec2{x, y});
+  }
+
+  /// Plays an action for the seat to act (noise applied to a shot) and
+  /// returns the outcome as JSON text.
+  std::string apply(const std::string& action_text) {
+    const Action action = parse_action(action_text);
+    if (session_.over()) throw std::invalid_argument("the game is over");
+    const std::size_t i = session_.actions();
+    // The GIL stays held: a shot takes well under a millisecond, and the
+    // session must not change under another Python thread.
+    const Outcome out = session_.play(action);
+    const RecordedAction& ra = session_.record().actions.back();
+    ojson j = ojson::object();
+    j["index"] = i;
+    j["player"] = ra.player;
+    j["executed"] = json_io::action_json(ra.action);
+    j["intended"] = ra.intended ? json_io::strike_json(*ra.intended) : ojson(nullptr);
+    j["noise_seed"] = json_io::seed_json(ra.noise_seed);
+    j["ruling"] = json_io::ruling_json(out.ruling);
+    j["facts"] = facts_json(out.facts);
+    ojson events = ojson::array();
+    for (const Event& e : out.events) events.push_back(event_json(session_.rules().table(), e));
+    j["events"] = events;
+    j["state"] = json_io::state_json(out.state);
+    return j.dump();
+  }
+
+  void take_back_to(std::size_t n) { session_.take_back_to(n); }
+
+  std::string record_text() const { return write_record(session_.record()); }
+
+  py::dict table() const {
+    const Rules& rules = session_.rules();
+    const Table& t = rules.table();
+    py::dict d;
+    d["size"] = rules.config().table_size;
+    d["length"] = t.length;
+    d["width"] = t.width;
+    d["head_string"] = rules.head_string();
+    d["head_spot"] = py::make_tuple(t.head_spot.x, t.head_spot.y);
+    d["foot_spot"] = py::make_tuple(t.foot_spot.x, t.foot_spot.y);
+    d["ball_radius"] = rules.config().ball_radius;
+    d["ball_count"] = rules.ball_count();
+    py::list pockets;
+    for (const Pocket& p : t.pockets) {
+      py::dict pd;
+      pd["name"] = p.name;
+      pd["centre"] = py::make_tuple(p.centre.x, p.centre.y);
+      pd["radius"] = p.radius;
+      pockets.append(pd);
+    }
+    d["pockets"] = pockets;
+    return d;
+  }
+
+  std::string config_json() const { return json_io::config_json(session_.rules().config()).dump(); }
+
+  std::vector<std::string> names() const {
+    return {session_.record().players[0], session_.record().players[1]};
+  }
+  std::vector<std::string> noise() const {
+    return {to_string(session_.record().noise[0]), to_string(session_.record().noise[1])};
+  }
+
+ private:
+  static GameConfig config(const std::string& game, const std::string& table, int max_shots) {
+    GameConfig c;
+    c.game = game_arg(game);
+    if (table != "7ft" && table != "8ft" && table != "9ft") {
+      throw std::invalid_argument("table: unknown table size '" + table + "' (7ft, 8ft or 9ft)");
+    }
+    c.table_size = table;
+    // -1: the rules' default; 0: no limit.
+    if (max_shots < -1) {
+      throw std::invalid_argument("max_shots: must be 0 (no limit) or more, not " +
+                                  std::to_string(max_shots));
+    }
+    if (max_shots >= 0) c.max_shots = max_shots;
+    return c;
+  }
+  static Seats seats(const std::array<std::string, 2>& names,
+                     const std::array<std::string, 2>& noise) {
+    Seats s;
+    s.names = names;
+    s.noise = {noise_arg(noise[0], "noise (seat 0)"), noise_arg(noise[1], "noise (seat 1)")};
+    return s;
+  }
+
+  GameSession session_;
+};
+
+/// A computer player by name, with the AI's thread count settable.
+class PlayerCore {
+ public:
+  PlayerCore(const std::string& name, int threads) : name_(name), threads_(threads) {
+    if (threads < 0) {
+      throw std::invalid_argument("threads: must be 0 (every core) or more, not " +
+                                  std::to_string(threads));
+    }
+    const std::vector<std::string> levels = ai_level_names();
+    if (std::find(levels.begin(), levels.end(), name) != levels.end()) {
+      AiLevel level = ai_level(name);
+      if (threads > 0) level.threads = threads;
+      threads_ = level.threads;
+      player_ = make_ai_player(level);
+    } else {
+      player_ = make_player(name);  // throws, naming the known players
+      threads_ = 1;
+    }
+  }
+
+  std::string name() const { return player_->name(); }
+  int threads() const { return threads_; }
+  std::optional<std::string> noise() const {
+    if (auto n = player_->noise()) return to_string(*n);
+    return std::nullopt;
+  }
+
+  /// The player's action for the game's state now, with decision seed
+  /// `seed`, as JSON text. The GIL is released while it thinks.
+  std::string decide(const GameCore& game, std::uint64_t seed) {
+    const GameSession& s = game.session();
+    if (s.over()) throw std::invalid_argument("decide: the game is over");
+    // Copies: the game may change in another Python thread meanwhile.
+    const Rules rules = s.rules();
+    const GameState state = s.state();
+    Action a;
+    {
+      py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
+      a = player_->decide(rules, state, seed);
+    }
+    return json_io::action_json(a).dump();
+  }
+
+  Player& player() { return *player_; }
+
+ private:
+  std::string name_;
+  int threads_ = 0;
+  std::unique_ptr<Player> player_;
+  std::mutex mutex_;
+};
+
+std::string match_json(const std::string& game, const std::array<std::string, 2>& players,
+                       int games, std::uint64_t seed, const std::string& noise,
+                       const std::string& table, const std::optional<std::string>& records,
+                       int threads) {
+  MatchOptions opt;
+  opt.game = game_arg(game);
+  opt.players = players;
+  if (games < 1) {
+    throw std::invalid_argument("games: expected a whole number of games >= 1, not " +
+                                std::to_string(games));
+  }
+  opt.games = games;
+  opt.seed = seed;
+  opt.noise = noise_arg(noise, "noise");
+  if (table != "7ft" && table != "8ft" && table != "9ft") {
+    throw std::invalid_argument("table: unknown table size '" + table + "' (7ft, 8ft or 9ft)");
+  }
+  opt.table_size = table;
+  PlayerCore p0(players[0], threads);
+  PlayerCore p1(players[1], threads);
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    const RecordSink sink = records ? record_files(*records) : RecordSink{};
+    text = match_summary_json(play_match(opt, p0.player(), p1.player(), sink));
+  }
+  return text;
+}
+
+}  // namespace
+
+void bind_game(py::module_& m) {
+  m.def("game_names", &game_type_names, "The games the library plays (GameType names).");
+  m.def("player_names", &player_names, "The computer players: 'baseline', then the AI levels.");
+  m.def("mix_seed", &mix_seed, py::arg("a"), py::arg("b"),
+        "SplitMix64 seed mixing (noise.hpp): game g of a match has seed mix_seed(seed, g).");
+  m.def("player_seed", &GameSeeds::player, py::arg("game_seed"), py::arg("action"),
+        "GameSeeds::player: the decision seed of action i of a game.");
+
+  py::class_<GameCore>(m, "GameCore", "A game in progress (a C++ GameSession); see breakshot.Game.")
+      .def(py::init<const std::string&, const std::string&, std::uint64_t, int,
+                    const std::array<std::string, 2>&, const std::array<std::string, 2>&, int>(),
+           py::arg("game"), py::arg("table"), py::arg("seed"), py::arg("breaker"),
+           py::arg("names"), py::arg("noise"), py::arg("max_shots"))
+      .def_static("from_record", &GameCore::from_record, py::arg("text"))
+      .def("state_json", &GameCore::state_json, py::arg("i"))
+      .def("targets", &GameCore::targets)
+      .def("legal", &GameCore::legal)
+      .def("check", &GameCore::check, py::arg("action"))
+      .def("check_placement", &GameCore::check_placement, py::arg("x"), py::arg("y"))
+      .def("apply", &GameCore::apply, py::arg("action"))
+      .def("take_back_to", &GameCore::take_back_to, py::arg("n"))
+      .def("record_text", &GameCore::record_text)
+      .def("table", &GameCore::table)
+      .def("config_json", &GameCore::config_json)
+      .def("names", &GameCore::names)
+      .def("noise", &GameCore::noise)
+      .def_property_readonly("actions", [](const GameCore& g) { return g.session().actions(); })
+      .def_property_readonly("over", [](const GameCore& g) { return g.session().over(); })
+      .def_property_readonly("seed", [](const GameCore& g) { return g.session().record().seed; })
+      .def_property_readonly("next_player_seed",
+                             [](const GameCore& g) { return g.session().next_player_seed(); })
+      .def_property_readonly("next_noise_seed",
+                             [](const GameCore& g) { return g.session().next_noise_seed(); })
+      .def("__copy__", [](const GameCore& g) { return GameCore(g); });
+
+  py::class_<PlayerCore>(m, "PlayerCore", "A computer player (C++); see breakshot.Player.")
+      .def(py::init<const std::string&, int>(), py::arg("name"), py::arg("threads"))
+      .def_property_readonly("name", &PlayerCore::name)
+      .def_property_readonly("threads", &PlayerCore::threads)
+      .def_property_readonly("noise", &PlayerCore::noise)
+      .def("decide", &PlayerCore::decide, py::arg("game"), py::arg("seed"));
+
+  m.def("match_json", &match_json, py::arg("game"), py::arg("players"), py::arg("games"),
+        py::arg("seed"), py::arg("noise"), py::arg("table"), py::arg("records"),
+        py::arg("threads"),
+        "The summary text `breakshot match` prints for the same arguments.");
+}
+
+}  // namespace breakshot::python
