@@ -1,13 +1,14 @@
 // Pot maps: how often a computer player pots one ball in one pocket, from
-// one cue-ball position or from every point of a grid (docs/ai.md, "Pot
-// maps"; docs/python.md).
+// one cue-ball position or from every point of a grid (docs/python.md,
+// "Pot maps").
 //
 // A level plays the pot the way it plays in a game, limited to that ball
 // and that pocket: its own shot generation (direct, bank, kick and
 // combination pots of the ball into the pocket, with its own speeds and
 // spins; no safeties), its own shortlist size and, for the levels that
 // do it, its own centred aims; the shortlisted shots are sampled under
-// its own noise and the one that pots most often is its best shot. How
+// its own noise and the one that pots most often is its best shot (the
+// shortlist ranks by the pot's prior, not by the leave as in a game). How
 // often that shot pots is then measured on fresh noise draws, so the
 // figure is not flattered by the choice.
 #pragma once
