@@ -19,7 +19,7 @@ __version__ = _core.version
 Scenario = _core.Scenario
 
 __all__ = ["__version__", "Scenario", "ScenarioError", "Result", "simulate"]
-__all__ += ["Frames", "PotMap", "pot_chance", "pot_map", "plot"]
+__all__ += ["Frames", "PotMap", "pot_chance", "pot_map"]
 
 
 def simulate(scenario, *, trace=False) -> Result:
