@@ -71,6 +71,11 @@ struct ShotGenOptions {
   /// Aim noise (degrees) with which the leave of each pot is rated
   /// (CandidateShot::leave): the player's own.
   double leave_sigma_deg = 0.125;
+  /// Pots of this ball only (its number; -1: any ball) and into this
+  /// pocket only (an index into Table::pockets; -1: any pocket). Pot maps
+  /// (pot_map.hpp) set both, with safeties off.
+  int only_ball = -1;
+  int only_pocket = -1;
 };
 
 /// Candidate shots for the player to act in `state` (phase shot, cue ball

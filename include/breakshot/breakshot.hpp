@@ -30,6 +30,7 @@
 // ai: the computer players
 #include "breakshot/ai.hpp"
 #include "breakshot/players.hpp"
+#include "breakshot/pot_map.hpp"
 
 // io: scenario and result files, plots, game records, match summaries
 #include "breakshot/match_io.hpp"

@@ -14,12 +14,15 @@ class Result:
     ``to_json()`` gives the file's exact text; ``complete``, ``events``,
     ``final``, ``samples`` (and ``cue``, when the scenario had a strike)
     are that file's fields as plain Python values (docs/contract.md).
+    ``frames`` holds the dense frames of ``simulate(..., trace=True)``
+    (breakshot.Frames), else None.
     """
 
-    __slots__ = ("_text", "__dict__")
+    __slots__ = ("_text", "frames", "__dict__")
 
-    def __init__(self, text: str):
+    def __init__(self, text: str, frames=None):
         self._text = text
+        self.frames = frames
 
     def to_json(self) -> str:
         """The result file's text, byte for byte what the CLI prints."""
@@ -64,5 +67,7 @@ class Result:
         d = self._data
         return (
             f"<breakshot.Result complete={d['complete']} events={len(d['events'])} "
-            f"t={d['final']['time']:.6g}>"
+            f"t={d['final']['time']:.6g}"
+            + (f" frames={len(self.frames)}" if self.frames is not None else "")
+            + ">"
         )

@@ -30,5 +30,6 @@ std::string scenario_text(py::handle obj);
 void bind_errors(py::module_& m);
 void bind_scenario(py::module_& m);
 void bind_game(py::module_& m);
+void bind_plot(py::module_& m);
 
 }  // namespace breakshot::python

@@ -12,4 +12,5 @@ PYBIND11_MODULE(_core, m) {
   bp::bind_errors(m);
   bp::bind_scenario(m);
   bp::bind_game(m);
+  bp::bind_plot(m);
 }

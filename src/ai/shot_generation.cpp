@@ -203,6 +203,11 @@ class Generator {
         }
       }
     }
+    // Pot maps ask for one ball and one pocket only.
+    std::erase_if(lines, [&](const Line& l) {
+      return (opt_.only_ball >= 0 && l.target != opt_.only_ball) ||
+             (opt_.only_pocket >= 0 && l.pocket != opt_.only_pocket);
+    });
     // Most promising lines first (stable: generation order breaks ties),
     // so that a cap on simulated lines keeps the best.
     std::stable_sort(lines.begin(), lines.end(),
