@@ -68,7 +68,12 @@ def _balls(balls) -> dict:
 
 
 def _state_dict(obj):
-    """The mapping behind obj (a dict, a list of balls or a game)."""
+    """The mapping behind obj (a dict, a list of balls, a breakshot.State
+    or a breakshot.Game)."""
+    table_size = None
+    config = getattr(obj, "config", None)
+    if isinstance(config, Mapping) and "table_size" in config:  # a breakshot.Game
+        table_size = config["table_size"]
     seen = 0
     while not isinstance(obj, (Mapping, list, tuple)) and hasattr(obj, "state") and seen < 4:
         obj = obj.state
@@ -82,6 +87,10 @@ def _state_dict(obj):
         raise TypeError(
             "a game position is a dict with 'balls' (or 'positions' and 'on_table'), "
             f"a list of (id, x, y), or a game with a .state; not {type(obj).__name__}")
+    if "position" in obj and "positions" not in obj:  # the records' form of a state
+        obj = dict(obj, positions=obj["position"])
+    if table_size is not None and "table" not in obj and "table_size" not in obj:
+        obj = dict(obj, table_size=table_size)
     return obj
 
 

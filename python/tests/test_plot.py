@@ -218,6 +218,26 @@ def test_table_draws_every_ball(tmp_path):
     assert len(ball_patches(bplot.table(Game()))) == 4
 
 
+def test_table_draws_a_game_being_played(tmp_path):
+    game = breakshot.Game("eight_ball", table="7ft", seed=3)
+    player = breakshot.Player("club")
+    for _ in range(3):
+        if game.over:
+            break
+        game.apply(player.decide(game))
+    on = [i for i, f in enumerate(game.state.on_table) if f]
+    for drawn in (game, game.state):
+        balls = ball_patches(bplot.table(drawn))
+        assert sorted(p.get_gid() for p in balls) == sorted(f"ball:{i}" for i in on)
+        for p in balls:
+            i = int(p.get_gid().split(":")[1])
+            assert p.center == tuple(game.state.position[i])
+    # The 7 ft table's outline, not the 9 ft default.
+    ax = bplot.table(game)
+    assert ax.get_xlim()[1] < 2.2
+    ax.figure.savefig(tmp_path / "game.png", dpi=80)
+
+
 def test_table_draws_a_racked_scenario():
     ax = bplot.table(ROOT / "examples" / "pool" / "break_9ball.json")
     assert len(ball_patches(ax)) == 10
