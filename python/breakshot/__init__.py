@@ -12,11 +12,14 @@ from __future__ import annotations
 from . import _core
 from .errors import ScenarioError
 from .result import Result
+from .shots import ShotResults, shots
 
 __version__ = _core.version
 Scenario = _core.Scenario
+Simulation = _core.Simulation
 
-__all__ = ["__version__", "Scenario", "ScenarioError", "Result", "simulate"]
+__all__ = ["__version__", "Scenario", "ScenarioError", "Result", "simulate",
+           "Simulation", "shots", "ShotResults"]
 
 
 def simulate(scenario) -> Result:

@@ -29,5 +29,7 @@ std::string scenario_text(py::handle obj);
 
 void bind_errors(py::module_& m);
 void bind_scenario(py::module_& m);
+void bind_simulation(py::module_& m);
+void bind_shots(py::module_& m);
 
 }  // namespace breakshot::python

@@ -11,4 +11,6 @@ PYBIND11_MODULE(_core, m) {
   m.attr("version") = std::string(breakshot::kVersion);
   bp::bind_errors(m);
   bp::bind_scenario(m);
+  bp::bind_simulation(m);
+  bp::bind_shots(m);
 }
