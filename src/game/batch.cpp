@@ -43,11 +43,10 @@ std::size_t worker_count(unsigned requested, std::size_t n) {
   return std::min(w, std::max<std::size_t>(n, 1));
 }
 
-/// One shot, written into its entries of `out`. `work` is the thread's
-/// copy of the shot's scenario with its cue set.
-void play_one(const Scenario& work, std::size_t k, ShotBatch& out) {
+/// One shot, written into its entries of `out`.
+void play_one(Simulation& sim, std::size_t k, ShotBatch& out) {
   const std::size_t n = out.balls;
-  Simulation sim(work);
+  const Scenario& work = sim.scenario();
   const StopReason r =
       work.until.rest ? sim.advance_to_rest() : sim.advance_to(work.until.time);
   out.complete[k] = r == StopReason::reached ? 1 : 0;
@@ -189,16 +188,15 @@ ShotBatch play_shots(std::span<const Scenario* const> scenarios,
   std::vector<std::exception_ptr> errors(workers);
   const auto work = [&](std::size_t w) {
     try {
-      // The thread's copy of the scenario: with one scenario it is made
-      // once and only its cue changes from shot to shot.
+      // The thread's copy of the scenario. With one scenario it is made
+      // once, only its cue changes from shot to shot, and each Simulation
+      // copies it; with one scenario per shot each shot's copy is moved
+      // into its Simulation, so a shot copies its scenario once either way.
       Scenario scene;
-      const Scenario* loaded = nullptr;
+      bool loaded = false;
       for (std::size_t k = next.fetch_add(1); k < k_count; k = next.fetch_add(1)) {
-        const Scenario* base = scenarios[one ? 0 : k];
-        if (base != loaded) {
-          scene = *base;
-          loaded = base;
-        }
+        if (!one || !loaded) scene = *scenarios[one ? 0 : k];
+        loaded = true;
         const std::int32_t cue = cue_ball(scene);
         CueStrike strike = strikes[k];
         if (noisy) {
@@ -209,7 +207,13 @@ ShotBatch play_shots(std::span<const Scenario* const> scenarios,
         scene.cue = CueSpec{cue, strike, CueParams{}};
         out.cue_index[k] = cue;
         out.played[k] = strike;
-        play_one(scene, k, out);
+        if (one) {
+          Simulation sim(scene);
+          play_one(sim, k, out);
+        } else {
+          Simulation sim(std::move(scene));
+          play_one(sim, k, out);
+        }
       }
     } catch (...) {
       errors[w] = std::current_exception();
