@@ -12,14 +12,14 @@ from __future__ import annotations
 from . import _core
 from .errors import ScenarioError
 from .result import Result
-from .shots import ShotResults, shots
+from .batch import STRIKE_COLUMNS, ShotResults, shots
 
 __version__ = _core.version
 Scenario = _core.Scenario
 Simulation = _core.Simulation
 
 __all__ = ["__version__", "Scenario", "ScenarioError", "Result", "simulate",
-           "Simulation", "shots", "ShotResults"]
+           "Simulation", "shots", "ShotResults", "STRIKE_COLUMNS"]
 
 
 def simulate(scenario) -> Result:

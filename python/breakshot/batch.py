@@ -41,7 +41,7 @@ class ShotResults:
     - ``miscue``: bool (k,), the tip offset was beyond the miscue limit
       (nothing was played).
     - ``played``: float64 (k, 5), the strikes actually played (columns
-      ``STRIKE_COLUMNS``); equal to the strikes given unless ``noise``.
+      ``breakshot.STRIKE_COLUMNS``); equal to the strikes given unless ``noise``.
     """
 
     __slots__ = (
