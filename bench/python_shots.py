@@ -1,17 +1,18 @@
 #!/usr/bin/env python3
 """breakshot.shots against bench_pool's BM_RandomShot15, in one run.
 
-    .venv/bin/python bench/python_shots.py [--build build/release] [--rounds 5]
+    .venv/bin/python bench/python_shots.py [--build build/release] [--rounds 5] [--batches 3]
 
 Plays the 4096 random 15-ball layouts and strikes of BM_RandomShot15
 (bench/random_shots.hpp, written as JSON by export_random_shots: numpy has
 no mt19937_64) with breakshot.shots on one thread and on two, runs the C++
 benchmark (bench_pool --benchmark_filter=BM_RandomShot15, JSON output), and
 prints the time per shot of each, Python's overhead per shot against C++
-and the speedup on two threads. Each Python figure is the median over
---rounds batches of all 4096 shots; the layouts are read into
-breakshot.Scenario objects once, before timing (docs/performance.md,
-"Python").
+and the speedup on two threads. The three are measured in turn, --rounds
+times, and each figure is the median of its rounds (a Python measurement
+is the median of --batches batches of all 4096 shots; a C++ one is
+bench_pool's). The layouts are read into breakshot.Scenario objects once,
+before timing (docs/performance.md, "Python").
 """
 
 from __future__ import annotations
@@ -44,11 +45,11 @@ def cxx_per_shot_us(build: Path, repetitions: int) -> float:
     return statistics.median(b["real_time"] * scale[b["time_unit"]] for b in runs)
 
 
-def python_per_shot_us(scenarios, strikes, threads: int, rounds: int):
-    """The median time per shot of breakshot.shots over `rounds` batches."""
+def python_per_shot_us(scenarios, strikes, threads: int, batches: int):
+    """The median time per shot of breakshot.shots over `batches` batches."""
     times = []
     result = None
-    for _ in range(rounds):
+    for _ in range(batches):
         t0 = time.perf_counter()
         result = breakshot.shots(scenarios, strikes, threads=threads)
         times.append(time.perf_counter() - t0)
@@ -60,9 +61,9 @@ def main() -> int:
     ap.add_argument("--build", type=Path, default=ROOT / "build" / "release",
                     help="the release build with bench_pool and export_random_shots")
     ap.add_argument("--rounds", type=int, default=5,
-                    help="batches of 4096 shots per Python figure (median)")
-    ap.add_argument("--repetitions", type=int, default=3,
-                    help="bench_pool repetitions (median)")
+                    help="rounds of the three measurements (each figure: the median)")
+    ap.add_argument("--batches", type=int, default=3,
+                    help="batches of 4096 shots per Python measurement (median)")
     args = ap.parse_args()
 
     text = subprocess.run([str(args.build / "bench" / "export_random_shots")],
@@ -72,11 +73,17 @@ def main() -> int:
     strikes = np.array(data["strikes"], dtype=np.float64)
     load_before = os.getloadavg()
 
-    # Python first on one thread, then C++, then two threads: a change in
-    # the machine's load shows as a spread between runs of the script.
-    py1, r1 = python_per_shot_us(scenarios, strikes, 1, args.rounds)
-    cxx = cxx_per_shot_us(args.build, args.repetitions)
-    py2, r2 = python_per_shot_us(scenarios, strikes, 2, args.rounds)
+    # The three figures are taken in turn, --rounds times, and each is the
+    # median of its rounds: a change in the machine's load during the run
+    # then weighs on all three alike.
+    py1s, cxxs, py2s = [], [], []
+    for _ in range(args.rounds):
+        t, r1 = python_per_shot_us(scenarios, strikes, 1, args.batches)
+        py1s.append(t)
+        cxxs.append(cxx_per_shot_us(args.build, 1))
+        t, r2 = python_per_shot_us(scenarios, strikes, 2, args.batches)
+        py2s.append(t)
+    py1, cxx, py2 = (statistics.median(x) for x in (py1s, cxxs, py2s))
     load_after = os.getloadavg()
 
     same = all(np.array_equal(getattr(r1, a), getattr(r2, a))
