@@ -20,7 +20,7 @@ set(BREAKSHOT_LAYER_io_BELOW game physics)
 set(BREAKSHOT_LAYER_physics_HEADERS
   ball cluster_impact detmath event lab physics pool roots scenario simulation table vec
   version)
-set(BREAKSHOT_LAYER_game_HEADERS game match noise player rack record session)
+set(BREAKSHOT_LAYER_game_HEADERS batch game match noise player rack record session)
 set(BREAKSHOT_LAYER_ai_HEADERS ai players pot_map)
 set(BREAKSHOT_LAYER_io_HEADERS scenario_io record_io match_io plot)
 # Headers of the programs on top (src/web is the server of `breakshot

@@ -19,6 +19,7 @@
 #include "breakshot/version.hpp"
 
 // game: the rules, racks, noise, a game in progress, records, matches
+#include "breakshot/batch.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/match.hpp"
 #include "breakshot/noise.hpp"

@@ -51,6 +51,8 @@ class Simulation {
  public:
   /// The scenario must be valid (see validate()).
   explicit Simulation(const Scenario& scenario);
+  /// The same, taking the scenario over instead of copying it.
+  explicit Simulation(Scenario&& scenario);
 
   /// Copying saves the whole state; assigning a copy back restores it
   /// (and reuses this one's memory).

@@ -16,11 +16,14 @@ from .pot_maps import PotMap, pot_chance, pot_map
 from .result import Result
 from .game import (Call, Decide, Game, LegalActions, Outcome, PlaceCue, Player, Shot, State,
                    action_from_dict, games, match, match_json, mix_seed, players)
+from .batch import STRIKE_COLUMNS, ShotResults, shots
 
 __version__ = _core.version
 Scenario = _core.Scenario
+Simulation = _core.Simulation
 
-__all__ = ["__version__", "Scenario", "ScenarioError", "Result", "simulate"]
+__all__ = ["__version__", "Scenario", "ScenarioError", "Result", "simulate",
+           "Simulation", "shots", "ShotResults", "STRIKE_COLUMNS"]
 __all__ += ["Game", "State", "LegalActions", "Outcome", "Shot", "PlaceCue", "Decide", "Call",
             "action_from_dict", "Player", "games", "players", "match", "match_json", "mix_seed"]
 __all__ += ["Frames", "PotMap", "pot_chance", "pot_map"]

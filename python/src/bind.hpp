@@ -29,6 +29,8 @@ std::string scenario_text(py::handle obj);
 
 void bind_errors(py::module_& m);
 void bind_scenario(py::module_& m);
+void bind_simulation(py::module_& m);
+void bind_shots(py::module_& m);
 void bind_game(py::module_& m);
 void bind_plot(py::module_& m);
 

@@ -11,6 +11,8 @@ PYBIND11_MODULE(_core, m) {
   m.attr("version") = std::string(breakshot::kVersion);
   bp::bind_errors(m);
   bp::bind_scenario(m);
+  bp::bind_simulation(m);
+  bp::bind_shots(m);
   bp::bind_game(m);
   bp::bind_plot(m);
 }

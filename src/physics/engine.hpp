@@ -47,6 +47,8 @@ class Engine {
  public:
   // The scenario must be valid (see validate()).
   explicit Engine(const Scenario& scenario);
+  /// Takes the scenario over instead of copying it.
+  explicit Engine(Scenario&& scenario);
 
   // What Simulation offers, with the same meaning (simulation.hpp).
   double time() const { return now_; }
@@ -78,6 +80,7 @@ class Engine {
 
  private:
   // --- set-up (engine_setup.cpp, and the files named)
+  void set_up();  // everything the constructors do after taking the scenario
   void set_up_balls();
   void reserve_events();
   void reserve_cluster_work();     // collide_cluster.cpp

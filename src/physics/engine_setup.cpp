@@ -4,12 +4,17 @@
 // those concepts.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "physics/engine.hpp"
 
 namespace breakshot::detail {
 
-Engine::Engine(const Scenario& scenario) : scenario_(scenario) {
+Engine::Engine(const Scenario& scenario) : scenario_(scenario) { set_up(); }
+
+Engine::Engine(Scenario&& scenario) : scenario_(std::move(scenario)) { set_up(); }
+
+void Engine::set_up() {
   set_up_balls();
   reserve_events();
   reserve_cluster_work();

@@ -2,12 +2,17 @@
 // copyable value that owns the working state of one run.
 #include "breakshot/simulation.hpp"
 
+#include <utility>
+
 #include "physics/engine.hpp"
 
 namespace breakshot {
 
 Simulation::Simulation(const Scenario& scenario)
     : engine_(std::make_unique<detail::Engine>(scenario)) {}
+
+Simulation::Simulation(Scenario&& scenario)
+    : engine_(std::make_unique<detail::Engine>(std::move(scenario))) {}
 
 Simulation::Simulation(const Simulation& other)
     : engine_(other.engine_ ? std::make_unique<detail::Engine>(*other.engine_) : nullptr) {}
