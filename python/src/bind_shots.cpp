@@ -120,8 +120,10 @@ void bind_shots(py::module_& m) {
           ptrs.push_back(&read.back());
         }
         for (std::size_t j = 0; j < ptrs.size(); ++j) {
-          const std::string where = one ? "" : "scenarios[" + std::to_string(j) + "].";
-          if (auto e = check_shot_scenario(*ptrs[j], where)) throw ScenarioRefused{*e};
+          if (auto e = check_shot_scenario(*ptrs[j], "")) {
+            if (!one) e->path = "scenarios[" + std::to_string(j) + "]." + e->path;
+            throw ScenarioRefused{*e};
+          }
         }
 
         if (strikes.ndim() != 2 || strikes.shape(1) != 5) {

@@ -47,8 +47,7 @@ std::size_t worker_count(unsigned requested, std::size_t n) {
 void play_one(Simulation& sim, std::size_t k, ShotBatch& out) {
   const std::size_t n = out.balls;
   const Scenario& work = sim.scenario();
-  const StopReason r =
-      work.until.rest ? sim.advance_to_rest() : sim.advance_to(work.until.time);
+  const StopReason r = work.until.rest ? sim.advance_to_rest() : sim.advance_to(work.until.time);
   out.complete[k] = r == StopReason::reached ? 1 : 0;
   out.final_times[k] = sim.time();
   out.event_counts[k] = sim.event_count();
@@ -62,7 +61,8 @@ void play_one(Simulation& sim, std::size_t k, ShotBatch& out) {
   for (const Event& e : sim.events()) {
     switch (e.type) {
       case EventType::ball_ball:
-        if (first < 0 && (e.ball == cue || e.other == cue)) first = e.ball == cue ? e.other : e.ball;
+        if (first < 0 && (e.ball == cue || e.other == cue))
+          first = e.ball == cue ? e.other : e.ball;
         break;
       case EventType::ball_cushion:
         if (e.ball >= 0 && static_cast<std::size_t>(e.ball) < n) {
@@ -125,22 +125,25 @@ std::optional<ScenarioError> check_shot_scenario(const Scenario& s, const std::s
 }
 
 std::optional<ScenarioError> check_strike(const CueStrike& k, std::size_t index) {
-  const std::string at = "strikes[" + std::to_string(index) + "].";
+  // The path is built only for a refusal: this runs once a shot.
+  const auto at = [index](const char* field) {
+    return "strikes[" + std::to_string(index) + "]." + field;
+  };
   if (!(std::isfinite(k.speed) && k.speed > 0.0)) {
-    return ScenarioError{at + "speed", "must be finite and positive, not " + num(k.speed)};
+    return ScenarioError{at("speed"), "must be finite and positive, not " + num(k.speed)};
   }
-  if (!std::isfinite(k.phi)) return ScenarioError{at + "phi", "must be finite, not " + num(k.phi)};
+  if (!std::isfinite(k.phi)) return ScenarioError{at("phi"), "must be finite, not " + num(k.phi)};
   if (!(k.theta >= 0.0 && k.theta < 90.0)) {
-    return ScenarioError{at + "theta",
+    return ScenarioError{at("theta"),
                          "the cue elevation must be in [0, 90) degrees, not " + num(k.theta)};
   }
-  if (!std::isfinite(k.a)) return ScenarioError{at + "a", "must be finite, not " + num(k.a)};
-  if (!std::isfinite(k.b)) return ScenarioError{at + "b", "must be finite, not " + num(k.b)};
+  if (!std::isfinite(k.a)) return ScenarioError{at("a"), "must be finite, not " + num(k.a)};
+  if (!std::isfinite(k.b)) return ScenarioError{at("b"), "must be finite, not " + num(k.b)};
   return std::nullopt;
 }
 
-ShotBatch play_shots(std::span<const Scenario* const> scenarios,
-                     std::span<const CueStrike> strikes, const ShotBatchOptions& options) {
+ShotBatch play_shots(std::span<const Scenario* const> scenarios, std::span<const CueStrike> strikes,
+                     const ShotBatchOptions& options) {
   const auto refuse = [](const ScenarioError& e) {
     throw std::invalid_argument(e.path + ": " + e.reason);
   };
@@ -154,12 +157,16 @@ ShotBatch play_shots(std::span<const Scenario* const> scenarios,
   const bool one = scenarios.size() == 1;
   const std::size_t n = scenarios[0]->balls.size();
   for (std::size_t j = 0; j < scenarios.size(); ++j) {
-    const std::string where = one ? "" : "scenarios[" + std::to_string(j) + "].";
-    if (auto e = check_shot_scenario(*scenarios[j], where)) refuse(*e);
+    // The path's prefix is built only for a refusal.
+    const auto where = [&] { return one ? "" : "scenarios[" + std::to_string(j) + "]."; };
+    if (auto e = check_shot_scenario(*scenarios[j], "")) {
+      e->path = where() + e->path;
+      refuse(*e);
+    }
     if (scenarios[j]->balls.size() != n) {
-      refuse({where + "balls", "has " + std::to_string(scenarios[j]->balls.size()) +
-                                   " balls, scenarios[0] has " + std::to_string(n) +
-                                   " (every scenario of a batch has the same number)"});
+      refuse({where() + "balls", "has " + std::to_string(scenarios[j]->balls.size()) +
+                                     " balls, scenarios[0] has " + std::to_string(n) +
+                                     " (every scenario of a batch has the same number)"});
     }
   }
   for (std::size_t k = 0; k < k_count; ++k) {
@@ -185,6 +192,10 @@ ShotBatch play_shots(std::span<const Scenario* const> scenarios,
 
   std::atomic<std::size_t> next{0};
   const std::size_t workers = worker_count(options.threads, k_count);
+  // Threads take runs of consecutive shots, so that neighbouring shots'
+  // entries (which share cache lines) are mostly written by one thread;
+  // runs stay short enough to keep the threads' shares even.
+  const std::size_t chunk = std::clamp<std::size_t>(k_count / (workers * 16), 1, 16);
   std::vector<std::exception_ptr> errors(workers);
   const auto work = [&](std::size_t w) {
     try {
@@ -194,25 +205,28 @@ ShotBatch play_shots(std::span<const Scenario* const> scenarios,
       // into its Simulation, so a shot copies its scenario once either way.
       Scenario scene;
       bool loaded = false;
-      for (std::size_t k = next.fetch_add(1); k < k_count; k = next.fetch_add(1)) {
-        if (!one || !loaded) scene = *scenarios[one ? 0 : k];
-        loaded = true;
-        const std::int32_t cue = cue_ball(scene);
-        CueStrike strike = strikes[k];
-        if (noisy) {
-          strike = perturb(strike, options.noise,
-                           scene.balls[static_cast<std::size_t>(cue)].radius,
-                           mix_seed(options.seed, k));
-        }
-        scene.cue = CueSpec{cue, strike, CueParams{}};
-        out.cue_index[k] = cue;
-        out.played[k] = strike;
-        if (one) {
-          Simulation sim(scene);
-          play_one(sim, k, out);
-        } else {
-          Simulation sim(std::move(scene));
-          play_one(sim, k, out);
+      for (std::size_t first = next.fetch_add(chunk); first < k_count;
+           first = next.fetch_add(chunk)) {
+        for (std::size_t k = first; k < std::min(first + chunk, k_count); ++k) {
+          if (!one || !loaded) scene = *scenarios[one ? 0 : k];
+          loaded = true;
+          const std::int32_t cue = cue_ball(scene);
+          CueStrike strike = strikes[k];
+          if (noisy) {
+            strike =
+                perturb(strike, options.noise, scene.balls[static_cast<std::size_t>(cue)].radius,
+                        mix_seed(options.seed, k));
+          }
+          scene.cue = CueSpec{cue, strike, CueParams{}};
+          out.cue_index[k] = cue;
+          out.played[k] = strike;
+          if (one) {
+            Simulation sim(scene);
+            play_one(sim, k, out);
+          } else {
+            Simulation sim(std::move(scene));
+            play_one(sim, k, out);
+          }
         }
       }
     } catch (...) {
