@@ -4,6 +4,8 @@
 //   breakshot simulate FILE|- [-o PATH] [--plot PREFIX]
 //   breakshot match --game eight_ball|nine_ball --players A,B --games N
 //                   --seed S --noise LEVEL [--table 7ft|8ft|9ft] [--records DIR] [--timing]
+//                   [--first-game N]
+//   breakshot match-sum SUMMARY...
 //     (--noise is the noise of players without one of their own; AI levels
 //     shoot with their level's noise)
 //   breakshot replay RECORD|-
@@ -15,7 +17,10 @@
 // argument (named on standard error), 1 anything else. replay: 0 the
 // record replays identical, 4 it differs (what and where on standard
 // output), 2 the record cannot be read or is invalid (standard error
-// names the JSON path), 1 anything else.
+// names the JSON path), 1 anything else. match-sum: 0 summed (the summary
+// on standard output), 2 a summary cannot be read, is invalid or is not of
+// the same match as the others (standard error names the file and the
+// problem), 1 anything else.
 
 #include <atomic>
 #include <cerrno>
@@ -29,6 +34,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <new>
 #include <sstream>
 #include <stdexcept>
@@ -192,6 +198,7 @@ struct MatchArgs {
   std::string noise;
   std::string table = "9ft";
   std::string records;
+  std::string first_game = "0";
   bool timing = false;
 };
 
@@ -225,6 +232,14 @@ bs::MatchOptions match_options(const MatchArgs& a) {
 
   if (!parse_whole(a.games, opt.games) || opt.games < 1) {
     throw BadArgument{"--games: expected a whole number of games >= 1, not '" + a.games + "'"};
+  }
+  if (!parse_whole(a.first_game, opt.first_game) || opt.first_game < 0) {
+    throw BadArgument{"--first-game: expected a whole number >= 0, not '" + a.first_game + "'"};
+  }
+  if (opt.first_game > std::numeric_limits<int>::max() - opt.games) {
+    throw BadArgument{"--first-game: --first-game + --games must be at most " +
+                      std::to_string(std::numeric_limits<int>::max()) + ", not " +
+                      a.first_game + " + " + a.games};
   }
   if (!parse_whole(a.seed, opt.seed)) {
     throw BadArgument{"--seed: expected a whole number in [0, 2^64), not '" + a.seed + "'"};
@@ -260,6 +275,42 @@ int run_match(const MatchArgs& args) {
     // A record that cannot be written: the message names the path.
     throw Failure{e.what()};
   }
+  return kExitOk;
+}
+
+/// `match-sum`: the summaries of chunks of one match added together.
+int run_match_sum(const std::vector<std::string>& files) {
+  bs::MatchSummary sum;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string& file = files[i];
+    std::string text;
+    try {
+      text = read_input(file);
+    } catch (const Failure& f) {
+      std::cerr << "breakshot: " << f.message << '\n';
+      return kExitInvalid;
+    }
+    const std::string name = file == "-" ? "standard input" : file;
+    bs::MatchSummary part;
+    try {
+      part = bs::read_match_summary(text);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "breakshot: invalid summary " << name << ": " << e.what() << '\n';
+      return kExitInvalid;
+    }
+    if (i == 0) {
+      sum = std::move(part);
+      continue;
+    }
+    try {
+      bs::add_summary(sum, part);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "breakshot: cannot add " << name << " to "
+                << (i == 1 ? files[0] : "the summaries before it") << ": " << e.what() << '\n';
+      return kExitInvalid;
+    }
+  }
+  write_output("", bs::match_summary_json(sum));
   return kExitOk;
 }
 
@@ -345,7 +396,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer(
       "Run 'breakshot simulate --help' for the scenario file and exit status,\n"
-      "'breakshot match --help' and 'breakshot replay --help' for games,\n"
+      "'breakshot match --help', 'breakshot match-sum --help' and\n"
+      "'breakshot replay --help' for games,\n"
       "'breakshot serve --help' for the browser game and lab.\n"
       "The scenario and result file formats are described in docs/scenario.md.");
 
@@ -393,6 +445,10 @@ int main(int argc, char** argv) {
   match->add_option("--records", match_args.records,
                     "Write each game's record to DIR/game-0001.json, ... (DIR is created)")
       ->type_name("DIR");
+  match->add_option("--first-game", match_args.first_game,
+                    "Play games N .. N + games - 1 of the match (default 0): each game is played "
+                    "as in one long match, so chunks of a match can be summed (match-sum)")
+      ->type_name("N");
   match->add_flag("--timing", match_args.timing,
                   "Add each player's decision times (median, p90, max seconds) to the summary; "
                   "they vary from run to run");
@@ -402,9 +458,35 @@ int main(int argc, char** argv) {
       "\n"
       "Exit status:\n"
       "  0  played; the summary JSON is on standard output\n"
-      "  2  a bad argument (unknown game, player or table, games < 1, bad seed\n"
-      "     or noise): standard error names it\n"
-      "  1  anything else (a record cannot be written, a missing option)");
+      "  2  a bad argument (unknown game, player or table, games < 1, bad seed,\n"
+      "     noise or first game): standard error names it\n"
+      "  1  anything else (a record cannot be written, a missing option)\n"
+      "\n"
+      "A long match can be played in chunks: --first-game N --games K plays games\n"
+      "N .. N+K-1 exactly as one match from game 0 plays them (records are\n"
+      "numbered game-(N+1).json, ...), and its summary says \"first_game\": N.\n"
+      "'breakshot match-sum' adds the chunks' summaries into the match's.");
+
+  std::vector<std::string> sum_files;
+  CLI::App* msum = app.add_subcommand(
+      "match-sum", "Add the summaries of chunks of one match (match --first-game) together");
+  msum->add_option("SUMMARY", sum_files,
+                   "Summary files (JSON, as 'breakshot match' prints them), or - for standard "
+                   "input")
+      ->required();
+  msum->footer(
+      "Prints the summary of all the games the files cover, exactly the bytes\n"
+      "that one 'breakshot match' over those games prints when they are games\n"
+      "0 .. N-1 (with \"first_game\" or \"game_ranges\" otherwise). The files\n"
+      "must be of one match (game, table, seed, noise and players) and cover\n"
+      "different games; any order. --timing summaries cannot be summed.\n"
+      "\n"
+      "Exit status:\n"
+      "  0  summed; the summary JSON is on standard output\n"
+      "  2  a file cannot be read, is not a summary, or does not belong with the\n"
+      "     others (another match, or games already covered): standard error\n"
+      "     names the file and the field\n"
+      "  1  anything else");
 
   std::string record_file;
   CLI::App* rep = app.add_subcommand(
@@ -447,6 +529,7 @@ int main(int argc, char** argv) {
 
   try {
     if (match->parsed()) return run_match(match_args);
+    if (msum->parsed()) return run_match_sum(sum_files);
     if (rep->parsed()) return run_replay(record_file);
     if (srv->parsed()) return run_serve(serve_args);
     return run_simulate(opt);

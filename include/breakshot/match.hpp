@@ -38,6 +38,12 @@ struct MatchOptions {
   std::string table_size = "9ft";
   std::array<std::string, 2> players;  ///< the seats' names (players.hpp: make_player)
   int games = 1;
+  /// The index of the first game played: a match of `games` games plays
+  /// games first_game .. first_game + games - 1, each exactly as one long
+  /// match from game 0 plays it (game g is seeded by g alone), so a long
+  /// match can be played in chunks and their summaries added
+  /// (add_summary). At least 0, and first_game + games must fit an int.
+  int first_game = 0;
   std::uint64_t seed = 0;
   /// The noise of players without a noise of their own (Player::noise()).
   NoiseModel noise;
@@ -88,11 +94,24 @@ struct PlayerStats {
   double pot_rate() const;
 };
 
+/// Games first .. first + count - 1 of a match.
+struct GameRange {
+  int first = 0;
+  int count = 0;
+  bool operator==(const GameRange&) const = default;
+};
+
 struct MatchSummary {
   GameType game = GameType::eight_ball;
   std::string table_size = "9ft";
   std::uint64_t seed = 0;
   NoiseModel noise;  ///< the match's noise (MatchOptions::noise)
+  /// The games the summary covers, by index: ascending, disjoint and
+  /// never adjacent (adjacent ranges are one range). play_match sets one
+  /// range (first_game, games); add_summary joins two summaries' ranges.
+  /// Empty for an empty_summary; add_game leaves it alone (a record does
+  /// not know its index).
+  std::vector<GameRange> ranges;
   int games_played = 0;
   int draws = 0;  ///< games ended by the stalemate clause
   std::array<PlayerStats, 2> players;
@@ -111,16 +130,31 @@ MatchSummary empty_summary(const MatchOptions& options,
 /// a game that is not over.
 void add_game(MatchSummary& summary, const GameRecord& record);
 
+/// Adds `part`, the summary of other games of the same match, into
+/// `into`: every count (games, draws, each player's wins, breaks,
+/// innings, shots, balls, pot attempts and pots made, fouls by kind) is
+/// summed, decision times are appended, and the game ranges are joined.
+/// The rates (balls_per_inning, pot_rate) are derived from the summed
+/// counts, so adding the summaries of chunks that cover games 0 .. N-1,
+/// in any grouping and any order, gives the summary of one match of N
+/// games, equal in every field. Throws std::invalid_argument naming the
+/// field (nothing added) when the two are not of the same match (game,
+/// table_size, seed, noise, a player's name or noise, the foul kinds) or
+/// when their games overlap.
+void add_summary(MatchSummary& into, const MatchSummary& part);
+
 /// Where a match sends each finished game's record: game g (from 0) and
 /// its record. io's record_files (match_io.hpp) writes them to a folder.
 using RecordSink = std::function<void(int game, const GameRecord& record)>;
 
-/// Plays options.games games between p0 (seat 0) and p1: game g (from 0)
-/// is broken by seat g % 2, with the game seed mix_seed(options.seed, g).
-/// Each record goes to `sink` (if any) as soon as the game ends.
+/// Plays options.games games between p0 (seat 0) and p1, games
+/// options.first_game .. first_game + games - 1: game g is broken by seat
+/// g % 2, with the game seed mix_seed(options.seed, g). Each record goes
+/// to `sink` (if any) with its index g as soon as the game ends.
 /// options.players are the names the summary gives the seats. Throws
 /// std::invalid_argument for bad options (an unknown table, fewer than one
-/// game), and whatever play_game and the sink throw.
+/// game, a negative first_game or a first_game + games beyond INT_MAX),
+/// and whatever play_game and the sink throw.
 MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
                         const RecordSink& sink = {});
 

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -220,11 +221,117 @@ void add_game(MatchSummary& summary, const GameRecord& record) {
   }
 }
 
+namespace {
+
+std::string range_text(const GameRange& r) {
+  return r.count == 1 ? "game " + std::to_string(r.first)
+                      : "games " + std::to_string(r.first) + " to " +
+                            std::to_string(r.first + r.count - 1);
+}
+
+/// The union of two sets of ranges (each ascending, disjoint, never
+/// adjacent), in the same form; std::invalid_argument if they overlap.
+std::vector<GameRange> join_ranges(const std::vector<GameRange>& a,
+                                   const std::vector<GameRange>& b) {
+  std::vector<GameRange> all(a);
+  all.insert(all.end(), b.begin(), b.end());
+  std::sort(all.begin(), all.end(),
+            [](const GameRange& x, const GameRange& y) { return x.first < y.first; });
+  std::vector<GameRange> out;
+  for (const GameRange& r : all) {
+    if (r.count <= 0) continue;
+    if (!out.empty()) {
+      GameRange& last = out.back();
+      // 64 bits: first + count of a range read from a file may pass INT_MAX.
+      const std::int64_t last_end = std::int64_t{last.first} + last.count;
+      if (r.first < last_end) {
+        const std::int64_t end = std::min(last_end, std::int64_t{r.first} + r.count);
+        throw std::invalid_argument(
+            "first_game: the summaries overlap: " +
+            range_text(GameRange{r.first, static_cast<int>(end - r.first)}) + " are in both");
+      }
+      if (r.first == last_end) {
+        last.count += r.count;
+        continue;
+      }
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
+void same(const std::string& field, const std::string& a, const std::string& b) {
+  if (a != b) {
+    throw std::invalid_argument(field + ": the summaries are of different matches ('" + a +
+                                "' and '" + b + "')");
+  }
+}
+
+}  // namespace
+
+void add_summary(MatchSummary& into, const MatchSummary& part) {
+  same("game", std::string(to_string(into.game)), std::string(to_string(part.game)));
+  same("table_size", into.table_size, part.table_size);
+  same("seed", std::to_string(into.seed), std::to_string(part.seed));
+  same("noise", to_string(into.noise), to_string(part.noise));
+  for (std::size_t p = 0; p < 2; ++p) {
+    const std::string at = "players[" + std::to_string(p) + "].";
+    const PlayerStats& a = into.players[p];
+    const PlayerStats& b = part.players[p];
+    same(at + "name", a.name, b.name);
+    same(at + "noise", a.noise, b.noise);
+    std::string ka;
+    std::string kb;
+    for (const auto& f : a.fouls) ka += (ka.empty() ? "" : ", ") + f.first;
+    for (const auto& f : b.fouls) kb += (kb.empty() ? "" : ", ") + f.first;
+    same(at + "fouls", ka, kb);
+  }
+  // Everything that can throw is done before the first change.
+  std::vector<GameRange> ranges = join_ranges(into.ranges, part.ranges);
+  const auto add = [](int& to, int n, const char* field) {
+    if (n > std::numeric_limits<int>::max() - to) {
+      throw std::invalid_argument(std::string(field) + ": the sum passes " +
+                                  std::to_string(std::numeric_limits<int>::max()));
+    }
+    to += n;
+  };
+  MatchSummary sum = into;
+  sum.ranges = std::move(ranges);
+  add(sum.games_played, part.games_played, "games_played");
+  add(sum.draws, part.draws, "draws");
+  for (std::size_t p = 0; p < 2; ++p) {
+    PlayerStats& to = sum.players[p];
+    const PlayerStats& from = part.players[p];
+    add(to.games_won, from.games_won, "games_won");
+    add(to.breaks, from.breaks, "breaks");
+    add(to.break_and_runs, from.break_and_runs, "break_and_runs");
+    add(to.innings, from.innings, "innings");
+    add(to.shots, from.shots, "shots");
+    add(to.balls_pocketed, from.balls_pocketed, "balls_pocketed");
+    add(to.pot_attempts, from.pot_attempts, "pot_attempts");
+    add(to.pots_made, from.pots_made, "pots_made");
+    for (const auto& [kind, count] : from.fouls) add(to.fouls[kind], count, "fouls");
+    to.decision_seconds.insert(to.decision_seconds.end(), from.decision_seconds.begin(),
+                               from.decision_seconds.end());
+  }
+  into = std::move(sum);
+}
+
 MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
                         const RecordSink& sink) {
   if (options.games < 1) {
     throw std::invalid_argument("the number of games must be at least 1, not " +
                                 std::to_string(options.games));
+  }
+  if (options.first_game < 0) {
+    throw std::invalid_argument("first_game: must be 0 or more, not " +
+                                std::to_string(options.first_game));
+  }
+  if (options.first_game > std::numeric_limits<int>::max() - options.games) {
+    throw std::invalid_argument("first_game: first_game + games (" +
+                                std::to_string(options.first_game) + " + " +
+                                std::to_string(options.games) + ") passes " +
+                                std::to_string(std::numeric_limits<int>::max()));
   }
   const Rules rules(config_of(options));
   MatchSummary summary = empty_summary_with(
@@ -234,7 +341,9 @@ MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
   TimedPlayer t1(p1, summary.players[1].decision_seconds);
   Player& s0 = options.timing ? static_cast<Player&>(t0) : p0;
   Player& s1 = options.timing ? static_cast<Player&>(t1) : p1;
-  for (int g = 0; g < options.games; ++g) {
+  summary.ranges = {GameRange{options.first_game, options.games}};
+  const int end = options.first_game + options.games;
+  for (int g = options.first_game; g < end; ++g) {
     const GameRecord record = play_game(rules, s0, s1, g % 2,
                                         mix_seed(options.seed, static_cast<std::uint64_t>(g)),
                                         options.noise);
