@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,28 @@ struct MatchOptions {
   /// the figures in the summary. Off by default: times differ from run to
   /// run, and without them the summary is a function of the options.
   bool timing = false;
+  /// When a game fails (play_game throws), throw a MatchGameError naming
+  /// the game and its seed instead of the game's own exception, so that
+  /// the game can be played again alone (first_game = g, games = 1). Off
+  /// by default.
+  bool name_failing_game = false;
+};
+
+/// A game of a match failed (MatchOptions::name_failing_game). what() is
+/// "game G (seed S): " and the game's own message; S is the game's seed,
+/// mix_seed(match seed, G).
+class MatchGameError : public std::runtime_error {
+ public:
+  MatchGameError(int game, std::uint64_t game_seed, const std::string& reason);
+  int game() const { return game_; }
+  std::uint64_t game_seed() const { return game_seed_; }
+  /// The game's own message.
+  const std::string& reason() const { return reason_; }
+
+ private:
+  int game_;
+  std::uint64_t game_seed_;
+  std::string reason_;
 };
 
 /// One player's figures over a match. Everything counts only the

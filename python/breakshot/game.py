@@ -697,30 +697,39 @@ def mix_seed(a: int, b: int) -> int:
 def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
                noise: str = "none", table: str = "9ft",
                records: Union[None, str, os.PathLike] = None,
-               threads: Optional[int] = None) -> str:
+               threads: Optional[int] = None, first_game: int = 0) -> str:
     """The summary text ``breakshot match`` prints for the same arguments
     (``--game``, ``--players a,b``, ``--games``, ``--seed``, ``--noise``,
-    ``--table``, ``--records DIR``), byte for byte. ``threads`` sets the
-    AI players' worker threads (the summary does not depend on it)."""
+    ``--table``, ``--records DIR``, ``--first-game``), byte for byte.
+    ``threads`` sets the AI players' worker threads (the summary does not
+    depend on it). ``first_game`` plays games first_game .. first_game +
+    games - 1 of the match, each exactly as one match from game 0 plays it;
+    such a chunk's summary says ``"first_game"`` and chunks add up
+    (``breakshot match-sum``)."""
     names = _pair(players, "players")
     if isinstance(players, str) or not all(isinstance(n, str) for n in names):
         raise ValueError("players: expected two player names")
     if isinstance(games, bool) or not isinstance(games, int):
         raise ValueError(f"games: expected a whole number of games >= 1, not {games!r}")
+    if isinstance(first_game, bool) or not isinstance(first_game, int) or first_game < 0:
+        raise ValueError(f"first_game: expected a whole number >= 0, not {first_game!r}")
     if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
                                 or threads < 1):
         raise ValueError(f"threads: expected a whole number >= 1 or None, not {threads!r}")
     return _core.match_json(game, list(names), games, _seed(seed), noise, table,
                             None if records is None else os.fspath(records),
-                            0 if threads is None else threads)
+                            0 if threads is None else threads, first_game)
 
 
 def match(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
           noise: str = "none", table: str = "9ft",
           records: Union[None, str, os.PathLike] = None,
-          threads: Optional[int] = None) -> dict:
+          threads: Optional[int] = None, first_game: int = 0) -> dict:
     """Plays a match as ``breakshot match`` does and returns its summary
     (the parsed JSON it prints: game, table, seed, noise, games_played,
     draws, players with their figures). ``records`` is a folder to write
-    every game's record to (game-0001.json, ...). See match_json."""
-    return json.loads(match_json(game, players, games, seed, noise, table, records, threads))
+    every game's record to (game-0001.json, ...). ``first_game`` plays
+    only games first_game .. first_game + games - 1 (``--first-game``).
+    See match_json."""
+    return json.loads(match_json(game, players, games, seed, noise, table, records, threads,
+                                 first_game))

@@ -1,6 +1,8 @@
 // Games, computer players and matches for Python: _core.GameCore (a
 // GameSession), _core.PlayerCore (a Player made by name) and
-// _core.match_json. Actions, states and rulings cross the boundary as the
+// _core.match_json, and the pieces of a match spread over many machines
+// (match_chunk, add_match_summaries, record_file_name, determinism_hash).
+// Actions, states and rulings cross the boundary as the
 // JSON of src/io/game_json.hpp, the one encoding the records use, so a
 // Python dict and a record's action are the same thing; the Python
 // classes (python/breakshot/game.py) build on these.
@@ -9,6 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -23,8 +27,11 @@
 #include "breakshot/ai.hpp"
 #include "breakshot/match_io.hpp"
 #include "breakshot/players.hpp"
+#include "breakshot/rack.hpp"
 #include "breakshot/record_io.hpp"
+#include "breakshot/scenario_io.hpp"
 #include "breakshot/session.hpp"
+#include "breakshot/simulation.hpp"
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
 
@@ -339,10 +346,9 @@ class PlayerCore {
   std::mutex mutex_;
 };
 
-std::string match_json(const std::string& game, const std::array<std::string, 2>& players,
-                       int games, std::uint64_t seed, const std::string& noise,
-                       const std::string& table, const std::optional<std::string>& records,
-                       int threads) {
+MatchOptions match_options(const std::string& game, const std::array<std::string, 2>& players,
+                           int games, std::uint64_t seed, const std::string& noise,
+                           const std::string& table, int first_game) {
   MatchOptions opt;
   opt.game = game_arg(game);
   opt.players = players;
@@ -351,12 +357,30 @@ std::string match_json(const std::string& game, const std::array<std::string, 2>
                                 std::to_string(games));
   }
   opt.games = games;
+  if (first_game < 0) {
+    throw std::invalid_argument("first_game: expected a whole number >= 0, not " +
+                                std::to_string(first_game));
+  }
+  if (first_game > std::numeric_limits<int>::max() - games) {
+    throw std::invalid_argument("first_game: first_game + games must be at most " +
+                                std::to_string(std::numeric_limits<int>::max()) + ", not " +
+                                std::to_string(first_game) + " + " + std::to_string(games));
+  }
+  opt.first_game = first_game;
   opt.seed = seed;
   opt.noise = noise_arg(noise, "noise");
   if (table != "7ft" && table != "8ft" && table != "9ft") {
     throw std::invalid_argument("table: unknown table size '" + table + "' (7ft, 8ft or 9ft)");
   }
   opt.table_size = table;
+  return opt;
+}
+
+std::string match_json(const std::string& game, const std::array<std::string, 2>& players,
+                       int games, std::uint64_t seed, const std::string& noise,
+                       const std::string& table, const std::optional<std::string>& records,
+                       int threads, int first_game) {
+  const MatchOptions opt = match_options(game, players, games, seed, noise, table, first_game);
   PlayerCore p0(players[0], threads);
   PlayerCore p1(players[1], threads);
   std::string text;
@@ -366,6 +390,96 @@ std::string match_json(const std::string& game, const std::array<std::string, 2>
     text = match_summary_json(play_match(opt, p0.player(), p1.player(), sink));
   }
   return text;
+}
+
+/// Games first_game .. first_game + games - 1 of a match: the summary
+/// text and, if asked, each game's record text by index. A failing game
+/// raises RuntimeError "game G (seed S): ..." (MatchGameError).
+std::pair<std::string, std::vector<std::pair<int, std::string>>> match_chunk(
+    const std::string& game, const std::array<std::string, 2>& players, std::uint64_t seed,
+    const std::string& noise, const std::string& table, int first_game, int games, int threads,
+    bool records) {
+  MatchOptions opt = match_options(game, players, games, seed, noise, table, first_game);
+  opt.name_failing_game = true;
+  PlayerCore p0(players[0], threads);
+  PlayerCore p1(players[1], threads);
+  std::vector<std::pair<int, std::string>> texts;
+  std::string summary;
+  {
+    py::gil_scoped_release release;
+    RecordSink sink;
+    if (records) {
+      sink = [&texts](int g, const GameRecord& r) { texts.emplace_back(g, write_record(r)); };
+    }
+    summary = match_summary_json(play_match(opt, p0.player(), p1.player(), sink));
+  }
+  return {std::move(summary), std::move(texts)};
+}
+
+std::string add_match_summaries(const std::vector<std::string>& texts) {
+  if (texts.empty()) throw std::invalid_argument("summaries: no summaries to add");
+  MatchSummary sum;
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    const std::string at = "summaries[" + std::to_string(i) + "]: ";
+    MatchSummary part;
+    try {
+      part = read_match_summary(texts[i]);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(at + e.what());
+    }
+    if (i == 0) {
+      sum = std::move(part);
+      continue;
+    }
+    try {
+      add_summary(sum, part);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(at + "cannot be added to the summaries before it: " + e.what());
+    }
+  }
+  return match_summary_json(sum);
+}
+
+std::string record_file_name_arg(int game) {
+  if (game < 0) {
+    throw std::invalid_argument("game: expected a game index >= 0, not " + std::to_string(game));
+  }
+  return record_file_name(game);
+}
+
+/// 64-bit FNV-1a.
+std::uint64_t fnv1a(std::uint64_t h, const std::string& bytes) {
+  for (const char c : bytes) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+/// A digest of what this build computes: the result file of a fixed 8-ball
+/// break (the physics) and the summary of a 2-game 9-ball match between
+/// the baseline and the beginner level with tournament noise (the rules,
+/// the noise, the AI). Two builds with the same digest play these the same
+/// to the bit; a build that differs gives another digest (almost surely).
+std::string determinism_hash() {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  {
+    py::gil_scoped_release release;
+    const Scenario scenario = make_break_scenario("eight_ball", "9ft", 1, 7.0);
+    h = fnv1a(h, write_result(scenario, simulate(scenario)));
+    MatchOptions opt;
+    opt.game = GameType::nine_ball;
+    opt.players = {"baseline", "beginner"};
+    opt.games = 2;
+    opt.seed = 1;
+    opt.noise = parse_noise("tournament");
+    PlayerCore p0("baseline", 1);
+    PlayerCore p1("beginner", 1);
+    h = fnv1a(h, match_summary_json(play_match(opt, p0.player(), p1.player())));
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
 }
 
 }  // namespace
@@ -414,8 +528,21 @@ void bind_game(py::module_& m) {
 
   m.def("match_json", &match_json, py::arg("game"), py::arg("players"), py::arg("games"),
         py::arg("seed"), py::arg("noise"), py::arg("table"), py::arg("records"),
-        py::arg("threads"),
+        py::arg("threads"), py::arg("first_game") = 0,
         "The summary text `breakshot match` prints for the same arguments.");
+  m.def("match_chunk", &match_chunk, py::arg("game"), py::arg("players"), py::arg("seed"),
+        py::arg("noise"), py::arg("table"), py::arg("first_game"), py::arg("games"),
+        py::arg("threads"), py::arg("records"),
+        "Games first_game .. first_game + games - 1 of a match (`breakshot match --first-game`):"
+        " (summary text, [(g, record text), ...] if records else []). A failing game raises"
+        " RuntimeError 'game G (seed S): ...'.");
+  m.def("add_match_summaries", &add_match_summaries, py::arg("texts"),
+        "The summary text of the summaries (texts) added together (`breakshot match-sum`).");
+  m.def("record_file_name", &record_file_name_arg, py::arg("g"),
+        "The name of game g's record file ('game-0001.json' for game 0).");
+  m.def("determinism_hash", &determinism_hash,
+        "A 16-hex-digit digest of a fixed break's result and a fixed 2-game match's summary:"
+        " builds that compute differently give different digests.");
 }
 
 }  // namespace breakshot::python

@@ -17,8 +17,11 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdint>
+#include <exception>
 #include <limits>
 #include <memory>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -221,6 +224,13 @@ void add_game(MatchSummary& summary, const GameRecord& record) {
   }
 }
 
+MatchGameError::MatchGameError(int game, std::uint64_t game_seed, const std::string& reason)
+    : std::runtime_error("game " + std::to_string(game) + " (seed " + std::to_string(game_seed) +
+                         "): " + reason),
+      game_(game),
+      game_seed_(game_seed),
+      reason_(reason) {}
+
 namespace {
 
 std::string range_text(const GameRange& r) {
@@ -247,8 +257,8 @@ std::vector<GameRange> join_ranges(const std::vector<GameRange>& a,
       if (r.first < last_end) {
         const std::int64_t end = std::min(last_end, std::int64_t{r.first} + r.count);
         throw std::invalid_argument(
-            "first_game: the summaries overlap: " +
-            range_text(GameRange{r.first, static_cast<int>(end - r.first)}) + " are in both");
+            "first_game: the summaries overlap: both cover " +
+            range_text(GameRange{r.first, static_cast<int>(end - r.first)}));
       }
       if (r.first == last_end) {
         last.count += r.count;
@@ -344,9 +354,19 @@ MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
   summary.ranges = {GameRange{options.first_game, options.games}};
   const int end = options.first_game + options.games;
   for (int g = options.first_game; g < end; ++g) {
-    const GameRecord record = play_game(rules, s0, s1, g % 2,
-                                        mix_seed(options.seed, static_cast<std::uint64_t>(g)),
-                                        options.noise);
+    const std::uint64_t game_seed = mix_seed(options.seed, static_cast<std::uint64_t>(g));
+    GameRecord record;
+    if (!options.name_failing_game) {
+      record = play_game(rules, s0, s1, g % 2, game_seed, options.noise);
+    } else {
+      try {
+        record = play_game(rules, s0, s1, g % 2, game_seed, options.noise);
+      } catch (const std::bad_alloc&) {
+        throw;
+      } catch (const std::exception& e) {
+        throw MatchGameError(g, game_seed, e.what());
+      }
+    }
     add_game(summary, record);
     if (sink) sink(g, record);
   }
