@@ -14,7 +14,8 @@ set -euo pipefail
 # font are what its browser tests drive (web/tests/browser.mjs, with
 # playwright-core from npm, which never downloads a browser). The Python
 # package (scripts/python.sh) is built with pybind11 against Debian's
-# python3 and uses its numpy, matplotlib and pytest.
+# python3 and uses its numpy, matplotlib and pytest; breakshot.distributed
+# runs on Dask (python3-distributed), with tqdm for its progress bars.
 required=(
   build-essential cmake ninja-build g++ clang libclang-rt-14-dev
   libgtest-dev googletest libbenchmark-dev
@@ -22,6 +23,7 @@ required=(
   emscripten chromium fonts-dejavu-core curl
   python3 python3-dev python3-venv python3-pip python3-setuptools python3-wheel
   python3-build pybind11-dev python3-numpy python3-matplotlib python3-pytest
+  python3-dask python3-distributed python3-tqdm
 )
 # Optional: rsvg-convert, to turn the SVG plots into PNG previews.
 optional=(librsvg2-bin)
