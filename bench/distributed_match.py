@@ -34,6 +34,8 @@ def main() -> int:
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--noise", default="none")
     ap.add_argument("--workers", default="1,2", help="worker counts to measure")
+    ap.add_argument("--chunk", type=int, default=None, help="games per task (default: the "
+                    "module's choice)")
     args = ap.parse_args()
     players = args.players.split(",")
     counts = [int(w) for w in args.workers.split(",")]
@@ -49,7 +51,7 @@ def main() -> int:
             bd.check_workers(client)
             t0 = time.perf_counter()
             text = bd.match_json(client, args.game, players, args.games, args.seed, args.noise,
-                                 progress=False)
+                                 chunk=args.chunk, progress=False)
             rates[w] = args.games / (time.perf_counter() - t0)
         if text != alone:
             print(f"the summary with {w} workers differs from one process's", file=sys.stderr)
@@ -57,7 +59,7 @@ def main() -> int:
 
     print(f"breakshot {breakshot.__version__}, {os.cpu_count()} cores; {args.game} "
           f"{args.players}, {args.games} games, seed {args.seed}, noise {args.noise}; "
-          f"1 thread per task")
+          f"1 thread per task, chunk {args.chunk or 'default'}")
     print(f"one process, no Dask      {args.games / t_alone:8.2f} games/s")
     base = rates.get(1)
     for w in counts:
