@@ -27,11 +27,16 @@ Scenario scenario_arg(py::handle obj);
 /// (breakshot._input.scenario_text).
 std::string scenario_text(py::handle obj);
 
+/// A table's outline and pockets as the plots and pot maps pass them
+/// (bind_plot.cpp).
+py::dict table_dict(const Table& t);
+
 void bind_errors(py::module_& m);
 void bind_scenario(py::module_& m);
 void bind_simulation(py::module_& m);
 void bind_shots(py::module_& m);
 void bind_game(py::module_& m);
 void bind_plot(py::module_& m);
+void bind_pot_map(py::module_& m);
 
 }  // namespace breakshot::python

@@ -15,4 +15,5 @@ PYBIND11_MODULE(_core, m) {
   bp::bind_shots(m);
   bp::bind_game(m);
   bp::bind_plot(m);
+  bp::bind_pot_map(m);
 }
