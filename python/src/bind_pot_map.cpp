@@ -150,8 +150,8 @@ void bind_pot_map(py::module_& m) {
          const py::array_t<double, py::array::c_style | py::array::forcecast>& positions,
          const py::array_t<bool, py::array::c_style | py::array::forcecast>& on_table, int player,
          const std::vector<std::string>& groups, int ball, int pocket, const std::string& level,
-         const std::vector<double>& xs, const std::vector<double>& ys, int samples,
-         int candidates, std::uint64_t seed, int threads) {
+         const std::vector<double>& xs, const std::vector<double>& ys, int samples, int candidates,
+         std::uint64_t seed, int threads) {
         const Position pos = position(game, table_size, positions, on_table, player, groups);
         const AiLevel lv = ai_level(level);
         PotMap map;
@@ -181,9 +181,9 @@ void bind_pot_map(py::module_& m) {
             const PotChance& c = map.cells[static_cast<std::size_t>(j * nx + i)];
             pr(j, i) = c.probability;
             const bool aimed = c.placeable && c.shots > 0;
-            const std::array<double, 5> a = {c.aim.phi, c.aim.theta, c.aim.speed, c.aim.a,
-                                             c.aim.b};
-            for (py::ssize_t k = 0; k < 5; ++k) am(j, i, k) = aimed ? a[static_cast<std::size_t>(k)] : nan;
+            const std::array<double, 5> a = {c.aim.phi, c.aim.theta, c.aim.speed, c.aim.a, c.aim.b};
+            for (py::ssize_t k = 0; k < 5; ++k)
+              am(j, i, k) = aimed ? a[static_cast<std::size_t>(k)] : nan;
             va(j, i) = c.placeable;
             sh(j, i) = c.shots;
             pl(j, i) = c.plays;
