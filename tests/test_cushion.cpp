@@ -183,7 +183,8 @@ TEST(Cushion, TopspinStraightHitMatchesClosedForm) {
 }
 
 // The defaults: a rolling ball hitting straight on comes back at 0.6-0.7
-// of its speed (Alciatore's ball-rail range for pool; see CushionParams),
+// of its speed (inside Alciatore's ball-rail restitution range 0.6-0.9,
+// "pool physics property constants"),
 // exactly (1 + e) c (c + mu s) - 1 = 0.6863 since it slides on the nose.
 TEST(Cushion, DefaultRollingStraightHitReboundRatio) {
   const CushionParams p;

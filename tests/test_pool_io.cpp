@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -256,17 +257,79 @@ TEST(PoolInvalid, CushionFields) {
   doc["table"]["nose_height"] = "high";
   expect_invalid(doc, "table.nose_height", "expected a number");
 
-  // Rail friction and nose height belong to pool tables.
+  // Rail friction, nose height, cushion model and cushion height belong
+  // to the pool model's cushions: a pool table, or any table (the lab's)
+  // when the physics model is "pool"; elsewhere they are refused.
   json rect = json::parse(R"({
-    "physics": {"model": "pool"},
+    "physics": {"model": "friction"},
     "table": {"shape": "rectangle", "min": [0, 0], "max": [2, 1]},
     "balls": [{"id": "a", "position": [1, 0.5]}]
   })");
-  rect["table"]["cushion_friction"] = 0.2;
-  expect_invalid(rect, "table.cushion_friction", "only a pool table");
-  rect["table"].erase("cushion_friction");
-  rect["table"]["nose_height"] = 0.6;
-  expect_invalid(rect, "table.nose_height", "only a pool table");
+  for (const auto& [key, value] : {std::pair<const char*, json>{"cushion_friction", 0.2},
+                                   {"nose_height", 0.6},
+                                   {"cushion_model", "han_2005"},
+                                   {"cushion_height", 0.036}}) {
+    json d = rect;
+    d["table"][key] = value;
+    expect_invalid(d, std::string("table.") + key, "only the pool model's cushions");
+    d["physics"]["model"] = "pool";
+    read_ok(d);
+  }
+}
+
+// table.cushion_model: the three laws by name, the legacy one by default;
+// mathavan_2010 brings the paper's restitution and contact height unless
+// they are given.
+TEST(PoolRead, CushionModel) {
+  const bs::Scenario d = read_ok(pool_base());
+  EXPECT_EQ(d.table.cushion.model, bs::CushionModel::han_2005_v0);
+  EXPECT_EQ(d.table.cushion.height, 0.0);
+  for (const char* name : {"han_2005_v0", "han_2005", "mathavan_2010"}) {
+    json doc = pool_base();
+    doc["table"]["cushion_model"] = name;
+    const bs::Scenario s = read_ok(doc);
+    EXPECT_EQ(bs::cushion_model_name(s.table.cushion.model), name);
+  }
+  json doc = pool_base();
+  doc["table"]["cushion_model"] = "mathavan_2010";
+  bs::Scenario m = read_ok(doc);
+  EXPECT_EQ(m.table.cushion.restitution, 0.98);
+  EXPECT_EQ(m.balls[0].wall_restitution, 0.98);
+  EXPECT_EQ(m.table.cushion.nose_height, 0.7);
+  EXPECT_EQ(m.table.cushion.friction, 0.14);
+  doc["table"]["cushion_restitution"] = 0.9;
+  doc["table"]["nose_height"] = 0.64;
+  m = read_ok(doc);
+  EXPECT_EQ(m.balls[0].wall_restitution, 0.9);
+  EXPECT_EQ(m.table.cushion.nose_height, 0.64);
+
+  doc = pool_base();
+  doc["table"]["cushion_model"] = "han";
+  expect_invalid(doc, "table.cushion_model", "han_2005");
+  doc["table"]["cushion_model"] = 2005;
+  expect_invalid(doc, "table.cushion_model", "expected a string");
+}
+
+// table.cushion_height in metres: above every ball's centre and below its
+// top.
+TEST(PoolRead, CushionHeight) {
+  json doc = pool_base();
+  doc["table"]["cushion_height"] = 0.0363;
+  EXPECT_EQ(read_ok(doc).table.cushion.height, 0.0363);
+  for (const json& bad : {json(0.0), json(-0.01), json("high")}) {
+    doc["table"]["cushion_height"] = bad;
+    expect_invalid(doc, "table.cushion_height");
+  }
+  // 57.15 mm balls: 28.575 mm < h < 57.15 mm.
+  doc["table"]["cushion_height"] = 0.028;
+  expect_invalid(doc, "table.cushion_height", "ball 'cue'");
+  doc["table"]["cushion_height"] = 0.06;
+  expect_invalid(doc, "table.cushion_height", "below the top");
+  // A smaller ball on the same rail: the nose passes over its top.
+  doc["table"]["cushion_height"] = 0.05;
+  read_ok(doc);
+  doc["balls"].push_back({{"id", "small"}, {"position", {1.5, 0.6}}, {"radius", 0.02}});
+  expect_invalid(doc, "table.cushion_height", "ball 'small'");
 }
 
 // --- racks ---------------------------------------------------------------

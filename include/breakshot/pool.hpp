@@ -4,6 +4,9 @@
 // calls them at events.
 #pragma once
 
+#include <cstdint>
+#include <string_view>
+
 #include "breakshot/vec.hpp"
 
 namespace breakshot {
@@ -96,28 +99,71 @@ BallImpact ball_ball_impact(Vec2 p1, Vec2 v1, Vec3 w1, double m1, double r1, Vec
                             const BallFriction& friction);
 
 // ---------------------------------------------------------------------------
-// Cushion impact with the rail nose above the ball's centre (Han 2005).
+// Cushion impact with the rail nose above the ball's centre.
+
+/// The cushion laws a scenario can choose (`table.cushion_model`).
+/// Equations, sources and assumptions: src/physics/cushion.cpp and
+/// docs/physics.md, "Cushions".
+enum class CushionModel : std::uint8_t {
+  /// "han_2005_v0": Han 2005 as breakshot 0.1 implemented it. The impulse
+  /// at the nose is computed as if the ball were free to leave the cloth
+  /// and its vertical part is then dropped, so the rail keeps less than
+  /// its restitution says (0.854 of the speed straight in with e = 1 and
+  /// no friction, nose 63.5 %). The default, so that every output made
+  /// before issue 22 stays the same.
+  han_2005_v0,
+  /// "han_2005": Han's impulse law with the slate taking the vertical part
+  /// of the rail's impulse (the ball stays on the cloth): Newton's
+  /// restitution on the nose's normal, Coulomb friction at the nose.
+  han_2005,
+  /// "mathavan_2010": Mathavan, Jackson and Parkin 2010, rigid cushion,
+  /// slip at the nose and at the cloth, integrated over the impulse.
+  mathavan_2010,
+};
+
+/// The scenario name of a cushion model ("han_2005_v0", ...).
+std::string_view cushion_model_name(CushionModel m);
+
+/// The model of a scenario name; false for an unknown name.
+bool parse_cushion_model(std::string_view name, CushionModel& out);
 
 struct CushionParams {
+  /// The cushion law (see CushionModel).
+  CushionModel model = CushionModel::han_2005_v0;
   /// Height of the nose contact above the cloth as a fraction of the
   /// ball's diameter (WPA: about 63.5 %). The contact normal is tilted
   /// t = asin(2 nose_height - 1) above the horizontal (15.7 degrees here).
   /// 0.5 puts the nose at the centre's height. Meaningful in (0, 1).
   double nose_height = 0.635;
+  /// Height of the nose contact above the cloth in metres
+  /// (`table.cushion_height`); 0 when not given. When > 0 it wins over
+  /// nose_height for every ball: sin t = (height - R) / R for a ball of
+  /// radius R, so balls of different sizes meet the same rail at their
+  /// own angles. Must lie in (R, 2R) for every ball.
+  double height = 0.0;
   /// Newton restitution along the tilted contact normal, in [0, 1]. It is
   /// not the ratio of rebound to incident speed: with the nose above the
   /// centre and friction, a rolling ball hitting straight on comes back at
-  /// (1 + e) cos t (cos t + mu sin t) - 1 of its speed: 0.686 with these
-  /// defaults, within the ball-rail range 0.5-0.7 of Alciatore's "pool
-  /// physics property constants" (Marlow gives 0.55 for pool; Mathavan et
-  /// al. 2010 measured 0.818 for a rolling ball on a snooker table).
-  /// Mathavan's fitted 0.98 belongs to his model, which holds the ball on
-  /// the cloth during the impact, and is not comparable.
+  /// (1 + e) cos t (cos t + mu sin t) - 1 of its speed under han_2005_v0:
+  /// 0.686 with these defaults. Mathavan's fitted 0.98 belongs to his own
+  /// model (mathavan_2010, whose default it is).
   double restitution = 0.75;
   /// Ball-rail sliding friction, >= 0: Mathavan et al. 2010 (Proc. IMechE
-  /// C 224) fitted 0.14 to high-speed-camera measurements.
+  /// C 224) fitted 0.14 together with e = 0.98 in their own model.
   double friction = 0.14;
+  /// Ball-cloth sliding friction during the impact (mathavan_2010 only).
+  /// The simulation sets it to physics.sliding_friction, the same cloth's
+  /// friction; Mathavan et al. measured 0.212 on their snooker cloth.
+  double cloth_friction = 0.212;
 };
+
+/// Mathavan et al. 2010's contact height, h = 7R/5 ("cushion height in
+/// both snooker and pool"), as a fraction of the diameter: the default
+/// nose_height of the mathavan_2010 model.
+inline constexpr double kMathavanNoseHeight = 0.7;
+/// Mathavan et al. 2010's fitted ball-cushion restitution: the default
+/// cushion restitution of the mathavan_2010 model.
+inline constexpr double kMathavanRestitution = 0.98;
 
 struct CushionImpact {
   Vec2 velocity;
@@ -126,17 +172,16 @@ struct CushionImpact {
 
 /// A ball moving with velocity v and spin w hits a straight cushion whose
 /// normal n (nonzero; normalized here) points into the table. Returns the
-/// velocity and spin just after. Han's model: the rail's impulse acts at
-/// the nose contact, its normal part set by the restitution along the
-/// tilted contact normal, its frictional part opposing the slip of the
-/// contact point (Coulomb, sliding throughout or sticking once the slip
-/// stops). It changes velocity and spin together. The ball stays on the
-/// cloth: the vertical velocity the impulse would give is dropped (the
-/// cloth takes it; no hop, no cloth friction during the impact). The
-/// result never moves into the cushion (v.n >= 0 up to rounding) and never
-/// has more kinetic energy. A ball not moving into the cushion (v.n >= 0)
-/// is returned unchanged. The mass cancels out. Equations and their
-/// derivation: src/physics/cushion.cpp.
+/// velocity and spin just after, by the law params.model. Every law acts
+/// at the nose contact (height from params.height if > 0, else
+/// params.nose_height), changes velocity and spin together and keeps the
+/// ball on the cloth (no hop). The result never moves into the cushion
+/// (v.n >= 0 up to rounding) and never has more kinetic energy (for
+/// mathavan_2010 up to the integration's round-off). A ball not moving
+/// into the cushion (v.n >= 0) is returned unchanged. The mass cancels
+/// out. Only arithmetic and sqrt are used: results are bit-identical
+/// wherever IEEE doubles are. Equations and their derivation:
+/// src/physics/cushion.cpp.
 CushionImpact cushion_impact(Vec2 v, Vec3 w, Vec2 n, double mass, double radius,
                              const CushionParams& params);
 

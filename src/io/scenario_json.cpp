@@ -277,7 +277,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 
   if (shape == "rectangle") {
     if (!known_fields(*t, path, {"shape", "min", "max", "cushion_restitution",
-                                 "cushion_friction", "nose_height"})) {
+                                 "cushion_friction", "nose_height", "cushion_model", "cushion_height"})) {
       return false;
     }
     const json* lo = find(*t, "min");
@@ -300,7 +300,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 
   if (shape == "polygon") {
     if (!known_fields(*t, path, {"shape", "vertices", "cushion_restitution",
-                                 "cushion_friction", "nose_height"})) {
+                                 "cushion_friction", "nose_height", "cushion_model", "cushion_height"})) {
       return false;
     }
     const json* vs = find(*t, "vertices");
@@ -323,7 +323,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 
   if (shape == "pool") {
     if (!known_fields(*t, path, {"shape", "size", "cushion_restitution", "cushion_friction",
-                                 "nose_height"})) {
+                                 "nose_height", "cushion_model", "cushion_height"})) {
       return false;
     }
     const json* size_v = find(*t, "size");
@@ -350,39 +350,67 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 
 /// The optional cushion fields of a table object, read after the table
 /// is built. cushion_restitution is the default wall_restitution of
-/// every ball on any table; the nose height and the rail friction only
-/// mean something for the pool model's cushions, which only pool tables
-/// have, so elsewhere they are errors rather than values silently unused.
+/// every ball on any table; the other fields (the cushion law, its
+/// friction and its contact height) only mean something for the pool
+/// model's cushions: they are read on pool tables, and on any table when
+/// the physics model is "pool" (the lab's tables); elsewhere they are
+/// errors rather than values silently unused.
 bool ScenarioReader::read_cushion(const json& t, Scenario& s) {
-  const bool pool_table = s.table.shape == "pool";
+  const bool pool_cushions = s.table.shape == "pool" || s.physics.model == Model::pool;
+  for (const char* key : {"cushion_friction", "nose_height", "cushion_model", "cushion_height"}) {
+    if (find(t, key) != nullptr && !pool_cushions) {
+      return fail(member_path("table", key),
+                  "only the pool model's cushions have this field (a pool table, or "
+                  "\"physics\": {\"model\": \"pool\"})");
+    }
+  }
+  CushionParams& cp = s.table.cushion;
+  if (const json* m = find(t, "cushion_model")) {
+    std::string name;
+    if (!text_of(*m, "table.cushion_model", "cushion model",
+                 {"han_2005_v0", "han_2005", "mathavan_2010"}, name)) {
+      return false;
+    }
+    parse_cushion_model(name, cp.model);
+  }
+  // Mathavan et al. 2010's own constants are that model's defaults.
+  const bool mathavan = cp.model == CushionModel::mathavan_2010;
+  if (mathavan) {
+    cp.restitution = kMathavanRestitution;
+    cp.nose_height = kMathavanNoseHeight;
+  }
   default_wall_restitution_ =
-      s.physics.model == Model::pool ? CushionParams{}.restitution : 1.0;
+      s.physics.model == Model::pool ? cp.restitution : 1.0;
   if (const json* v = find(t, "cushion_restitution")) {
     const std::string path = "table.cushion_restitution";
     double e = 0.0;
     if (!number(*v, path, e) || !restitution(e, path)) return false;
     default_wall_restitution_ = e;
-    s.table.cushion.restitution = e;
-  }
-  for (const char* key : {"cushion_friction", "nose_height"}) {
-    if (find(t, key) != nullptr && !pool_table) {
-      return fail(member_path("table", key),
-                  "only a pool table (\"shape\": \"pool\") has this cushion field");
-    }
+    cp.restitution = e;
   }
   const std::string friction_path = "table.cushion_friction";
-  if (!optional_number(t, "table", "cushion_friction", s.table.cushion.friction) ||
-      !non_negative(s.table.cushion.friction, friction_path)) {
+  if (!optional_number(t, "table", "cushion_friction", cp.friction) ||
+      !non_negative(cp.friction, friction_path)) {
     return false;
   }
   const std::string nose_path = "table.nose_height";
-  if (!optional_number(t, "table", "nose_height", s.table.cushion.nose_height)) return false;
-  const double h = s.table.cushion.nose_height;
+  if (!optional_number(t, "table", "nose_height", cp.nose_height)) return false;
+  const double h = cp.nose_height;
   if (!(h > 0.5 && h < 1.0)) {
     // At or below half the diameter the nose would push the ball down
     // into the cloth or meet it below its centre; at 1 it would miss it.
     return fail(nose_path, "must be between 0.5 and 1 (a fraction of the ball's diameter, "
                            "above its centre), not " + format_number(h));
+  }
+  if (const json* v = find(t, "cushion_height")) {
+    const std::string path = "table.cushion_height";
+    double height = 0.0;
+    if (!number(*v, path, height)) return false;
+    if (!(std::isfinite(height) && height > 0.0)) {
+      return fail(path, "must be a positive height in metres, not " + format_number(height));
+    }
+    // Against each ball's radius: validate() (the balls come next).
+    cp.height = height;
   }
   return true;
 }

@@ -1,6 +1,6 @@
 // Ball-wall collision responses: reflection with the ball's wall
 // restitution in the ideal and friction models, the cushion model
-// (cushion.cpp, Han 2005) in the pool model.
+// (cushion.cpp: table.cushion_model) in the pool model.
 #include <algorithm>
 #include <limits>
 
@@ -60,6 +60,7 @@ void Engine::collide_pool_wall(std::int32_t i, std::int32_t w) {
   const double vc = scenario_.physics.collapse_speed;
   CushionParams cp = scenario_.table.cushion;
   cp.restitution = closing < vc ? 1.0 : scenario_.balls[ui].wall_restitution;
+  cp.cloth_friction = scenario_.physics.sliding_friction;  // the same cloth (mathavan_2010)
   const CushionImpact r = cushion_impact(A.v0, A.w0, n, scenario_.balls[ui].mass, radius_[ui], cp);
   set_motion(i, r.velocity, r.spin);
   const double out = dot(A.v0, n);

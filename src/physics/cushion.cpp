@@ -1,5 +1,10 @@
 // Cushion rebound for the pool model: the rail's nose touches the ball
-// above its centre (H. Han, "Dynamics in carom and three cushion
+// above its centre. Three laws (CushionModel): han_2005_v0 (breakshot
+// 0.1's law, the default; first part below), han_2005 (the same impulse
+// law with the slate's reaction; second part) and mathavan_2010 (third
+// part).
+//
+// PART 1, han_2005_v0 (H. Han, "Dynamics in carom and three cushion
 // billiards", J. Mech. Sci. Tech. 19 (2005)). Every step below is derived
 // here from impulse-momentum for a solid sphere (I = 2/5 m R^2) rather
 // than copied from the paper, whose intermediate equations have typos.
@@ -87,33 +92,138 @@
 // components (every impulse of the rail acts at r; v_z does not enter
 // those two components).
 //
+// What is wrong with it (issue 22): the normal impulse (1 + e) c v_x is
+// the one a ball free to move vertically would take; the cloth then
+// removes the vertical velocity it gave. Straight in, with e = 1 and no
+// friction, v_x' = v_x (1 - 2 c^2) = -0.854 v_x at the 63.5 % nose: the
+// rail "keeps" energy that its restitution does not account for. Kept
+// as the named legacy law so that earlier results replay exactly.
+//
+// Cushion height. All three laws take sin t = 2 nose_height - 1, or
+// (height - R) / R when a height in metres is given (table.cushion_height),
+// so that balls of any radius meet the same rail at their own angle.
+//
+// PART 2, han_2005: Han's law with the slate's reaction.
+//
+// Assumption (issue 22): the ball stays on the cloth during the impact,
+// so the slate supplies whatever vertical impulse keeps v_z = 0. That
+// reaction acts through the lowest point, straight up, hence through the
+// centre: it changes no spin. With no friction at the cloth (Han's model
+// has none; Mathavan's adds it), the rail's impulse per unit mass
+// p_N N + p1 t1 + p2 t2 plus the slate's P_C z (P_C = p_N s - p2 c) gives
+//   dv_x = -p_N c - p2 s,   dv_y = p1,   dv_z = 0,
+//   dw as in part 1: dw = (5/2R) (-p1 s, -p2, p1 c).
+// The normal approach speed at the nose is v_x c (v_z = 0), so Newton's
+// restitution on it, with the normal impulse alone, is
+//   v_x c -> -e v_x c,  i.e.  p_N = (1 + e) v_x / c,  v_x -> -e v_x
+// (not (1 + e) v_x c: the slate takes the vertical part, so only
+// p_N c acts along x). Straight in, e = 1, no friction: v_x' = -v_x.
+//
+// Friction. Under the constraint the slip's response to a tangential
+// impulse is no longer isotropic:
+//   du1 = 7/2 p1,   du2 = -(dv_x s + R dw_y) = (5/2 + s^2) p2,
+// and the normal impulse itself moves u2 (by p_N c s). Newton's law
+// applied together with a sticking friction can then create energy (a
+// stun ball would leave with v_x' = -v_x and new spin), so the two are
+// applied in sequence, as Han's algebra does: first the normal impulse,
+// then the friction impulse on the slip it leaves,
+//   u1 = v_y + R (w_z c - w_x s),   u2 = -(v_x' s + R w_y),  v_x' = -e v_x,
+// the impulse that stops it, q = -(u1 / (7/2), u2 / (5/2 + s^2)), capped
+// by Coulomb at mu p_N: q -> q mu p_N / |q| when |q| > mu p_N. A friction
+// impulse along a fraction a <= 1 of the stopping impulse changes the
+// kinetic energy by -(a - a^2/2) u.K^-1 u <= 0, so the law never creates
+// energy; the normal step loses (1 - e^2) of the normal energy. Then
+//   v_x'' = -e v_x - q2 s,  v_y' = v_y + q1,
+//   w' = w + (5/2R) (-q1 s, -q2, q1 c),
+// and the last guard of part 1 (v_x'' <= 0). The slate's reaction
+// p_N s - q2 c is positive unless mu > tan t (0.28 at the 63.5 % nose):
+// beyond that the ball would hop, which this step of the model does not
+// follow (the vertical velocity stays 0).
+//
+// PART 3, mathavan_2010: S. Mathavan, M. R. Jackson, R. M. Parkin, "A
+// theoretical analysis of billiard ball dynamics under cushion impacts",
+// Proc. IMechE C 224 (2010) 1863-1873. The same geometry and constraint
+// as part 2 (the paper: the ball does not leave the table, z_G' = 0), and
+// sliding friction at the cloth as well: mu_w at the nose (I), mu_s at
+// the cloth (C). The impact is integrated over the accumulated normal
+// impulse P_I (the paper's independent variable), in steps dP:
+//   slip at I:  u1 = v_y + R (w_z c - w_x s),  u2 = -(v_x s + R w_y)
+//   slip at C:  a_x = v_x - R w_y,  a_y = v_y + R w_x
+//   friction at I:  f = -min(mu_w dP, 2/7 |u|) u / |u|      (components f1, f2)
+//   slate reaction:  dP_C = dP s - f2 c   (the paper's dP_I (sin t +
+//                    mu_w sin Phi cos t); taken as 0 if negative)
+//   friction at C:  g = -min(mu_s dP_C, 2/7 |a|) a / |a|
+//   dv_x = -dP c - f2 s + g_x,   dv_y = f1 + g_y,
+//   dw = (5/2R) (-f1 s + g_y, -f2 - g_x, f1 c).
+// The cap 2/7 |slip| is the discrete form of the paper's rolling
+// conditions (its eq. 15: no friction impulse while a contact rolls):
+// it is the impulse that would just stop that contact's slip (the slip at
+// C answers 7/2 g, at I at least (5/2 + s^2) f), so the slip is brought
+// to rest instead of chattering about zero. Directions are those at the
+// start of each step (the paper's explicit scheme).
+// Compression lasts while the nose's normal approach speed v_x c is
+// positive; the work of the normal force is accumulated by the
+// trapezoidal rule (the paper's eq. 16a), dW = dP c (v_x + v_x') / 2, and
+// the restitution phase goes on until the work done during it reaches
+// e^2 times the compression's (the paper's energetic restitution, eq.
+// 16b). The step is (1 + e) v_x / c / 5000 (the paper's starting estimate
+// of the total impulse over its N = 5000). The step that ends compression
+// is shortened to end at v_x = 0 (v_x is linear in P within a step), and
+// the last restitution step to end at the target work (the work is
+// quadratic in the step within it; its root is taken with sqrt).
+// Constants: e = 0.98, mu_w = 0.14 are the paper's fit to its own
+// measurements; the contact height h = 7R/5 is the paper's; mu_s is the
+// cloth's sliding friction (the paper's 0.212; in a simulation,
+// physics.sliding_friction).
+//
 // The mass cancels: every impulse is proportional to it. Only sqrt is
-// used, so results are bit-identical wherever IEEE doubles are.
+// used, so results are bit-identical wherever IEEE doubles are (the
+// build has -ffp-contract=off).
 #include "breakshot/pool.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace breakshot {
 
-CushionImpact cushion_impact(Vec2 v, Vec3 w, Vec2 n, double mass, double radius,
-                             const CushionParams& params) {
-  static_cast<void>(mass);  // cancels out, see above
-  const Vec2 ex = -(n / norm(n));  // towards the rail
-  const Vec2 ey = perp(ex);        // along the rail; (ex, ey, z) right-handed
+std::string_view cushion_model_name(CushionModel m) {
+  switch (m) {
+    case CushionModel::han_2005_v0:
+      return "han_2005_v0";
+    case CushionModel::han_2005:
+      return "han_2005";
+    case CushionModel::mathavan_2010:
+      return "mathavan_2010";
+  }
+  return "han_2005_v0";
+}
 
-  const double vx = dot(v, ex);
-  if (!(vx > 0.0)) return {v, w};  // not moving into the rail: no impact
-  const double vy = dot(v, ey);
-  const Vec2 wh{w.x, w.y};
-  const double wx = dot(wh, ex);
-  const double wy = dot(wh, ey);
-  const double wz = w.z;
+bool parse_cushion_model(std::string_view name, CushionModel& out) {
+  for (CushionModel m :
+       {CushionModel::han_2005_v0, CushionModel::han_2005, CushionModel::mathavan_2010}) {
+    if (name == cushion_model_name(m)) {
+      out = m;
+      return true;
+    }
+  }
+  return false;
+}
 
-  const double R = radius;
-  const double e = params.restitution;
-  const double mu = params.friction;
-  const double s = 2.0 * params.nose_height - 1.0;  // sin t
-  const double c = std::sqrt(1.0 - s * s);          // cos t
+namespace {
+
+/// The ball's state in the cushion's local frame (x towards the rail, y
+/// along it, z up).
+struct Local {
+  double vx, vy, wx, wy, wz;
+};
+
+/// Part 1: breakshot 0.1's law, unchanged.
+Local han_2005_v0(Local b, double R, double s, double c, double e, double mu) {
+  const double vx = b.vx;
+  const double vy = b.vy;
+  const double wx = b.wx;
+  const double wy = b.wy;
+  const double wz = b.wz;
 
   // Normal impulse per unit mass.
   const double pn = (1.0 + e) * vx * c;
@@ -140,15 +250,155 @@ CushionImpact cushion_impact(Vec2 v, Vec3 w, Vec2 n, double mass, double radius,
   if (vx2 > 0.0) vx2 = 0.0;  // the rail and the cloth together stop it
 
   const double q = 2.5 / R;
-  const double wx2 = wx - q * s * p1;
-  const double wy2 = wy - q * p2;
-  const double wz2 = wz + q * c * p1;
+  return {vx2, vy2, wx - q * s * p1, wy - q * p2, wz + q * c * p1};
+}
 
-  CushionImpact out;
-  out.velocity = ex * vx2 + ey * vy2;
-  const Vec2 wh2 = ex * wx2 + ey * wy2;
-  out.spin = {wh2.x, wh2.y, wz2};
-  return out;
+/// Part 2: Han's law with the slate's reaction.
+Local han_2005(Local b, double R, double s, double c, double e, double mu) {
+  const double pn = (1.0 + e) * b.vx / c;  // normal impulse per unit mass
+  const double vx1 = -e * b.vx;             // after the normal impulse
+  const double u1 = b.vy + R * (b.wz * c - b.wx * s);
+  const double u2 = -(vx1 * s + R * b.wy);
+  double q1 = -u1 / 3.5;
+  double q2 = -u2 / (2.5 + s * s);
+  const double size = std::sqrt(q1 * q1 + q2 * q2);
+  const double limit = mu * pn;
+  if (size > limit) {  // sliding: Coulomb's cap
+    const double k = limit / size;
+    q1 *= k;
+    q2 *= k;
+  }
+  double vx2 = vx1 - q2 * s;
+  if (vx2 > 0.0) vx2 = 0.0;
+  const double q = 2.5 / R;
+  return {vx2, b.vy + q1, b.wx - q * s * q1, b.wy - q * q2, b.wz + q * c * q1};
+}
+
+/// Friction impulse against the slip (x, y): size min(limit, 2/7 |slip|).
+void friction(double x, double y, double limit, double& fx, double& fy) {
+  const double slip = std::sqrt(x * x + y * y);
+  fx = 0.0;
+  fy = 0.0;
+  if (!(slip > 0.0) || !(limit > 0.0)) return;
+  const double size = std::min(limit, 2.0 / 7.0 * slip);
+  fx = -size * x / slip;
+  fy = -size * y / slip;
+}
+
+struct MathavanStep {
+  double R, s, c, mu_w, mu_s;
+
+  /// One step of normal impulse dp (per unit mass) from state b.
+  Local operator()(const Local& b, double dp) const {
+    const double u1 = b.vy + R * (b.wz * c - b.wx * s);
+    const double u2 = -(b.vx * s + R * b.wy);
+    double f1 = 0.0;
+    double f2 = 0.0;
+    friction(u1, u2, mu_w * dp, f1, f2);
+    double pc = dp * s - f2 * c;  // the slate's reaction
+    if (pc < 0.0) pc = 0.0;
+    const double ax = b.vx - R * b.wy;
+    const double ay = b.vy + R * b.wx;
+    double gx = 0.0;
+    double gy = 0.0;
+    friction(ax, ay, mu_s * pc, gx, gy);
+    const double q = 2.5 / R;
+    return {b.vx - dp * c - f2 * s + gx, b.vy + f1 + gy, b.wx + q * (-f1 * s + gy),
+            b.wy + q * (-f2 - gx), b.wz + q * f1 * c};
+  }
+};
+
+constexpr int kMathavanSteps = 5000;      // the paper's N
+constexpr int kMathavanMaxSteps = 200000;  // a guard against nonsense parameters
+
+/// Part 3: Mathavan et al. 2010.
+Local mathavan_2010(Local b, double R, double s, double c, double e, double mu_w,
+                    double mu_s) {
+  const MathavanStep step{R, s, c, mu_w, mu_s};
+  const double dp = (1.0 + e) * b.vx / c / kMathavanSteps;
+  // Compression: while the nose's normal approach speed v_x c > 0.
+  double work = 0.0;
+  int n = 0;
+  while (b.vx > 0.0 && n < kMathavanMaxSteps) {
+    Local next = step(b, dp);
+    double h = dp;
+    if (!(next.vx > 0.0)) {  // ends within this step: v_x is linear in P
+      h = dp * (b.vx / (b.vx - next.vx));
+      next = step(b, h);
+      next.vx = 0.0;
+    }
+    work += h * c * 0.5 * (b.vx + next.vx);
+    b = next;
+    ++n;
+  }
+  if (b.vx > 0.0) b.vx = 0.0;  // the guard stopped it: the rail holds the ball
+  // Restitution: until the work done since compression ended reaches
+  // e^2 times the compression's.
+  const double target = e * e * work;
+  double done = 0.0;
+  n = 0;
+  while (done < target && n < kMathavanMaxSteps) {
+    Local next = step(b, dp);
+    const double a0 = -b.vx;  // speed away from the rail
+    const double a1 = -next.vx;
+    const double dw = dp * c * 0.5 * (a0 + a1);
+    if (done + dw >= target) {
+      // W(h) = c (a0 h + k h^2 / 2) with k = (a1 - a0) / dp; solve
+      // W(h) = rest for h in (0, dp] in a form free of cancellation.
+      const double rest = target - done;
+      const double k = (a1 - a0) / dp;
+      const double root = std::sqrt(a0 * a0 * c * c + 2.0 * c * k * rest);
+      double h = a0 * c + root > 0.0 ? 2.0 * rest / (a0 * c + root) : dp;
+      if (!(h > 0.0) || h > dp) h = dp;
+      b = step(b, h);
+      break;
+    }
+    done += dw;
+    b = next;
+    ++n;
+  }
+  if (b.vx > 0.0) b.vx = 0.0;
+  return b;
+}
+
+}  // namespace
+
+CushionImpact cushion_impact(Vec2 v, Vec3 w, Vec2 n, double mass, double radius,
+                             const CushionParams& params) {
+  static_cast<void>(mass);  // cancels out, see above
+  const Vec2 ex = -(n / norm(n));  // towards the rail
+  const Vec2 ey = perp(ex);        // along the rail; (ex, ey, z) right-handed
+
+  const double vx = dot(v, ex);
+  if (!(vx > 0.0)) return {v, w};  // not moving into the rail: no impact
+  const Vec2 wh{w.x, w.y};
+  const Local in{vx, dot(v, ey), dot(wh, ex), dot(wh, ey), w.z};
+
+  const double R = radius;
+  const double s = params.height > 0.0 ? (params.height - R) / R   // sin t
+                                       : 2.0 * params.nose_height - 1.0;
+  const double c = std::sqrt(1.0 - s * s);  // cos t
+  const double e = params.restitution;
+  const double mu = params.friction;
+
+  Local out{};
+  switch (params.model) {
+    case CushionModel::han_2005_v0:
+      out = han_2005_v0(in, R, s, c, e, mu);
+      break;
+    case CushionModel::han_2005:
+      out = han_2005(in, R, s, c, e, mu);
+      break;
+    case CushionModel::mathavan_2010:
+      out = mathavan_2010(in, R, s, c, e, mu, params.cloth_friction);
+      break;
+  }
+
+  CushionImpact r;
+  r.velocity = ex * out.vx + ey * out.vy;
+  const Vec2 wh2 = ex * out.wx + ey * out.wy;
+  r.spin = {wh2.x, wh2.y, out.wz};
+  return r;
 }
 
 }  // namespace breakshot

@@ -98,8 +98,29 @@ std::optional<ScenarioError> check_ball(const Scenario& s, std::size_t i) {
 }
 
 /// The cushion parameters (pool model; the defaults pass on any table).
-std::optional<ScenarioError> check_cushion(const Table& t) {
-  const CushionParams& c = t.cushion;
+std::optional<ScenarioError> check_cushion(const Scenario& s) {
+  const CushionParams& c = s.table.cushion;
+  if (c.model != CushionModel::han_2005_v0 && c.model != CushionModel::han_2005 &&
+      c.model != CushionModel::mathavan_2010) {
+    return ScenarioError{"table.cushion_model", "unknown cushion model"};
+  }
+  if (!(std::isfinite(c.height) && c.height >= 0.0)) {
+    return ScenarioError{"table.cushion_height",
+                         "must be finite and positive (metres), not " + num(c.height)};
+  }
+  if (c.height > 0.0 && s.physics.model == Model::pool) {
+    // The nose must meet every ball above its centre and below its top.
+    for (std::size_t i = 0; i < s.balls.size(); ++i) {
+      const double r = s.balls[i].radius;
+      if (!(c.height > r && c.height < 2.0 * r)) {
+        return ScenarioError{"table.cushion_height",
+                             "must lie above the centre and below the top of every ball (between " +
+                                 num(r) + " and " + num(2.0 * r) + " m for ball '" +
+                                 s.balls[i].id + "'), not " + num(c.height)};
+      }
+    }
+  }
+
   if (!(c.nose_height > 0.5 && c.nose_height < 1.0)) {
     return ScenarioError{"table.nose_height",
                          "must be between 0.5 and 1 (a fraction of the ball's diameter, above "
@@ -347,7 +368,7 @@ std::optional<ScenarioError> validate(const Scenario& s) {
   }
   if (s.max_events == 0) return ScenarioError{"max_events", "must be a positive integer"};
   if (auto e = check_cue(s)) return e;
-  if (auto e = check_cushion(s.table)) return e;
+  if (auto e = check_cushion(s)) return e;
 
   for (std::size_t i = 0; i < s.balls.size(); ++i) {
     if (auto e = check_against_table(s, i)) return e;
