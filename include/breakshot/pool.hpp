@@ -4,6 +4,7 @@
 // calls them at events.
 #pragma once
 
+#include "breakshot/physics.hpp"
 #include "breakshot/vec.hpp"
 
 namespace breakshot {
@@ -71,11 +72,12 @@ struct BallImpact {
 /// Friction coefficient between balls as a function of the sliding speed
 /// of the contact points (m/s): mu(v) = a + b exp(-c |v|), clamped at 0.
 /// The defaults are Alciatore's fit to Marlow's data (TP; also
-/// pooltool's default); BallFriction{0, 0, 0} is frictionless.
+/// pooltool's default; kThrowFitTPA28); BallFriction{0, 0, 0} is
+/// frictionless.
 struct BallFriction {
-  double a = 0.009951;
-  double b = 0.108;
-  double c = 1.088;
+  double a = kThrowFitTPA28.a;
+  double b = kThrowFitTPA28.b;
+  double c = kThrowFitTPA28.c;
   double operator()(double slip) const;
 };
 
