@@ -97,6 +97,18 @@ BallImpact ball_ball_impact(Vec2 p1, Vec2 v1, Vec3 w1, double m1, double r1, Vec
                             Vec3 w2, double m2, double r2, double restitution,
                             const BallFriction& friction);
 
+/// Mathavan, Jackson, Parkin 2014's ball-ball impact (Sports Eng. 17): the
+/// impact followed through the normal impulse in `steps` increments, with
+/// Coulomb friction mu (BallFriction at the slip at the start) at the
+/// contact and `cloth_friction` where the contact's vertical friction
+/// presses a ball into the cloth, and Stronge's energetic restitution e.
+/// The balls stay on the cloth. Same arguments and degenerate cases as
+/// ball_ball_impact (and steps not > 0). See src/physics/ball_impact.cpp.
+BallImpact ball_ball_impact_mathavan(Vec2 p1, Vec2 v1, Vec3 w1, double m1, double r1, Vec2 p2,
+                                     Vec2 v2, Vec3 w2, double m2, double r2, double restitution,
+                                     const BallFriction& friction, double cloth_friction,
+                                     int steps = 1000);
+
 // ---------------------------------------------------------------------------
 // Cushion impact with the rail nose above the ball's centre (Han 2005).
 
