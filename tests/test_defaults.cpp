@@ -24,6 +24,10 @@ void expect_same(const PhysicsParams& a, const PhysicsParams& b, const std::stri
   EXPECT_TRUE(same(a.ball_ball_restitution, b.ball_ball_restitution)) << what;
   EXPECT_TRUE(same(a.ball_ball_friction, b.ball_ball_friction)) << what;
   EXPECT_EQ(a.ball_ball_friction_fit, b.ball_ball_friction_fit) << what;
+  EXPECT_TRUE(same(a.ball_ball_friction_curve.a, b.ball_ball_friction_curve.a)) << what;
+  EXPECT_TRUE(same(a.ball_ball_friction_curve.b, b.ball_ball_friction_curve.b)) << what;
+  EXPECT_TRUE(same(a.ball_ball_friction_curve.c, b.ball_ball_friction_curve.c)) << what;
+  EXPECT_EQ(a.ball_ball_model, b.ball_ball_model) << what;
   EXPECT_TRUE(same(a.gravity, b.gravity)) << what;
   EXPECT_TRUE(same(a.deceleration, b.deceleration)) << what;
   EXPECT_TRUE(same(a.sliding_friction, b.sliding_friction)) << what;
@@ -60,6 +64,10 @@ TEST(Defaults, AreTheDocumentedValues) {
   const PhysicsParams pool = default_physics(Model::pool);
   EXPECT_EQ(pool.ball_ball_restitution, 0.95);  // Alciatore: 0.92-0.98
   EXPECT_TRUE(pool.ball_ball_friction_fit);
+  // Today's curve: Alciatore's TP A-28 fit to Marlow's data (the TP B-3
+  // refit to the measured throw becomes the default in a later step).
+  EXPECT_EQ(pool.ball_ball_friction_curve, (FrictionCurve{0.009951, 0.108, 1.088}));
+  EXPECT_EQ(pool.ball_ball_model, BallBallModel::friction);
   EXPECT_EQ(pool.collapse_speed, 1e-3);
   EXPECT_FALSE(pool.ball_clusters);
   // The struct's own initial values are the ideal model's.

@@ -111,6 +111,80 @@ TEST(PoolRead, GivenBallFrictionIsAConstant) {
   EXPECT_EQ(s.physics.ball_ball_friction, 0.0);
 }
 
+TEST(PoolRead, BallFrictionAsACurve) {
+  // Extension: {"a", "b", "c"} is mu(v) = a + b exp(-c v) of the slip speed.
+  json doc = pool_base();
+  doc["physics"]["ball_ball_friction"] = {{"a", 0.016}, {"b", 0.219}, {"c", 0.691}};
+  bs::Scenario s = read_ok(doc);
+  EXPECT_TRUE(s.physics.ball_ball_friction_fit);
+  EXPECT_EQ(s.physics.ball_ball_friction_curve, bs::kThrowFitTPB3);
+  // b < 0 (friction rising with the slip) and c = 0 (a constant a + b)
+  // are curves too, while mu stays in [0, 1].
+  doc["physics"]["ball_ball_friction"] = {{"a", 0.2}, {"b", -0.1}, {"c", 0.0}};
+  s = read_ok(doc);
+  EXPECT_EQ(s.physics.ball_ball_friction_curve, (bs::FrictionCurve{0.2, -0.1, 0.0}));
+
+  const auto bad = [&](json curve, const std::string& path, const std::string& why) {
+    json d = pool_base();
+    d["physics"]["ball_ball_friction"] = std::move(curve);
+    expect_invalid(d, path, why);
+  };
+  bad({{"a", 0.01}, {"b", 0.1}}, "physics.ball_ball_friction.c", "missing");
+  bad({{"a", 0.01}, {"b", 0.1}, {"c", 1.0}, {"d", 1.0}}, "physics.ball_ball_friction.d", "unknown");
+  bad({{"a", 0.01}, {"b", 0.1}, {"c", -1.0}}, "physics.ball_ball_friction.c", ">= 0");
+  bad({{"a", -0.01}, {"b", 0.1}, {"c", 1.0}}, "physics.ball_ball_friction.a", "[0, 1]");
+  bad({{"a", 1.5}, {"b", -1.0}, {"c", 1.0}}, "physics.ball_ball_friction.a", "[0, 1]");
+  bad({{"a", 0.5}, {"b", 0.6}, {"c", 1.0}}, "physics.ball_ball_friction.b", "a + b");
+  bad({{"a", 0.2}, {"b", -0.3}, {"c", 1.0}}, "physics.ball_ball_friction.b", "a + b");
+  bad({{"a", "x"}, {"b", 0.1}, {"c", 1.0}}, "physics.ball_ball_friction.a", "number");
+  bad("0.05", "physics.ball_ball_friction", "a number or an object");
+
+  // The same rules for a scenario built in code (validate()).
+  bs::Scenario code = read_ok(pool_base());
+  code.physics.ball_ball_friction_curve.c = -2.0;
+  const auto e = bs::validate(code);
+  ASSERT_TRUE(e.has_value());
+  EXPECT_EQ(e->path, "physics.ball_ball_friction.c");
+  code.physics.ball_ball_friction_fit = false;  // a constant mu: the curve is not used
+  EXPECT_FALSE(bs::validate(code).has_value());
+}
+
+TEST(PoolRead, TheDefaultCurveGivenExplicitlyIsTheSamePhysics) {
+  json doc = pool_break();
+  const bs::Scenario implicit = read_ok(doc);
+  doc["physics"]["ball_ball_friction"] = {{"a", 0.009951}, {"b", 0.108}, {"c", 1.088}};
+  doc["physics"]["ball_ball_model"] = "friction";
+  const bs::Scenario explicit_ = read_ok(doc);
+  EXPECT_EQ(bs::write_result(implicit, bs::simulate(implicit)),
+            bs::write_result(explicit_, bs::simulate(explicit_)));
+}
+
+TEST(PoolRead, BallBallModel) {
+  json doc = pool_break();
+  EXPECT_EQ(read_ok(doc).physics.ball_ball_model, bs::BallBallModel::friction);
+  doc["physics"]["ball_ball_model"] = "mathavan_2014";
+  const bs::Scenario s = read_ok(doc);
+  EXPECT_EQ(s.physics.ball_ball_model, bs::BallBallModel::mathavan_2014);
+  // A break under Mathavan's impacts runs to rest, repeatably, and differs
+  // from the default impact law.
+  const bs::RunResult r = bs::simulate(s);
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(bs::write_result(s, r), bs::write_result(s, bs::simulate(s)));
+  const bs::Scenario d = read_ok(pool_break());
+  EXPECT_NE(bs::write_result(s, r), bs::write_result(d, bs::simulate(d)));
+
+  doc["physics"]["ball_ball_model"] = "stronge";
+  expect_invalid(doc, "physics.ball_ball_model", "mathavan_2014");
+  doc["physics"]["ball_ball_model"] = 1;
+  expect_invalid(doc, "physics.ball_ball_model", "string");
+  json lab = json::parse(R"({"physics": {"model": "ideal", "ball_ball_model": "mathavan_2014"},
+    "table": {"shape": "rectangle", "min": [0, 0], "max": [2, 1]},
+    "balls": [{"id": "a", "position": [0.5, 0.5]}], "until": {"time": 1}})");
+  expect_invalid(lab, "physics.ball_ball_model", "needs the pool model");
+  lab["physics"]["ball_ball_model"] = "friction";  // the default: allowed anywhere
+  EXPECT_EQ(read_ok(lab).physics.ball_ball_model, bs::BallBallModel::friction);
+}
+
 TEST(PoolRead, TheOtherModelsKeepTheirDefaults) {
   json doc = pool_base();
   doc["physics"]["model"] = "friction";

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace breakshot {
@@ -15,6 +17,52 @@ enum class Model : std::uint8_t {
 
 std::string_view to_string(Model m);
 
+/// The law of a pool ball-ball impact (`physics.ball_ball_model`,
+/// docs/physics.md, "Ball-ball impact"). The pool model only.
+enum class BallBallModel : std::uint8_t {
+  /// One instantaneous impulse: restitution along the line of centres and
+  /// Coulomb friction at the contact, mu evaluated at the slip at the start
+  /// (Alciatore TP A-14). The default, and the physics before issue 22.
+  friction,
+  /// Mathavan, Jackson, Parkin 2014 (Sports Eng. 17): the impact integrated
+  /// over the normal impulse, with slip at the contact and at the cloth.
+  mathavan_2014,
+};
+
+std::string_view to_string(BallBallModel m);
+
+/// A ball-ball friction coefficient that falls with the slip speed v of
+/// the contact points (m/s): mu(v) = a + b exp(-c v).
+struct FrictionCurve {
+  double a = 0.0;
+  double b = 0.0;
+  double c = 0.0;
+  friend constexpr bool operator==(const FrictionCurve&, const FrictionCurve&) = default;
+};
+
+/// What is wrong with `curve` as a friction law, if anything: the member
+/// ('a', 'b' or 'c') to blame and why. A curve is one when a, b and c are
+/// finite, c >= 0 (mu then runs monotonically from a + b at zero slip to a
+/// at high slip) and both a and a + b are in [0, 1]: so mu(v) stays in
+/// [0, 1] for every v >= 0.
+struct FrictionCurveProblem {
+  char member = 'a';
+  std::string reason;
+};
+std::optional<FrictionCurveProblem> check_friction_curve(const FrictionCurve& curve);
+
+/// Alciatore's fit to Marlow's friction data (TP A-28, "Throw plots for
+/// all types of shots": mu = 0.11, 0.06, 0.01 at v = 0.1, 1, 10 times
+/// sin(45 deg) m/s). pooltool's default; breakshot's default curve before
+/// and during issue 22's first step (the throw it gives is 2-3 times below
+/// the measured, docs/physics.md).
+inline constexpr FrictionCurve kThrowFitTPA28{0.009951, 0.108, 1.088};
+
+/// Alciatore's refit of the same curve to Colin Colenso's measured throw
+/// (TP B-3, "Throw calibration and contour plots": 30 and 45 degree cuts at
+/// 4, 8 and 12 km/h), a = 0.016, b = 0.219, c = 0.691.
+inline constexpr FrictionCurve kThrowFitTPB3{0.016, 0.219, 0.691};
+
 /// Every physics parameter, with the defaults documented in
 /// docs/scenario.md. Units are SI.
 struct PhysicsParams {
@@ -24,10 +72,15 @@ struct PhysicsParams {
   /// Ball-ball friction coefficient (pool model only; ideal and friction
   /// collisions are frictionless by definition).
   double ball_ball_friction = 0.0;
-  /// Pool model: use the speed-dependent fit mu(v) = a + b exp(-c v)
-  /// (pooltool's default, after Alciatore) instead of the constant
-  /// ball_ball_friction. The reader sets it when the field is not given.
+  /// Pool model: use the speed-dependent curve ball_ball_friction_curve
+  /// instead of the constant ball_ball_friction. The reader sets it when
+  /// the field is not given or is given as {"a", "b", "c"}.
   bool ball_ball_friction_fit = false;
+  /// mu(v) = a + b exp(-c v) of the slip speed v when
+  /// ball_ball_friction_fit is set.
+  FrictionCurve ball_ball_friction_curve = kThrowFitTPA28;
+  /// The pool model's ball-ball impact law.
+  BallBallModel ball_ball_model = BallBallModel::friction;
   double gravity = 9.81;
   /// Deceleration of every moving ball in the friction model (m/s^2).
   /// The scenario reader defaults it to rolling_friction * gravity.

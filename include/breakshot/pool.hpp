@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "breakshot/physics.hpp"
 #include "breakshot/vec.hpp"
 
 namespace breakshot {
@@ -74,11 +75,12 @@ struct BallImpact {
 /// Friction coefficient between balls as a function of the sliding speed
 /// of the contact points (m/s): mu(v) = a + b exp(-c |v|), clamped at 0.
 /// The defaults are Alciatore's fit to Marlow's data (TP; also
-/// pooltool's default); BallFriction{0, 0, 0} is frictionless.
+/// pooltool's default; kThrowFitTPA28); BallFriction{0, 0, 0} is
+/// frictionless.
 struct BallFriction {
-  double a = 0.009951;
-  double b = 0.108;
-  double c = 1.088;
+  double a = kThrowFitTPA28.a;
+  double b = kThrowFitTPA28.b;
+  double c = kThrowFitTPA28.c;
   double operator()(double slip) const;
 };
 
@@ -97,6 +99,18 @@ struct BallFriction {
 BallImpact ball_ball_impact(Vec2 p1, Vec2 v1, Vec3 w1, double m1, double r1, Vec2 p2, Vec2 v2,
                             Vec3 w2, double m2, double r2, double restitution,
                             const BallFriction& friction);
+
+/// Mathavan, Jackson, Parkin 2014's ball-ball impact (Sports Eng. 17): the
+/// impact followed through the normal impulse in `steps` increments, with
+/// Coulomb friction mu (BallFriction at the slip at the start) at the
+/// contact and `cloth_friction` where the contact's vertical friction
+/// presses a ball into the cloth, and Stronge's energetic restitution e.
+/// The balls stay on the cloth. Same arguments and degenerate cases as
+/// ball_ball_impact (and steps not > 0). See src/physics/ball_impact.cpp.
+BallImpact ball_ball_impact_mathavan(Vec2 p1, Vec2 v1, Vec3 w1, double m1, double r1, Vec2 p2,
+                                     Vec2 v2, Vec3 w2, double m2, double r2, double restitution,
+                                     const BallFriction& friction, double cloth_friction,
+                                     int steps = 1000);
 
 // ---------------------------------------------------------------------------
 // Cushion impact with the rail nose above the ball's centre.

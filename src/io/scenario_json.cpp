@@ -181,7 +181,8 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
   if (!known_fields(*p, path,
                     {"model", "ball_ball_restitution", "ball_ball_friction", "gravity",
                      "deceleration", "sliding_friction", "rolling_friction",
-                     "spinning_friction", "collapse_speed", "ball_clusters"})) {
+                     "spinning_friction", "collapse_speed", "ball_clusters",
+                     "ball_ball_model"})) {
     return false;
   }
 
@@ -211,15 +212,33 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
       !restitution(ph.ball_ball_restitution, member_path(path, "ball_ball_restitution"))) {
     return false;
   }
-  if (!optional_number(*p, path, "ball_ball_friction", ph.ball_ball_friction) ||
-      !non_negative(ph.ball_ball_friction, member_path(path, "ball_ball_friction"))) {
-    return false;
+  // Pool: the friction between balls falls with the slip speed. Without
+  // the field, the engine uses the default curve mu(v) (physics.hpp,
+  // kThrowFitTPA28); a number is a constant mu for every impact; an object
+  // {"a", "b", "c"} (extension) is the curve a + b exp(-c v).
+  if (const json* f = find(*p, "ball_ball_friction"); f != nullptr && f->is_object()) {
+    const std::string fpath = member_path(path, "ball_ball_friction");
+    if (!exact_object(*f, fpath, {"a", "b", "c"})) return false;
+    FrictionCurve& k = ph.ball_ball_friction_curve;
+    if (!number(f->at("a"), member_path(fpath, "a"), k.a) ||
+        !number(f->at("b"), member_path(fpath, "b"), k.b) ||
+        !number(f->at("c"), member_path(fpath, "c"), k.c)) {
+      return false;
+    }
+    if (auto bad = check_friction_curve(k)) {
+      return fail(member_path(fpath, std::string(1, bad->member)), std::move(bad->reason));
+    }
+    ph.ball_ball_friction_fit = true;
+  } else if (f != nullptr) {
+    if (!f->is_number()) {
+      return fail(member_path(path, "ball_ball_friction"), expected("a number or an object {\"a\", \"b\", \"c\"}", *f));
+    }
+    if (!number(*f, member_path(path, "ball_ball_friction"), ph.ball_ball_friction) ||
+        !non_negative(ph.ball_ball_friction, member_path(path, "ball_ball_friction"))) {
+      return false;
+    }
+    ph.ball_ball_friction_fit = false;
   }
-  // Pool: the friction between balls falls with the slip speed. Without a
-  // constant given, the engine uses the measured fit mu(v) (pool.hpp,
-  // BallFriction; the default); a given value is a constant mu for every
-  // impact.
-  if (find(*p, "ball_ball_friction") != nullptr) ph.ball_ball_friction_fit = false;
   if (!optional_number(*p, path, "gravity", ph.gravity) ||
       !non_negative(ph.gravity, member_path(path, "gravity"))) {
     return false;
@@ -253,6 +272,16 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
   if (const json* c = find(*p, "ball_clusters")) {
     if (!c->is_boolean()) return fail(member_path(path, "ball_clusters"), expected("true or false", *c));
     ph.ball_clusters = c->get<bool>();
+  }
+  // Extension: the pool model's ball-ball impact law.
+  if (const json* b = find(*p, "ball_ball_model")) {
+    const std::string bpath = member_path(path, "ball_ball_model");
+    std::string law;
+    if (!text_of(*b, bpath, "ball-ball model", {"friction", "mathavan_2014"}, law)) return false;
+    ph.ball_ball_model = law == "friction" ? BallBallModel::friction : BallBallModel::mathavan_2014;
+    if (ph.ball_ball_model != BallBallModel::friction && ph.model != Model::pool) {
+      return fail(bpath, "\"" + law + "\" needs the pool model");
+    }
   }
   // Without an explicit deceleration a ball slows as a rolling ball does
   // on cloth: mu_r g (0.0981 m/s^2 with the defaults). The pool model

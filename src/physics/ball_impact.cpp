@@ -80,6 +80,7 @@
 //   impact as the slip falls).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "breakshot/detmath.hpp"
 #include "breakshot/pool.hpp"
@@ -151,6 +152,106 @@ BallImpact ball_ball_impact(Vec2 p1, Vec2 v1, Vec3 w1, double m1, double r1, Vec
   const Vec3 n_x_jt = cross3(n3, jt);
   out.w1 = w1 - n_x_jt * (r1 / i1);
   out.w2 = w2 - n_x_jt * (r2 / i2);
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// Mathavan, Jackson, Parkin 2014, "Numerical simulations of the frictional
+// collisions of solid balls on a rough surface", Sports Eng. 17:227-237.
+//
+// The impact is followed through the normal impulse P instead of being
+// solved in one step. At each increment dP (on ball 2 along n, on ball 1
+// along -n), with the slips as they are at that moment:
+//
+// - friction at the ball-ball contact: mu_b dP along the contact slip u_t
+//   (the same 3-D slip as above) on ball 2, the opposite on ball 1;
+// - its vertical part presses one of the balls into the cloth (the ball it
+//   pushes down): the cloth answers with the same vertical impulse N and a
+//   friction mu_s N against that ball's slip on the cloth,
+//   s = v + w x (-r z); the ball it pushes up stays on the cloth (gravity's
+//   impulse during the impact is neglected, as in the paper: no hop);
+// - each ball's velocity changes by its horizontal impulses / m and its spin
+//   by the moments of the impulses about its centre / I (the normal impulse
+//   and the cloth's vertical reaction have none).
+//
+// Restitution is Stronge's energetic one, as in the paper: the work of the
+// normal force during compression (until the normal relative velocity
+// turns from closing to separating) is W_c, and the impact ends when the
+// total work reaches (1 + e^2) W_c. dP is the frictionless impulse
+// (1 + e) m_red v_n / steps (the paper's eq. 14: about `steps` increments).
+//
+// mu_b is evaluated once, at the slip at the start (BallFriction, as in the
+// friction model); mu_s is the cloth's sliding friction. Only sqrt and the
+// four operations: the result is the same on every IEEE machine.
+BallImpact ball_ball_impact_mathavan(Vec2 p1, Vec2 v1, Vec3 w1, double m1, double r1, Vec2 p2,
+                                     Vec2 v2, Vec3 w2, double m2, double r2, double restitution,
+                                     const BallFriction& friction, double cloth_friction,
+                                     int steps) {
+  BallImpact out{v1, v2, w1, w2};
+  if (!(m1 > 0.0 && m2 > 0.0 && r1 > 0.0 && r2 > 0.0 && steps > 0)) return out;
+  const Vec2 d = p2 - p1;
+  const double dist = norm(d);
+  if (!(dist > 0.0)) return out;
+  const Vec2 n = d / dist;
+  const double closing = dot(v1 - v2, n);
+  if (!(closing > 0.0)) return out;
+
+  const Vec3 n3 = lift(n);
+  const Vec3 z{0.0, 0.0, 1.0};
+  const double i1 = 0.4 * m1 * r1 * r1;
+  const double i2 = 0.4 * m2 * r2 * r2;
+  const double mu_red = m1 * m2 / (m1 + m2);
+  const double dp = (1.0 + restitution) * mu_red * closing / static_cast<double>(steps);
+
+  Vec3 a_v = lift(v1), b_v = lift(v2), a_w = w1, b_w = w2;
+  auto contact_slip = [&] {
+    const Vec3 u = (a_v + cross3(a_w, n3 * r1)) - (b_v + cross3(b_w, n3 * (-r2)));
+    return u - n3 * dot3(u, n3);
+  };
+  const Vec3 ut0 = contact_slip();
+  const double mu_b = friction(std::sqrt(dot3(ut0, ut0)));
+
+  // Table friction on a ball pressed down by `down` (> 0) with slip s.
+  auto cloth = [&](Vec3 v, Vec3 w, double r, double down) {
+    if (!(down > 0.0)) return Vec3{};
+    const Vec3 s = v + cross3(w, z * (-r));
+    const Vec3 sh{s.x, s.y, 0.0};
+    const double len = std::sqrt(dot3(sh, sh));
+    if (!(len > 0.0)) return Vec3{};
+    return sh * (-cloth_friction * down / len);
+  };
+
+  double vn = -closing;  // (v2 - v1) . n: < 0 while closing
+  double work = 0.0;
+  double work_end = std::numeric_limits<double>::infinity();
+  bool compressed = false;
+  const long limit = 100L * steps;  // the normal impulse alone ends it in ~steps
+  for (long k = 0; k < limit && (vn < 0.0 || work < work_end); ++k) {
+    const Vec3 ut = contact_slip();
+    const double slip = std::sqrt(dot3(ut, ut));
+    const Vec3 f = slip > 0.0 ? ut * (mu_b * dp / slip) : Vec3{};  // on ball 2
+    // Vertical part: -f.z on ball 1, +f.z on ball 2; the one pushed down
+    // is held by the cloth.
+    const Vec3 t1 = cloth(a_v, a_w, r1, f.z);
+    const Vec3 t2 = cloth(b_v, b_w, r2, -f.z);
+    const Vec3 on1 = n3 * (-dp) - f + t1;
+    const Vec3 on2 = n3 * dp + f + t2;
+    a_v = a_v + Vec3{on1.x, on1.y, 0.0} * (1.0 / m1);
+    b_v = b_v + Vec3{on2.x, on2.y, 0.0} * (1.0 / m2);
+    a_w = a_w + (cross3(n3 * r1, f * -1.0) + cross3(z * (-r1), t1)) * (1.0 / i1);
+    b_w = b_w + (cross3(n3 * (-r2), f) + cross3(z * (-r2), t2)) * (1.0 / i2);
+    const double vn_before = vn;
+    vn = dot3(b_v - a_v, n3);
+    work += 0.5 * dp * std::abs(vn_before + vn);
+    if (!compressed && vn > 0.0) {
+      compressed = true;
+      work_end = (1.0 + restitution * restitution) * work;
+    }
+  }
+  out.v1 = flat(a_v);
+  out.v2 = flat(b_v);
+  out.w1 = a_w;
+  out.w2 = b_w;
   return out;
 }
 

@@ -101,11 +101,16 @@ void Engine::collide_pool_balls(std::int32_t i, std::int32_t j) {
   const double vc = scenario_.physics.collapse_speed;
   const double e = closing < vc ? 1.0 : pair_restitution(i, j);
   const PhysicsParams& ph = scenario_.physics;
+  const FrictionCurve& curve = ph.ball_ball_friction_curve;
   const BallFriction friction = ph.ball_ball_friction_fit
-                                    ? BallFriction{}
+                                    ? BallFriction{curve.a, curve.b, curve.c}
                                     : BallFriction{ph.ball_ball_friction, 0.0, 0.0};
-  const BallImpact r = ball_ball_impact(A.p0, A.v0, A.w0, ma, radius_[ui], B.p0, B.v0, B.w0, mb,
-                                        radius_[uj], e, friction);
+  const BallImpact r =
+      ph.ball_ball_model == BallBallModel::mathavan_2014
+          ? ball_ball_impact_mathavan(A.p0, A.v0, A.w0, ma, radius_[ui], B.p0, B.v0, B.w0, mb,
+                                      radius_[uj], e, friction, ph.sliding_friction)
+          : ball_ball_impact(A.p0, A.v0, A.w0, ma, radius_[ui], B.p0, B.v0, B.w0, mb,
+                             radius_[uj], e, friction);
   set_motion(i, r.v1, r.w1);
   set_motion(j, r.v2, r.w2);
   const double reduced = ma * mb / (ma + mb);

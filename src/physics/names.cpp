@@ -14,6 +14,14 @@ std::string_view to_string(Model m) {
   return "?";
 }
 
+std::string_view to_string(BallBallModel m) {
+  switch (m) {
+    case BallBallModel::friction: return "friction";
+    case BallBallModel::mathavan_2014: return "mathavan_2014";
+  }
+  return "?";
+}
+
 std::string_view to_string(MotionState s) {
   switch (s) {
     case MotionState::stationary: return "stationary";

@@ -50,6 +50,30 @@ bool in_unit_interval(double x) { return x >= 0.0 && x <= 1.0; }
 bool positive_finite(double x) { return std::isfinite(x) && x > 0.0; }
 bool non_negative_finite(double x) { return std::isfinite(x) && x >= 0.0; }
 
+}  // namespace
+
+std::optional<FrictionCurveProblem> check_friction_curve(const FrictionCurve& k) {
+  for (const auto& [member, value] : {std::pair{'a', k.a}, {'b', k.b}, {'c', k.c}}) {
+    if (!std::isfinite(value)) return FrictionCurveProblem{member, "must be finite"};
+  }
+  if (!(k.c >= 0.0)) {
+    return FrictionCurveProblem{
+        'c', "must be >= 0, not " + num(k.c) +
+                 " (with c < 0, mu = a + b exp(-c v) grows without bound with the slip speed)"};
+  }
+  if (!in_unit_interval(k.a)) {
+    return FrictionCurveProblem{
+        'a', "a (mu at high slip speeds) must be in [0, 1], not " + num(k.a)};
+  }
+  if (!in_unit_interval(k.a + k.b)) {
+    return FrictionCurveProblem{
+        'b', "a + b (mu at zero slip) must be in [0, 1], not " + num(k.a + k.b)};
+  }
+  return std::nullopt;
+}
+
+namespace {
+
 std::optional<ScenarioError> check_physics(const PhysicsParams& p) {
   if (!(std::isfinite(p.ball_ball_restitution) && in_unit_interval(p.ball_ball_restitution))) {
     return ScenarioError{"physics.ball_ball_restitution", "restitution must be in [0, 1]"};
@@ -65,6 +89,17 @@ std::optional<ScenarioError> check_physics(const PhysicsParams& p) {
   for (const auto& [path, value] : non_negative) {
     if (!non_negative_finite(value)) {
       return ScenarioError{path, "must be finite and >= 0, not " + num(value)};
+    }
+  }
+  if (p.ball_ball_model != BallBallModel::friction && p.model != Model::pool) {
+    return ScenarioError{"physics.ball_ball_model",
+                         "\"" + std::string(to_string(p.ball_ball_model)) +
+                             "\" needs the pool model"};
+  }
+  if (p.ball_ball_friction_fit) {
+    if (auto bad = check_friction_curve(p.ball_ball_friction_curve)) {
+      return ScenarioError{std::string("physics.ball_ball_friction.") + bad->member,
+                           std::move(bad->reason)};
     }
   }
   if (!positive_finite(p.collapse_speed)) {
