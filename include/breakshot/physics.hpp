@@ -22,7 +22,7 @@ std::string_view to_string(Model m);
 enum class BallBallModel : std::uint8_t {
   /// One instantaneous impulse: restitution along the line of centres and
   /// Coulomb friction at the contact, mu evaluated at the slip at the start
-  /// (Alciatore TP A-14). The default, and the physics before issue 22.
+  /// (Alciatore TP A-14). The default, and the law of breakshot 0.1.
   friction,
   /// Mathavan, Jackson, Parkin 2014 (Sports Eng. 17): the impact integrated
   /// over the normal impulse, with slip at the contact and at the cloth.
@@ -53,9 +53,8 @@ std::optional<FrictionCurveProblem> check_friction_curve(const FrictionCurve& cu
 
 /// Alciatore's fit to Marlow's friction data (TP A-28, "Throw plots for
 /// all types of shots": mu = 0.11, 0.06, 0.01 at v = 0.1, 1, 10 times
-/// sin(45 deg) m/s). pooltool's default; breakshot's default curve before
-/// and during issue 22's first step (the throw it gives is 2-3 times below
-/// the measured, docs/physics.md).
+/// sin(45 deg) m/s). pooltool's default; breakshot's default curve (the
+/// throw it gives is 2-3 times below the measured, docs/physics.md).
 inline constexpr FrictionCurve kThrowFitTPA28{0.009951, 0.108, 1.088};
 
 /// Alciatore's refit of the same curve to Colin Colenso's measured throw

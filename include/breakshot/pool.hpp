@@ -124,7 +124,7 @@ enum class CushionModel : std::uint8_t {
   /// and its vertical part is then dropped, so the rail keeps less than
   /// its restitution says (0.854 of the speed straight in with e = 1 and
   /// no friction, nose 63.5 %). The default, so that every output made
-  /// before issue 22 stays the same.
+  /// with breakshot 0.1 stays the same.
   han_2005_v0,
   /// "han_2005": Han's impulse law with the slate taking the vertical part
   /// of the rail's impulse (the ball stays on the cloth): Newton's

@@ -92,7 +92,7 @@
 // components (every impulse of the rail acts at r; v_z does not enter
 // those two components).
 //
-// What is wrong with it (issue 22): the normal impulse (1 + e) c v_x is
+// What is wrong with it: the normal impulse (1 + e) c v_x is
 // the one a ball free to move vertically would take; the cloth then
 // removes the vertical velocity it gave. Straight in, with e = 1 and no
 // friction, v_x' = v_x (1 - 2 c^2) = -0.854 v_x at the 63.5 % nose: the
@@ -105,7 +105,7 @@
 //
 // PART 2, han_2005: Han's law with the slate's reaction.
 //
-// Assumption (issue 22): the ball stays on the cloth during the impact,
+// Assumption: the ball stays on the cloth during the impact,
 // so the slate supplies whatever vertical impulse keeps v_z = 0. That
 // reaction acts through the lowest point, straight up, hence through the
 // centre: it changes no spin. With no friction at the cloth (Han's model
