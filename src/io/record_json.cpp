@@ -210,12 +210,15 @@ bool RecordReader::read(const json& doc, GameRecord& r) {
     std::string maker;
     if (const json* e = find(doc, "engine"); e != nullptr && e->is_object()) {
       if (const json* v = find(*e, "version"); v != nullptr && v->is_string()) {
-        maker = " (made by breakshot " + v->get<std::string>() + ")";
+        const std::string engine = v->get<std::string>();
+        maker = " (made by breakshot " + engine + (newer_engine(engine) ? ", a newer version" : "") +
+                ")";
       }
     }
     return fail("version", "this breakshot (" + std::string(kVersion) +
-                               ") reads version 1 to " + std::to_string(GameRecord::kVersion) +
-                               " records, not version " + std::to_string(version) + maker);
+                               ") reads records of versions 1 to " +
+                               std::to_string(GameRecord::kVersion) + ", not version " +
+                               std::to_string(version) + maker);
   }
   if (version == 1) {
     // Before the engine and the physics were recorded: every version 1
