@@ -561,7 +561,7 @@ int main(int argc, char** argv) {
       "Prints the summary of all the games the files cover, exactly the bytes\n"
       "that one 'breakshot match' over those games prints when they are games\n"
       "0 .. N-1 (with \"first_game\" or \"game_ranges\" otherwise). The files\n"
-      "must be of one match (game, table, seed, noise and players) and cover\n"
+      "must be of one match (game, table, physics, seed, noise and players) and cover\n"
       "different games; any order. --timing summaries cannot be summed.\n"
       "\n"
       "Exit status:\n"
@@ -581,8 +581,12 @@ int main(int argc, char** argv) {
       "  0  the record replays identical (the winner is printed)\n"
       "  4  the replay differs: standard output names the first action and field\n"
       "  2  the record cannot be read or is invalid: standard error names the\n"
-      "     JSON path\n"
-      "  1  anything else");
+      "     JSON path (a record of a physics or a record version this build\n"
+      "     does not have: also the record's version and the engine that made it)\n"
+      "  1  anything else\n"
+      "\n"
+      "Records of version 1 (written before the engine and the physics were\n"
+      "recorded) replay on the legacy physics they were played with.");
 
   ServeArgs serve_args;
   CLI::App* srv = app.add_subcommand(
