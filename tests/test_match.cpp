@@ -555,6 +555,80 @@ TEST_F(MatchCli, BadArgumentsExitTwoNamingTheProblem) {
   EXPECT_NE(r.err.find("--seed: "), std::string::npos) << r.err;
 }
 
+TEST_F(MatchCli, PhysicsOptionsAreRecordedAndShownOnlyWhenNotTheDefault) {
+  const std::string args = "match --game nine_ball --players baseline,baseline --games 1 "
+                           "--seed 3 --noise tournament";
+  const Run plain = run(args);
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("physics"), std::string::npos) << plain.out;
+  // The defaults by their names give the same bytes.
+  const Run named = run(args + " --cushion-model han_2005_v0 --ball-ball-model friction "
+                               "--ball-ball-friction tpa28");
+  ASSERT_EQ(named.status, 0) << named.err;
+  EXPECT_EQ(named.out, plain.out);
+
+  const Run r = run(args + " --cushion-model mathavan_2010 --ball-ball-friction tpb3 --records " +
+                    quote((dir_ / "records").string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_TRUE(j.contains("physics")) << r.out;
+  EXPECT_EQ(j["physics"]["cushion_model"], "mathavan_2010");
+  EXPECT_EQ(j["physics"]["ball_ball_model"], "friction");
+  EXPECT_EQ(j["physics"]["ball_ball_friction"], json::parse(R"({"a":0.016,"b":0.219,"c":0.691})"));
+  const GameRecord rec = read_file(dir_ / "records" / "game-0001.json");
+  EXPECT_EQ(rec.config.physics.cushion_model, CushionModel::mathavan_2010);
+  EXPECT_TRUE(rec.config.physics.ball_ball_friction_curve == kThrowFitTPB3);
+  const Run rep = run("replay " + quote((dir_ / "records" / "game-0001.json").string()));
+  EXPECT_EQ(rep.status, 0) << rep.out << rep.err;
+
+  const Run c = run(args + " --cushion-model han_2005 --ball-ball-model mathavan_2014 "
+                           "--ball-ball-friction 0.06");
+  ASSERT_EQ(c.status, 0) << c.err;
+  const json k = json::parse(c.out);
+  EXPECT_EQ(k["physics"]["cushion_model"], "han_2005");
+  EXPECT_EQ(k["physics"]["ball_ball_model"], "mathavan_2014");
+  EXPECT_EQ(k["physics"]["ball_ball_friction"], 0.06);
+  const Run curve = run(args + " --ball-ball-friction 0.016,0.219,0.691");
+  ASSERT_EQ(curve.status, 0) << curve.err;
+  EXPECT_EQ(json::parse(curve.out)["physics"]["ball_ball_friction"]["c"], 0.691);
+
+  struct Case {
+    const char* option;
+    const char* message;
+  };
+  const Case bad[] = {
+      {"--cushion-model han_2006", "--cushion-model: unknown cushion model 'han_2006'"},
+      {"--ball-ball-model hertz", "--ball-ball-model: unknown ball-ball model 'hertz'"},
+      {"--ball-ball-friction tpb4", "--ball-ball-friction: expected tpa28, tpb3"},
+      {"--ball-ball-friction 1,2", "--ball-ball-friction: expected one number"},
+      {"--ball-ball-friction 0.5,0.9,1", "--ball-ball-friction: b: "},
+      {"--ball-ball-friction -0.1", "--ball-ball-friction: a constant friction must be >= 0"},
+  };
+  for (const Case& b : bad) {
+    const Run e = run(args + " " + b.option);
+    EXPECT_EQ(e.status, 2) << b.option << ": " << e.err;
+    EXPECT_NE(e.err.find(b.message), std::string::npos) << b.option << ": " << e.err;
+    EXPECT_TRUE(e.out.empty()) << b.option;
+  }
+}
+
+TEST_F(MatchCli, RecordOfAnUnknownPhysicsExitsTwoNamingItsVersion) {
+  ASSERT_EQ(play_one().status, 0);
+  ojson doc = ojson::parse(slurp(dir_ / "records" / "game-0001.json"));
+  doc["engine"]["version"] = "9.0.0";
+  doc["physics"]["cushion_model"] = "impulse_frictional";
+  std::ofstream(dir_ / "future.json", std::ios::binary) << doc.dump();
+  const Run r = run("replay " + quote((dir_ / "future.json").string()));
+  EXPECT_EQ(r.status, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("invalid record: physics.cushion_model: unknown cushion model "
+                       "\"impulse_frictional\""),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("version 2 record made by breakshot 9.0.0, a newer version"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST_F(MatchCli, OtherFailuresExitOne) {
   std::ofstream(dir_ / "file") << "in the way";
   Run r = run("match --game nine_ball --players baseline,baseline --games 1 --seed 1 "

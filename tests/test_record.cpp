@@ -161,8 +161,8 @@ TEST(RecordIo, OneActionPerLine) {
   const std::string text = write_record(sample_record());
   std::size_t lines = 0;
   for (char c : text) lines += c == '\n' ? 1 : 0;
-  // "{", 7 header lines, "actions": [, 3 actions, "]", "}".
-  EXPECT_EQ(lines, 1u + 7u + 1u + 3u + 1u + 1u) << text;
+  // "{", 9 header lines, "actions": [, 3 actions, "]", "}".
+  EXPECT_EQ(lines, 1u + 9u + 1u + 3u + 1u + 1u) << text;
   EXPECT_NE(text.find("\n  \"seed\": \"18446744073709551615\",\n"), std::string::npos);
   // The noise per seat, on one line.
   EXPECT_NE(text.find("\n  \"noise\": [{\"phi\":0.125,"), std::string::npos) << text;
@@ -275,7 +275,7 @@ TEST(RecordIo, MalformedRecordsNameThePath) {
        "missing required field"},
       {"format", [](ojson& j) { j["format"] = "breakshot-scenario"; }, "format",
        "breakshot-game-record"},
-      {"version", [](ojson& j) { j["version"] = 2; }, "version", "not version 2"},
+      {"version", [](ojson& j) { j["version"] = 3; }, "version", "not version 3"},
       {"players", [](ojson& j) { j["players"].push_back("third"); }, "players",
        "an array of 2"},
       {"not an object", [](ojson& j) { j = ojson::array(); }, "(document)",

@@ -34,6 +34,7 @@
 #include "breakshot/record_io.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
+#include "breakshot/version.hpp"
 #include "web_api.hpp"
 
 namespace {
@@ -260,8 +261,8 @@ TEST(WebApi, ErrorsNameTheField) {
   EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), 100000)), "from:"));
 }
 
-/// A link holding `body`: "v1." and its base64url.
-std::string link_of_body(const std::string& body) {
+/// A link holding `body`: `prefix` ("v1." by default) and its base64url.
+std::string link_of_body(const std::string& body, const std::string& prefix = "v1.") {
   static constexpr char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
   std::string enc;
   std::uint32_t acc = 0;
@@ -275,7 +276,66 @@ std::string link_of_body(const std::string& body) {
     }
   }
   if (bits > 0) enc.push_back(kB64[(acc << (6 - bits)) & 63]);
-  return "v1." + enc;
+  return prefix + enc;
+}
+
+/// The JSON body of a link (after its "vN.").
+json body_of_link(const std::string& link) {
+  static const std::string kB64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+  std::string out;
+  std::uint32_t acc = 0;
+  int bits = 0;
+  for (const char c : link.substr(link.find('.') + 1)) {
+    acc = (acc << 6) | static_cast<std::uint32_t>(kB64.find(c));
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out.push_back(static_cast<char>((acc >> bits) & 0xff));
+    }
+  }
+  return json::parse(out);
+}
+
+TEST(WebApi, LinksSayTheEngineAndThePhysicsAndV1LinksReadAsLegacy) {
+  GamePtr g = short_game(3);
+  const std::string link = link_of(g.get());
+  ASSERT_TRUE(starts_with(link, "v2.")) << link;
+  const json body = body_of_link(link);
+  EXPECT_EQ(body["e"], std::string(bs::kVersion));
+  EXPECT_EQ(body["ph"], json::parse(R"({"cushion_model":"han_2005_v0","ball_ball_model":"friction",
+                                        "ball_ball_friction":{"a":0.009951,"b":0.108,"c":1.088}})"));
+  // The same game as a link of before (no engine, no physics): the legacy
+  // physics, the same game.
+  json old = body;
+  old.erase("e");
+  old.erase("ph");
+  GamePtr h(bs_game_from_link(link_of_body(old.dump()).c_str()));
+  ASSERT_NE(h, nullptr) << bs_last_error();
+  EXPECT_EQ(record_of(h.get()), record_of(g.get()));
+  EXPECT_EQ(link_of(h.get()), link);
+
+  // Another physics is played and kept.
+  json other = body;
+  other["ph"] = json::parse(R"({"cushion_model":"mathavan_2010","ball_ball_model":"mathavan_2014",
+                                "ball_ball_friction":{"a":0.016,"b":0.219,"c":0.691}})");
+  other["a"] = json::array();
+  GamePtr m(bs_game_from_link(link_of_body(other.dump(), "v2.").c_str()));
+  ASSERT_NE(m, nullptr) << bs_last_error();
+  EXPECT_EQ(body_of_link(link_of(m.get()))["ph"], other["ph"]);
+  EXPECT_NE(record_of(m.get()).find("\"cushion_model\":\"mathavan_2010\""), std::string::npos);
+
+  // Physics this build does not have: refused, naming the link's engine.
+  json future = other;
+  future["e"] = "0.3.0";
+  future["ph"]["cushion_model"] = "impulse_frictional";
+  EXPECT_EQ(bs_game_from_link(link_of_body(future.dump(), "v2.").c_str()), nullptr);
+  const std::string err = error_of(bs_last_error());
+  EXPECT_TRUE(starts_with(err, "link.ph.cushion_model: unknown cushion model \"impulse_frictional\""))
+      << err;
+  EXPECT_NE(err.find("made by breakshot 0.3.0"), std::string::npos) << err;
+  // A link format of a later version is named.
+  EXPECT_EQ(bs_game_from_link("v3.e30"), nullptr);
+  EXPECT_NE(error_of(bs_last_error()).find("not \"v3\""), std::string::npos) << bs_last_error();
 }
 
 TEST(WebApi, LinkErrorsNameTheActionRefused) {
@@ -572,7 +632,7 @@ TEST(WebApi, LinkRoundTripReproducesTheGameExactly) {
                              "a": 0.1, "b": -1e-310)", "null", "true"));
   }
   const std::string link = link_of(g.get());
-  ASSERT_TRUE(starts_with(link, "v1."));
+  ASSERT_TRUE(starts_with(link, "v2."));
   GamePtr h(bs_game_from_link(link.c_str()));
   ASSERT_NE(h, nullptr) << bs_last_error();
   EXPECT_EQ(record_of(h.get()), record_of(g.get()));

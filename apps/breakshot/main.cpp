@@ -4,7 +4,8 @@
 //   breakshot simulate FILE|- [-o PATH] [--plot PREFIX]
 //   breakshot match --game eight_ball|nine_ball --players A,B --games N
 //                   --seed S --noise LEVEL [--table 7ft|8ft|9ft] [--records DIR] [--timing]
-//                   [--first-game N]
+//                   [--first-game N] [--cushion-model NAME] [--ball-ball-model NAME]
+//                   [--ball-ball-friction tpa28|tpb3|A,B,C|MU]
 //   breakshot match-sum SUMMARY...
 //     (--noise is the noise of players without one of their own; AI levels
 //     shoot with their level's noise)
@@ -200,6 +201,9 @@ struct MatchArgs {
   std::string records;
   std::string first_game = "0";
   bool timing = false;
+  std::string cushion_model;       // empty: the default
+  std::string ball_ball_model;     // empty: the default
+  std::string ball_ball_friction;  // empty: the default
 };
 
 template <class T>
@@ -207,6 +211,67 @@ bool parse_whole(const std::string& text, T& out) {
   const char* last = text.data() + text.size();
   const auto r = std::from_chars(text.data(), last, out);
   return !text.empty() && r.ec == std::errc() && r.ptr == last;
+}
+
+/// --ball-ball-friction: "tpa28", "tpb3", "A,B,C" (the curve a + b exp(-c v))
+/// or one number (a constant).
+void parse_ball_ball_friction(const std::string& text, bs::GamePhysics& p) {
+  const std::string option = "--ball-ball-friction: ";
+  if (text == "tpa28" || text == "tpb3") {
+    p.ball_ball_friction_fit = true;
+    p.ball_ball_friction_curve = text == "tpa28" ? bs::kThrowFitTPA28 : bs::kThrowFitTPB3;
+    p.ball_ball_friction = 0.0;
+    return;
+  }
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos
+                                                                           : comma - start);
+    double x = 0.0;
+    if (!parse_whole(part, x) || !std::isfinite(x)) {
+      throw BadArgument{option + "expected tpa28, tpb3, a curve A,B,C or a constant friction, "
+                        "not '" + text + "'"};
+    }
+    values.push_back(x);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (values.size() == 3) {
+    p.ball_ball_friction_fit = true;
+    p.ball_ball_friction_curve = {values[0], values[1], values[2]};
+    p.ball_ball_friction = 0.0;
+    if (auto bad = bs::check_friction_curve(p.ball_ball_friction_curve)) {
+      throw BadArgument{option + std::string(1, bad->member) + ": " + bad->reason};
+    }
+  } else if (values.size() == 1) {
+    if (values[0] < 0.0) {
+      throw BadArgument{option + "a constant friction must be >= 0, not '" + text + "'"};
+    }
+    p.ball_ball_friction_fit = false;
+    p.ball_ball_friction_curve = bs::FrictionCurve{};
+    p.ball_ball_friction = values[0];
+  } else {
+    throw BadArgument{option + "expected one number (a constant) or three (a curve A,B,C), not '" +
+                      text + "'"};
+  }
+}
+
+/// The physics options of `match`: the engine's defaults where not given.
+bs::GamePhysics match_physics(const MatchArgs& a) {
+  bs::GamePhysics p;
+  if (!a.cushion_model.empty() && !bs::parse_cushion_model(a.cushion_model, p.cushion_model)) {
+    throw BadArgument{"--cushion-model: unknown cushion model '" + a.cushion_model +
+                      "' (han_2005_v0, han_2005 or mathavan_2010)"};
+  }
+  if (!a.ball_ball_model.empty() &&
+      !bs::parse_ball_ball_model(a.ball_ball_model, p.ball_ball_model)) {
+    throw BadArgument{"--ball-ball-model: unknown ball-ball model '" + a.ball_ball_model +
+                      "' (friction or mathavan_2014)"};
+  }
+  if (!a.ball_ball_friction.empty()) parse_ball_ball_friction(a.ball_ball_friction, p);
+  return p;
 }
 
 bs::MatchOptions match_options(const MatchArgs& a) {
@@ -255,6 +320,7 @@ bs::MatchOptions match_options(const MatchArgs& a) {
     throw BadArgument{"--table: unknown table size '" + a.table + "' (7ft, 8ft or 9ft)"};
   }
   opt.table_size = a.table;
+  opt.physics = match_physics(a);
   opt.timing = a.timing;
   return opt;
 }
@@ -449,6 +515,18 @@ int main(int argc, char** argv) {
                     "Play games N .. N + games - 1 of the match (default 0): each game is played "
                     "as in one long match, so chunks of a match can be summed (match-sum)")
       ->type_name("N");
+  match->add_option("--cushion-model", match_args.cushion_model,
+                    "Cushion law: han_2005_v0 (default, the legacy law), han_2005 or "
+                    "mathavan_2010 (docs/physics.md)")
+      ->type_name("NAME");
+  match->add_option("--ball-ball-model", match_args.ball_ball_model,
+                    "Ball-ball impact law: friction (default) or mathavan_2014")
+      ->type_name("NAME");
+  match->add_option("--ball-ball-friction", match_args.ball_ball_friction,
+                    "Ball-ball friction: tpa28 (default, Alciatore TP A-28's curve), tpb3 (the "
+                    "refit to the measured throw, TP B-3), a curve A,B,C (mu = a + b exp(-c v)) "
+                    "or a constant")
+      ->type_name("SPEC");
   match->add_flag("--timing", match_args.timing,
                   "Add each player's decision times (median, p90, max seconds) to the summary; "
                   "they vary from run to run");
@@ -459,13 +537,18 @@ int main(int argc, char** argv) {
       "Exit status:\n"
       "  0  played; the summary JSON is on standard output\n"
       "  2  a bad argument (unknown game, player or table, games < 1, bad seed,\n"
-      "     noise or first game): standard error names it\n"
+      "     noise, first game or physics): standard error names it\n"
       "  1  anything else (a record cannot be written, a missing option)\n"
       "\n"
       "A long match can be played in chunks: --first-game N --games K plays games\n"
       "N .. N+K-1 exactly as one match from game 0 plays them (records are\n"
       "numbered game-(N+1).json, ...), and its summary says \"first_game\": N.\n"
-      "'breakshot match-sum' adds the chunks' summaries into the match's.");
+      "'breakshot match-sum' adds the chunks' summaries into the match's.\n"
+      "\n"
+      "The physics options choose the pool model's laws (the scenario fields\n"
+      "table.cushion_model, physics.ball_ball_model and physics.ball_ball_friction,\n"
+      "docs/scenario.md). Records always carry the physics; the summary shows it\n"
+      "(\"physics\") only when it is not the default.");
 
   std::vector<std::string> sum_files;
   CLI::App* msum = app.add_subcommand(
@@ -478,7 +561,7 @@ int main(int argc, char** argv) {
       "Prints the summary of all the games the files cover, exactly the bytes\n"
       "that one 'breakshot match' over those games prints when they are games\n"
       "0 .. N-1 (with \"first_game\" or \"game_ranges\" otherwise). The files\n"
-      "must be of one match (game, table, seed, noise and players) and cover\n"
+      "must be of one match (game, table, physics, seed, noise and players) and cover\n"
       "different games; any order. --timing summaries cannot be summed.\n"
       "\n"
       "Exit status:\n"
@@ -498,8 +581,12 @@ int main(int argc, char** argv) {
       "  0  the record replays identical (the winner is printed)\n"
       "  4  the replay differs: standard output names the first action and field\n"
       "  2  the record cannot be read or is invalid: standard error names the\n"
-      "     JSON path\n"
-      "  1  anything else");
+      "     JSON path (a record of a physics or a record version this build\n"
+      "     does not have: also the record's version and the engine that made it)\n"
+      "  1  anything else\n"
+      "\n"
+      "Records of version 1 (written before the engine and the physics were\n"
+      "recorded) replay on the legacy physics they were played with.");
 
   ServeArgs serve_args;
   CLI::App* srv = app.add_subcommand(

@@ -19,6 +19,7 @@
 
 #include "breakshot/ball.hpp"
 #include "breakshot/event.hpp"
+#include "breakshot/physics.hpp"
 #include "breakshot/pool.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/table.hpp"
@@ -40,6 +41,40 @@ std::optional<GameType> parse_game_type(std::string_view s);
 /// The names of every game the library plays, in GameType order.
 std::vector<std::string> game_type_names();
 
+/// The physics a game is played with: the choices of the pool model that
+/// a game may make (docs/rules.md, "Physics"). The rest of the physics is
+/// default_physics(Model::pool) with ball clusters on, as for every game.
+/// The defaults are the engine's defaults: today legacy_game_physics().
+struct GamePhysics {
+  /// The cushion law (`table.cushion_model`). mathavan_2010 brings its own
+  /// constants, as in a scenario: cushion restitution 0.98 and nose height
+  /// 0.7 of the diameter (pool.hpp, kMathavanRestitution and
+  /// kMathavanNoseHeight).
+  CushionModel cushion_model = CushionModel::han_2005_v0;
+  /// The ball-ball impact law (`physics.ball_ball_model`).
+  BallBallModel ball_ball_model = BallBallModel::friction;
+  /// The ball-ball friction (`physics.ball_ball_friction`): the curve
+  /// ball_ball_friction_curve when ball_ball_friction_fit is set, else the
+  /// constant ball_ball_friction.
+  bool ball_ball_friction_fit = true;
+  FrictionCurve ball_ball_friction_curve = kThrowFitTPA28;
+  double ball_ball_friction = 0.0;
+  bool operator==(const GamePhysics&) const = default;
+};
+
+/// The physics of every game played before issue 22, by its names:
+/// "han_2005_v0" cushions, "friction" ball-ball impacts with Alciatore's
+/// TP A-28 friction curve (kThrowFitTPA28). Version 1 game records and
+/// "v1." share links were played with it, and replay on it. Spelled out
+/// field by field: it stays this physics when GamePhysics's defaults move.
+inline constexpr GamePhysics kLegacyGamePhysics{CushionModel::han_2005_v0, BallBallModel::friction,
+                                                true, kThrowFitTPA28, 0.0};
+
+/// Why `physics` cannot be played (a friction curve that is no curve, a
+/// negative or non-finite constant friction), naming the field; nullopt
+/// when it can.
+std::optional<std::string> check_game_physics(const GamePhysics& physics);
+
 /// Equipment and limits of a game. Everything else is fixed by the rules.
 struct GameConfig {
   GameType game = GameType::eight_ball;
@@ -49,6 +84,8 @@ struct GameConfig {
   /// A game still going after this many shots is ended as a draw (the
   /// stalemate clause, docs/rules.md). 0: no limit.
   int max_shots = 400;
+  /// The physics choices (cushion and ball-ball laws, ball-ball friction).
+  GamePhysics physics;
   bool operator==(const GameConfig&) const = default;
 };
 
@@ -202,7 +239,8 @@ struct Outcome {
 /// functions are pure functions of their arguments.
 class Rules {
  public:
-  /// Throws std::invalid_argument for an unknown table size or bad sizes.
+  /// Throws std::invalid_argument for an unknown table size, bad sizes or
+  /// physics that check_game_physics refuses.
   explicit Rules(GameConfig config);
 
   const GameConfig& config() const { return config_; }

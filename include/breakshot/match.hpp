@@ -37,6 +37,8 @@ GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
 struct MatchOptions {
   GameType game = GameType::eight_ball;
   std::string table_size = "9ft";
+  /// The physics the games are played with (GameConfig::physics).
+  GamePhysics physics;
   std::array<std::string, 2> players;  ///< the seats' names (players.hpp: make_player)
   int games = 1;
   /// The index of the first game played: a match of `games` games plays
@@ -129,6 +131,7 @@ struct MatchSummary {
   std::string table_size = "9ft";
   std::uint64_t seed = 0;
   NoiseModel noise;  ///< the match's noise (MatchOptions::noise)
+  GamePhysics physics;  ///< MatchOptions::physics
   /// The games the summary covers, by index: ascending, disjoint and
   /// never adjacent (adjacent ranges are one range). play_match sets one
   /// range (first_game, games); add_summary joins two summaries' ranges.
@@ -162,7 +165,7 @@ void add_game(MatchSummary& summary, const GameRecord& record);
 /// in any grouping and any order, gives the summary of one match of N
 /// games, equal in every field. Throws std::invalid_argument naming the
 /// field (nothing added) when the two are not of the same match (game,
-/// table_size, seed, noise, a player's name or noise, the foul kinds) or
+/// table_size, physics, seed, noise, a player's name or noise, the foul kinds) or
 /// when their games overlap.
 void add_summary(MatchSummary& into, const MatchSummary& part);
 

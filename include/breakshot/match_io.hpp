@@ -13,7 +13,10 @@ namespace breakshot {
 /// are written only when they are not games 0 .. games_played - 1 (so a
 /// match from game 0 reads as it always has): "first_game": N before
 /// "games_played" for one range from N, or "game_ranges": [{"first_game":
-/// N, "games": K}, ...] for several (a sum of chunks with a gap).
+/// N, "games": K}, ...] for several (a sum of chunks with a gap). The
+/// physics ("physics": {"cushion_model", "ball_ball_model",
+/// "ball_ball_friction"}, as in a game record) is written after
+/// "table_size" only when it is not the default GamePhysics{}.
 std::string match_summary_json(const MatchSummary& summary);
 
 /// Reads a summary written by match_summary_json, so that

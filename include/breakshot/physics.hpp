@@ -30,6 +30,9 @@ enum class BallBallModel : std::uint8_t {
 };
 
 std::string_view to_string(BallBallModel m);
+/// The model of a name ("friction", "mathavan_2014"); false for an
+/// unknown name.
+bool parse_ball_ball_model(std::string_view name, BallBallModel& out);
 
 /// A ball-ball friction coefficient that falls with the slip speed v of
 /// the contact points (m/s): mu(v) = a + b exp(-c v).

@@ -21,6 +21,7 @@
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/pool.hpp"
+#include "breakshot/version.hpp"
 
 namespace breakshot {
 
@@ -43,7 +44,15 @@ struct RecordedAction {
 
 struct GameRecord {
   static constexpr std::string_view kFormat = "breakshot-game-record";
-  static constexpr int kVersion = 1;
+  /// Version 2 (breakshot 0.1.0 after issue 22) adds the engine and the
+  /// physics (GameConfig::physics) to the header; version 1 records have
+  /// neither and were played with kLegacyGamePhysics.
+  static constexpr int kVersion = 2;
+
+  /// The version of the library that played the game (version.hpp's
+  /// kVersion): this build's for a new record; "0.1.0" for a version 1
+  /// record, the only library version that wrote them.
+  std::string engine = std::string(::breakshot::kVersion);
 
   GameConfig config;
   std::array<std::string, 2> players;  ///< names, by seat

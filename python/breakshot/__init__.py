@@ -15,7 +15,7 @@ from .frames import Frames
 from .pot_maps import PotMap, pot_chance, pot_map
 from .result import Result
 from .game import (Call, Decide, Game, LegalActions, Outcome, PlaceCue, Player, Shot, State,
-                   action_from_dict, games, match, match_json, mix_seed, players)
+                   action_from_dict, games, match, match_json, mix_seed, physics_of, players)
 from .batch import STRIKE_COLUMNS, ShotResults, shots
 
 __version__ = _core.version
@@ -25,7 +25,8 @@ Simulation = _core.Simulation
 __all__ = ["__version__", "Scenario", "ScenarioError", "Result", "simulate",
            "Simulation", "shots", "ShotResults", "STRIKE_COLUMNS"]
 __all__ += ["Game", "State", "LegalActions", "Outcome", "Shot", "PlaceCue", "Decide", "Call",
-            "action_from_dict", "Player", "games", "players", "match", "match_json", "mix_seed"]
+            "action_from_dict", "Player", "games", "players", "match", "match_json", "mix_seed",
+            "physics_of"]
 __all__ += ["Frames", "PotMap", "pot_chance", "pot_map"]
 
 

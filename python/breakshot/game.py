@@ -397,7 +397,12 @@ class Game:
     ``"none"``, ``"tournament"``, ``"2x"`` or
     ``"custom:phi=0.1,speed=0.05"``, or one per seat. ``max_shots`` (None:
     the rules' 400) ends a game still going after that many shots as a
-    draw; 0 means no limit.
+    draw; 0 means no limit. ``physics`` (None: the defaults) chooses the
+    pool model's laws, as ``breakshot match`` does: a dict with any of
+    ``"cushion_model"`` (``"han_2005_v0"``, the default, ``"han_2005"`` or
+    ``"mathavan_2010"``), ``"ball_ball_model"`` (``"friction"`` or
+    ``"mathavan_2014"``) and ``"ball_ball_friction"`` (a number, or a curve
+    ``{"a": .., "b": .., "c": ..}``); see :func:`physics_of`.
 
     Game g of ``breakshot match --seed S`` is ``Game(game, seed=mix_seed(S,
     g), breaker=g % 2, players=(p0, p1), noise=...)`` with
@@ -407,7 +412,7 @@ class Game:
     def __init__(self, game: str = "eight_ball", table: str = "9ft", seed: int = 0,
                  breaker: int = 0, players: Sequence = ("Player 1", "Player 2"),
                  noise: Union[str, Sequence[str]] = "none", max_shots: Optional[int] = None,
-                 *, _core_game=None):
+                 physics: Optional[dict] = None, *, _core_game=None):
         if _core_game is not None:
             self._g = _core_game
             return
@@ -436,7 +441,7 @@ class Game:
         if max_shots is not None and max_shots < 0:
             raise ValueError(f"max_shots: must be 0 (no limit) or more, not {max_shots}")
         self._g = _core.GameCore(game, table, _seed(seed), int(breaker), names, noises,
-                                 -1 if max_shots is None else max_shots)
+                                 -1 if max_shots is None else max_shots, _physics(physics))
 
     # -- reading -------------------------------------------------------------
 
@@ -466,6 +471,13 @@ class Game:
         """The game's config as the record writes it (game, table_size,
         ball_radius, ball_mass, max_shots)."""
         return json.loads(self._g.config_json())
+
+    @property
+    def physics(self) -> dict:
+        """The physics the game is played with, as its record writes it:
+        cushion_model, ball_ball_model and ball_ball_friction (a number or
+        {"a", "b", "c"})."""
+        return json.loads(self._g.physics_json())
 
     @property
     def table(self) -> dict:
@@ -694,10 +706,38 @@ def mix_seed(a: int, b: int) -> int:
     return _core.mix_seed(_seed(a, "a"), _seed(b, "b"))
 
 
+def _physics(physics: Optional[dict]) -> Optional[str]:
+    """The physics argument as the JSON text _core takes (None: defaults)."""
+    if physics is None:
+        return None
+    if not isinstance(physics, dict):
+        raise ValueError(f"physics: expected a dict or None, not {type(physics).__name__}")
+    return json.dumps(physics)
+
+
+def physics_of(cushion_model: str = "han_2005_v0", ball_ball_model: str = "friction",
+               ball_ball_friction: Union[float, dict, str] = "tpa28") -> dict:
+    """A physics dict for Game, match and match_json. ``ball_ball_friction``
+    may also be ``"tpa28"`` (Alciatore's TP A-28 curve, the default) or
+    ``"tpb3"`` (his refit to the measured throw, TP B-3), as ``breakshot
+    match --ball-ball-friction`` takes them. The defaults are the legacy
+    physics every game was played with before issue 22."""
+    curves = {"tpa28": {"a": 0.009951, "b": 0.108, "c": 1.088},
+              "tpb3": {"a": 0.016, "b": 0.219, "c": 0.691}}
+    if isinstance(ball_ball_friction, str):
+        if ball_ball_friction not in curves:
+            raise ValueError(f"ball_ball_friction: expected tpa28, tpb3, a number or "
+                             f"{{'a', 'b', 'c'}}, not {ball_ball_friction!r}")
+        ball_ball_friction = dict(curves[ball_ball_friction])
+    return {"cushion_model": cushion_model, "ball_ball_model": ball_ball_model,
+            "ball_ball_friction": ball_ball_friction}
+
+
 def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
                noise: str = "none", table: str = "9ft",
                records: Union[None, str, os.PathLike] = None,
-               threads: Optional[int] = None, first_game: int = 0) -> str:
+               threads: Optional[int] = None, first_game: int = 0,
+               physics: Optional[dict] = None) -> str:
     """The summary text ``breakshot match`` prints for the same arguments
     (``--game``, ``--players a,b``, ``--games``, ``--seed``, ``--noise``,
     ``--table``, ``--records DIR``, ``--first-game``), byte for byte.
@@ -705,7 +745,10 @@ def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
     depend on it). ``first_game`` plays games first_game .. first_game +
     games - 1 of the match, each exactly as one match from game 0 plays it;
     such a chunk's summary says ``"first_game"`` and chunks add up
-    (``breakshot match-sum``)."""
+    (``breakshot match-sum``). ``physics`` (a dict, see :class:`Game` and
+    :func:`physics_of`) is ``--cushion-model``, ``--ball-ball-model`` and
+    ``--ball-ball-friction``; the summary shows it only when it is not the
+    default."""
     names = _pair(players, "players")
     if isinstance(players, str) or not all(isinstance(n, str) for n in names):
         raise ValueError("players: expected two player names")
@@ -718,18 +761,19 @@ def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
         raise ValueError(f"threads: expected a whole number >= 1 or None, not {threads!r}")
     return _core.match_json(game, list(names), games, _seed(seed), noise, table,
                             None if records is None else os.fspath(records),
-                            0 if threads is None else threads, first_game)
+                            0 if threads is None else threads, first_game, _physics(physics))
 
 
 def match(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
           noise: str = "none", table: str = "9ft",
           records: Union[None, str, os.PathLike] = None,
-          threads: Optional[int] = None, first_game: int = 0) -> dict:
+          threads: Optional[int] = None, first_game: int = 0,
+          physics: Optional[dict] = None) -> dict:
     """Plays a match as ``breakshot match`` does and returns its summary
     (the parsed JSON it prints: game, table, seed, noise, games_played,
     draws, players with their figures). ``records`` is a folder to write
     every game's record to (game-0001.json, ...). ``first_game`` plays
     only games first_game .. first_game + games - 1 (``--first-game``).
-    See match_json."""
+    ``physics`` chooses the laws (see match_json). See match_json."""
     return json.loads(match_json(game, players, games, seed, noise, table, records, threads,
-                                 first_game))
+                                 first_game, physics))

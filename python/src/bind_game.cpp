@@ -126,12 +126,35 @@ ojson facts_json(const ShotFacts& f) {
 }
 
 /// A game in progress: one GameSession.
+/// A game's physics from JSON text (None: the defaults): an object with
+/// any of "cushion_model", "ball_ball_model" and "ball_ball_friction" (a
+/// number or {"a", "b", "c"}), as a record writes them; the fields left
+/// out keep their defaults. ValueError "physics.FIELD: ..." otherwise.
+GamePhysics physics_arg(const std::optional<std::string>& text) {
+  GamePhysics p;
+  if (!text) return p;
+  json_io::json doc;
+  if (auto problem = json_io::parse_strict(*text, doc)) {
+    throw std::invalid_argument("physics: " + problem->error.reason);
+  }
+  if (!doc.is_object()) throw std::invalid_argument("physics: expected an object");
+  const json_io::json defaults = json_io::json::parse(json_io::physics_json(p).dump());
+  for (const auto& [key, value] : defaults.items()) {
+    if (!doc.contains(key)) doc[key] = value;
+  }
+  json_io::GameReader reader;
+  if (!reader.physics(doc, "physics", p)) {
+    throw std::invalid_argument(reader.error->path + ": " + reader.error->reason);
+  }
+  return p;
+}
+
 class GameCore {
  public:
   GameCore(const std::string& game, const std::string& table, std::uint64_t seed, int breaker,
            const std::array<std::string, 2>& names, const std::array<std::string, 2>& noise,
-           int max_shots)
-      : session_(config(game, table, max_shots), seats(names, noise), seed, breaker) {}
+           int max_shots, const std::optional<std::string>& physics)
+      : session_(config(game, table, max_shots, physics), seats(names, noise), seed, breaker) {}
 
   explicit GameCore(GameSession session) : session_(std::move(session)) {}
 
@@ -258,6 +281,9 @@ class GameCore {
   }
 
   std::string config_json() const { return json_io::config_json(session_.rules().config()).dump(); }
+  std::string physics_json() const {
+    return json_io::physics_json(session_.rules().config().physics).dump();
+  }
 
   std::vector<std::string> names() const {
     return {session_.record().players[0], session_.record().players[1]};
@@ -267,8 +293,10 @@ class GameCore {
   }
 
  private:
-  static GameConfig config(const std::string& game, const std::string& table, int max_shots) {
+  static GameConfig config(const std::string& game, const std::string& table, int max_shots,
+                           const std::optional<std::string>& physics) {
     GameConfig c;
+    c.physics = physics_arg(physics);
     c.game = game_arg(game);
     if (table != "7ft" && table != "8ft" && table != "9ft") {
       throw std::invalid_argument("table: unknown table size '" + table + "' (7ft, 8ft or 9ft)");
@@ -348,8 +376,10 @@ class PlayerCore {
 
 MatchOptions match_options(const std::string& game, const std::array<std::string, 2>& players,
                            int games, std::uint64_t seed, const std::string& noise,
-                           const std::string& table, int first_game) {
+                           const std::string& table, int first_game,
+                           const std::optional<std::string>& physics) {
   MatchOptions opt;
+  opt.physics = physics_arg(physics);
   opt.game = game_arg(game);
   opt.players = players;
   if (games < 1) {
@@ -379,8 +409,9 @@ MatchOptions match_options(const std::string& game, const std::array<std::string
 std::string match_json(const std::string& game, const std::array<std::string, 2>& players,
                        int games, std::uint64_t seed, const std::string& noise,
                        const std::string& table, const std::optional<std::string>& records,
-                       int threads, int first_game) {
-  const MatchOptions opt = match_options(game, players, games, seed, noise, table, first_game);
+                       int threads, int first_game, const std::optional<std::string>& physics) {
+  const MatchOptions opt =
+      match_options(game, players, games, seed, noise, table, first_game, physics);
   PlayerCore p0(players[0], threads);
   PlayerCore p1(players[1], threads);
   std::string text;
@@ -398,8 +429,8 @@ std::string match_json(const std::string& game, const std::array<std::string, 2>
 std::pair<std::string, std::vector<std::pair<int, std::string>>> match_chunk(
     const std::string& game, const std::array<std::string, 2>& players, std::uint64_t seed,
     const std::string& noise, const std::string& table, int first_game, int games, int threads,
-    bool records) {
-  MatchOptions opt = match_options(game, players, games, seed, noise, table, first_game);
+    bool records, const std::optional<std::string>& physics) {
+  MatchOptions opt = match_options(game, players, games, seed, noise, table, first_game, physics);
   opt.name_failing_game = true;
   PlayerCore p0(players[0], threads);
   PlayerCore p1(players[1], threads);
@@ -494,9 +525,11 @@ void bind_game(py::module_& m) {
 
   py::class_<GameCore>(m, "GameCore", "A game in progress (a C++ GameSession); see breakshot.Game.")
       .def(py::init<const std::string&, const std::string&, std::uint64_t, int,
-                    const std::array<std::string, 2>&, const std::array<std::string, 2>&, int>(),
+                    const std::array<std::string, 2>&, const std::array<std::string, 2>&, int,
+                    const std::optional<std::string>&>(),
            py::arg("game"), py::arg("table"), py::arg("seed"), py::arg("breaker"),
-           py::arg("names"), py::arg("noise"), py::arg("max_shots"))
+           py::arg("names"), py::arg("noise"), py::arg("max_shots"),
+           py::arg("physics") = py::none())
       .def_static("from_record", &GameCore::from_record, py::arg("text"))
       .def("state_json", &GameCore::state_json, py::arg("i"))
       .def("targets", &GameCore::targets)
@@ -508,6 +541,7 @@ void bind_game(py::module_& m) {
       .def("record_text", &GameCore::record_text)
       .def("table", &GameCore::table)
       .def("config_json", &GameCore::config_json)
+      .def("physics_json", &GameCore::physics_json)
       .def("names", &GameCore::names)
       .def("noise", &GameCore::noise)
       .def_property_readonly("actions", [](const GameCore& g) { return g.session().actions(); })
@@ -528,11 +562,12 @@ void bind_game(py::module_& m) {
 
   m.def("match_json", &match_json, py::arg("game"), py::arg("players"), py::arg("games"),
         py::arg("seed"), py::arg("noise"), py::arg("table"), py::arg("records"),
-        py::arg("threads"), py::arg("first_game") = 0,
-        "The summary text `breakshot match` prints for the same arguments.");
+        py::arg("threads"), py::arg("first_game") = 0, py::arg("physics") = py::none(),
+        "The summary text `breakshot match` prints for the same arguments (physics: JSON text"
+        " of the game's physics, or None for the defaults).");
   m.def("match_chunk", &match_chunk, py::arg("game"), py::arg("players"), py::arg("seed"),
         py::arg("noise"), py::arg("table"), py::arg("first_game"), py::arg("games"),
-        py::arg("threads"), py::arg("records"),
+        py::arg("threads"), py::arg("records"), py::arg("physics") = py::none(),
         "Games first_game .. first_game + games - 1 of a match (`breakshot match --first-game`):"
         " (summary text, [(g, record text), ...] if records else []). A failing game raises"
         " RuntimeError 'game G (seed S): ...'.");

@@ -79,6 +79,7 @@ MatchSummary empty_summary_with(const MatchOptions& options,
   MatchSummary s;
   s.game = options.game;
   s.table_size = options.table_size;
+  s.physics = options.physics;
   s.seed = options.seed;
   s.noise = options.noise;
   for (std::size_t p = 0; p < 2; ++p) {
@@ -94,6 +95,7 @@ GameConfig config_of(const MatchOptions& options) {
   GameConfig config;
   config.game = options.game;
   config.table_size = options.table_size;
+  config.physics = options.physics;
   return config;
 }
 
@@ -282,6 +284,10 @@ void same(const std::string& field, const std::string& a, const std::string& b) 
 void add_summary(MatchSummary& into, const MatchSummary& part) {
   same("game", std::string(to_string(into.game)), std::string(to_string(part.game)));
   same("table_size", into.table_size, part.table_size);
+  if (!(into.physics == part.physics)) {
+    throw std::invalid_argument(
+        "physics: the summaries are of different matches (played with different physics)");
+  }
   same("seed", std::to_string(into.seed), std::to_string(part.seed));
   same("noise", to_string(into.noise), to_string(part.noise));
   for (std::size_t p = 0; p < 2; ++p) {

@@ -14,10 +14,19 @@ bool same_bits(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
+bool identical(const GamePhysics& a, const GamePhysics& b) {
+  const FrictionCurve& ka = a.ball_ball_friction_curve;
+  const FrictionCurve& kb = b.ball_ball_friction_curve;
+  return a.cushion_model == b.cushion_model && a.ball_ball_model == b.ball_ball_model &&
+         a.ball_ball_friction_fit == b.ball_ball_friction_fit && same_bits(ka.a, kb.a) &&
+         same_bits(ka.b, kb.b) && same_bits(ka.c, kb.c) &&
+         same_bits(a.ball_ball_friction, b.ball_ball_friction);
+}
+
 bool identical(const GameConfig& a, const GameConfig& b) {
   return a.game == b.game && a.table_size == b.table_size &&
          same_bits(a.ball_radius, b.ball_radius) && same_bits(a.ball_mass, b.ball_mass) &&
-         a.max_shots == b.max_shots;
+         a.max_shots == b.max_shots && identical(a.physics, b.physics);
 }
 
 bool identical(const NoiseModel& a, const NoiseModel& b) {
@@ -65,7 +74,7 @@ bool RecordedAction::operator==(const RecordedAction& o) const {
 }
 
 bool GameRecord::operator==(const GameRecord& o) const {
-  return identical(config, o.config) && players == o.players && seed == o.seed &&
+  return identical(config, o.config) && engine == o.engine && players == o.players && seed == o.seed &&
          identical(noise[0], o.noise[0]) && identical(noise[1], o.noise[1]) &&
          identical(start, o.start) && actions == o.actions;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -125,6 +126,25 @@ std::shared_ptr<const detail::Ruleset> make_ruleset(GameType game) {
 
 }  // namespace
 
+std::optional<std::string> check_game_physics(const GamePhysics& p) {
+  if (p.cushion_model != CushionModel::han_2005_v0 && p.cushion_model != CushionModel::han_2005 &&
+      p.cushion_model != CushionModel::mathavan_2010) {
+    return "physics.cushion_model: not a cushion model";
+  }
+  if (p.ball_ball_model != BallBallModel::friction &&
+      p.ball_ball_model != BallBallModel::mathavan_2014) {
+    return "physics.ball_ball_model: not a ball-ball model";
+  }
+  if (p.ball_ball_friction_fit) {
+    if (auto bad = check_friction_curve(p.ball_ball_friction_curve)) {
+      return "physics.ball_ball_friction." + std::string(1, bad->member) + ": " + bad->reason;
+    }
+  } else if (!std::isfinite(p.ball_ball_friction) || p.ball_ball_friction < 0.0) {
+    return "physics.ball_ball_friction: must be a finite number >= 0";
+  }
+  return std::nullopt;
+}
+
 Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_ruleset(config_.game)) {
   if (!std::isfinite(config_.ball_radius) || config_.ball_radius <= 0.0) {
     throw std::invalid_argument("ball_radius must be a positive number of metres");
@@ -140,10 +160,26 @@ Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_rule
   if (4.0 * config_.ball_radius >= table_.width) {
     throw std::invalid_argument("ball_radius is too large for a " + config_.table_size + " table");
   }
+  if (auto bad = check_game_physics(config_.physics)) throw std::invalid_argument(*bad);
+  const GamePhysics& gp = config_.physics;
+  base_.physics.ball_ball_model = gp.ball_ball_model;
+  base_.physics.ball_ball_friction_fit = gp.ball_ball_friction_fit;
+  base_.physics.ball_ball_friction_curve = gp.ball_ball_friction_curve;
+  base_.physics.ball_ball_friction = gp.ball_ball_friction;
+  // The cushion law as a scenario's table.cushion_model sets it:
+  // mathavan_2010 with Mathavan et al.'s own restitution and contact
+  // height (the restitution is each ball's wall_restitution).
+  double e = CushionParams{}.restitution;
+  table_.cushion.model = gp.cushion_model;
+  if (gp.cushion_model == CushionModel::mathavan_2010) {
+    e = kMathavanRestitution;
+    table_.cushion.restitution = kMathavanRestitution;
+    table_.cushion.nose_height = kMathavanNoseHeight;
+  }
+  base_.table = table_;
   base_.cue.reset();
   base_.balls.clear();
   base_.start.clear();
-  const double e = CushionParams{}.restitution;
   for (int n = 0; n < ball_count(); ++n) {
     base_.balls.push_back(
         {n == 0 ? "cue" : std::to_string(n), config_.ball_radius, config_.ball_mass, e});

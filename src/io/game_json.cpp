@@ -48,13 +48,33 @@ ojson strike_json(const CueStrike& s) {
 }
 
 ojson config_json(const GameConfig& c) {
-  const auto& [game, table_size, ball_radius, ball_mass, max_shots] = c;
+  const auto& [game, table_size, ball_radius, ball_mass, max_shots, physics] = c;
+  // The physics is not part of this object (physics_json): the config
+  // keeps the form version 1 records and the web facade give it.
+  (void)physics;
   ojson j = ojson::object();
   j["game"] = to_string(game);
   j["table_size"] = table_size;
   j["ball_radius"] = ball_radius;
   j["ball_mass"] = ball_mass;
   j["max_shots"] = max_shots;
+  return j;
+}
+
+ojson friction_curve_json(const FrictionCurve& k) {
+  ojson j = ojson::object();
+  j["a"] = k.a;
+  j["b"] = k.b;
+  j["c"] = k.c;
+  return j;
+}
+
+ojson physics_json(const GamePhysics& p) {
+  ojson j = ojson::object();
+  j["cushion_model"] = cushion_model_name(p.cushion_model);
+  j["ball_ball_model"] = to_string(p.ball_ball_model);
+  j["ball_ball_friction"] = p.ball_ball_friction_fit ? friction_curve_json(p.ball_ball_friction_curve)
+                                                     : ojson(p.ball_ball_friction);
   return j;
 }
 
@@ -160,6 +180,48 @@ bool GameReader::config(const json& v, const std::string& path, GameConfig& c) {
          number(v["ball_mass"], at("ball_mass"), c.ball_mass) &&
          positive(c.ball_mass, at("ball_mass")) &&
          integer(v["max_shots"], at("max_shots"), 0, INT_MAX, c.max_shots);
+}
+
+bool GameReader::physics(const json& v, const std::string& path, GamePhysics& p) {
+  if (!exact_object(v, path, {"cushion_model", "ball_ball_model", "ball_ball_friction"})) {
+    return false;
+  }
+  const auto at = [&](std::string_view key) { return member_path(path, key); };
+  std::string name;
+  if (!text_of(v["cushion_model"], at("cushion_model"), "cushion model",
+               {"han_2005_v0", "han_2005", "mathavan_2010"}, name)) {
+    return false;
+  }
+  parse_cushion_model(name, p.cushion_model);
+  if (!text_of(v["ball_ball_model"], at("ball_ball_model"), "ball-ball model",
+               {"friction", "mathavan_2014"}, name)) {
+    return false;
+  }
+  parse_ball_ball_model(name, p.ball_ball_model);
+  const json& f = v["ball_ball_friction"];
+  const std::string fpath = at("ball_ball_friction");
+  if (f.is_object()) {
+    if (!exact_object(f, fpath, {"a", "b", "c"})) return false;
+    FrictionCurve& k = p.ball_ball_friction_curve;
+    if (!number(f["a"], member_path(fpath, "a"), k.a) ||
+        !number(f["b"], member_path(fpath, "b"), k.b) ||
+        !number(f["c"], member_path(fpath, "c"), k.c)) {
+      return false;
+    }
+    if (auto bad = check_friction_curve(k)) {
+      return fail(member_path(fpath, std::string(1, bad->member)), std::move(bad->reason));
+    }
+    p.ball_ball_friction_fit = true;
+    p.ball_ball_friction = 0.0;
+    return true;
+  }
+  if (!f.is_number()) return fail(fpath, expected("a number or an object {\"a\", \"b\", \"c\"}", f));
+  if (!number(f, fpath, p.ball_ball_friction) || !non_negative(p.ball_ball_friction, fpath)) {
+    return false;
+  }
+  p.ball_ball_friction_fit = false;
+  p.ball_ball_friction_curve = FrictionCurve{};
+  return true;
 }
 
 bool GameReader::noise(const json& v, const std::string& path, NoiseModel& n) {

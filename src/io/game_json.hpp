@@ -3,6 +3,9 @@
 // Internal: not installed.
 //
 //   GameConfig  {"game", "table_size", "ball_radius", "ball_mass", "max_shots"}
+//               (its physics is an object of its own, GamePhysics)
+//   GamePhysics {"cushion_model", "ball_ball_model",
+//                "ball_ball_friction": {"a", "b", "c"} | number}
 //   NoiseModel  {"phi", "theta", "speed", "a", "b"} (noise.hpp's units)
 //   CueStrike   {"speed", "phi", "theta", "a", "b"}
 //   GameState   {"game", "phase", "player", "breaker", "ball_in_hand", "kitchen_shot",
@@ -47,6 +50,7 @@ using ojson = nlohmann::ordered_json;
 ojson seed_json(std::uint64_t s);
 ojson vec2_json(Vec2 v);
 ojson config_json(const GameConfig& c);
+ojson physics_json(const GamePhysics& p);
 ojson noise_json(const NoiseModel& n);
 ojson strike_json(const CueStrike& s);
 ojson state_json(const GameState& s);
@@ -59,6 +63,9 @@ ojson action_json(const Action& a);
 class GameReader : public Reader {
  public:
   bool config(const json& v, const std::string& path, GameConfig& c);
+  /// Names and values this build has; a curve is checked by
+  /// check_friction_curve.
+  bool physics(const json& v, const std::string& path, GamePhysics& p);
   bool noise(const json& v, const std::string& path, NoiseModel& n);
   bool strike(const json& v, const std::string& path, CueStrike& s);
   bool state(const json& v, const std::string& path, GameState& s);

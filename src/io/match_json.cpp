@@ -71,6 +71,9 @@ std::string match_summary_json(const MatchSummary& s) {
   ojson j = ojson::object();
   j["game"] = to_string(s.game);
   j["table_size"] = s.table_size;
+  // The physics only when it is not the engine's default, so that a
+  // default match's summary reads as it always has.
+  if (!(s.physics == GamePhysics{})) j["physics"] = json_io::physics_json(s.physics);
   j["seed"] = json_io::seed_json(s.seed);  // a string, as in records: 64 bits survive any reader
   j["noise"] = to_string(s.noise);
   // The games covered, unless they are 0 .. games_played - 1 (a match from
@@ -132,12 +135,12 @@ using json_io::index_path;
 
 constexpr int kIntMax = std::numeric_limits<int>::max();
 
-class SummaryReader : public json_io::Reader {
+class SummaryReader : public json_io::GameReader {
  public:
   bool read(const json& doc, MatchSummary& s) {
     const std::string top;
     if (!require_object(doc, top)) return false;
-    if (!known_fields(doc, top, {"game", "table_size", "seed", "noise", "first_game",
+    if (!known_fields(doc, top, {"game", "table_size", "physics", "seed", "noise", "first_game",
                                  "game_ranges", "games_played", "draws", "players"})) {
       return false;
     }
@@ -156,6 +159,12 @@ class SummaryReader : public json_io::Reader {
     if (!required(doc, top, "table_size", v) ||
         !text_of(*v, "table_size", "table size", {"7ft", "8ft", "9ft"}, s.table_size)) {
       return false;
+    }
+    if (const json* ph = find(doc, "physics")) {
+      if (!physics(*ph, "physics", s.physics)) return false;
+      if (s.physics == GamePhysics{}) {
+        return fail("physics", "the default physics is not written (leave the field out)");
+      }
     }
     if (!required(doc, top, "seed", v) || !seed(*v, "seed", s.seed)) return false;
     std::string spec;

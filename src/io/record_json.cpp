@@ -1,12 +1,15 @@
 // Game records (include/breakshot/record.hpp): writing, reading and
 // replaying them.
 //
-// The file, version 1:
+// The file, version 2:
 //
 //   {
 //     "format": "breakshot-game-record",
-//     "version": 1,
+//     "version": 2,
+//     "engine": {"version": "0.1.0"},
 //     "config": {"game", "table_size", "ball_radius", "ball_mass", "max_shots"},
+//     "physics": {"cushion_model", "ball_ball_model",
+//                 "ball_ball_friction": {"a", "b", "c"} | number},
 //     "players": [NAME, NAME],
 //     "seed": "DECIMAL",
 //     "noise": [NOISE, NOISE],
@@ -16,6 +19,15 @@
 //       ...one action per line
 //     ]
 //   }
+//
+//   "engine" is the library version that played the game (version.hpp)
+//   and "physics" the game's physics choices (GameConfig::physics, by the
+//   scenario names of table.cushion_model, physics.ball_ball_model and
+//   physics.ball_ball_friction). Version 1 records have neither: they were
+//   all written by breakshot 0.1.0 and are read as played with
+//   kLegacyGamePhysics, on which they replay. A physics name or field this
+//   build does not know is refused with the record's version and engine in
+//   the message; so is a record version above this build's.
 //
 //   NOISE   {"phi", "theta", "speed", "a", "b"}: the noise model of a seat's
 //           shots (seat order, as "players"), in noise.hpp's units
@@ -71,6 +83,7 @@
 
 #include "breakshot/record_io.hpp"
 #include "breakshot/session.hpp"
+#include "breakshot/version.hpp"
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
 
@@ -85,6 +98,7 @@ using json_io::json;
 using json_io::kDocumentPath;
 using json_io::member_path;
 using json_io::noise_json;
+using json_io::physics_json;
 using json_io::ojson;
 using json_io::ruling_json;
 using json_io::seed_json;
@@ -136,6 +150,40 @@ std::string dump_compact(const ojson& j) {
 // ---------------------------------------------------------------------------
 // Reading
 
+/// The library version that wrote every version 1 record.
+constexpr std::string_view kVersion1Engine = "0.1.0";
+
+/// The numbers of a version "MAJOR.MINOR.PATCH..." (digits and dots
+/// only); empty if it is not of that form.
+std::vector<long long> version_numbers(std::string_view v) {
+  std::vector<long long> out;
+  long long n = 0;
+  bool digits = false;
+  for (const char ch : v) {
+    if (ch >= '0' && ch <= '9') {
+      if (n > (LLONG_MAX - 9) / 10) return {};
+      n = n * 10 + (ch - '0');
+      digits = true;
+    } else if (ch == '.' && digits) {
+      out.push_back(n);
+      n = 0;
+      digits = false;
+    } else {
+      return {};
+    }
+  }
+  if (!digits) return {};
+  out.push_back(n);
+  return out;
+}
+
+/// Whether `engine` is a version after this build's kVersion.
+bool newer_engine(std::string_view engine) {
+  const std::vector<long long> a = version_numbers(engine);
+  const std::vector<long long> b = version_numbers(kVersion);
+  return !a.empty() && !b.empty() && a > b;
+}
+
 /// Builds a GameRecord from a parsed document. Every function returns
 /// false after recording the first problem in `error`.
 class RecordReader : public json_io::GameReader {
@@ -147,24 +195,66 @@ class RecordReader : public json_io::GameReader {
 };
 
 bool RecordReader::read(const json& doc, GameRecord& r) {
-  if (!exact_object(doc, "",
-                    {"format", "version", "config", "players", "seed", "noise", "start",
-                     "actions"})) {
-    return false;
-  }
-  const json& format = doc["format"];
-  if (!format.is_string() || format.get<std::string>() != GameRecord::kFormat) {
+  if (!require_object(doc, "")) return false;
+  const json* format = nullptr;
+  const json* version_field = nullptr;
+  if (!required(doc, "", "format", format)) return false;
+  if (!format->is_string() || format->get<std::string>() != GameRecord::kFormat) {
     return fail("format", "expected \"" + std::string(GameRecord::kFormat) + "\", not " +
-                              format.dump());
+                              format->dump());
   }
+  if (!required(doc, "", "version", version_field)) return false;
   int version = 0;
-  if (!integer(doc["version"], "version", INT_MIN, INT_MAX, version)) return false;
-  if (version != GameRecord::kVersion) {
-    return fail("version", "this breakshot reads version " +
-                               std::to_string(GameRecord::kVersion) + " records, not version " +
-                               std::to_string(version));
+  if (!integer(*version_field, "version", INT_MIN, INT_MAX, version)) return false;
+  if (version < 1 || version > GameRecord::kVersion) {
+    std::string maker;
+    if (const json* e = find(doc, "engine"); e != nullptr && e->is_object()) {
+      if (const json* v = find(*e, "version"); v != nullptr && v->is_string()) {
+        const std::string engine = v->get<std::string>();
+        maker = " (made by breakshot " + engine + (newer_engine(engine) ? ", a newer version" : "") +
+                ")";
+      }
+    }
+    return fail("version", "this breakshot (" + std::string(kVersion) +
+                               ") reads records of versions 1 to " +
+                               std::to_string(GameRecord::kVersion) + ", not version " +
+                               std::to_string(version) + maker);
   }
-  if (!config(doc["config"], "config", r.config)) return false;
+  if (version == 1) {
+    // Before the engine and the physics were recorded: every version 1
+    // record was written by breakshot 0.1.0 and played with the physics
+    // of that time, by its names kLegacyGamePhysics.
+    if (!exact_object(doc, "",
+                      {"format", "version", "config", "players", "seed", "noise", "start",
+                       "actions"})) {
+      return false;
+    }
+    r.engine = std::string(kVersion1Engine);
+    if (!config(doc["config"], "config", r.config)) return false;
+    r.config.physics = kLegacyGamePhysics;
+  } else {
+    if (!exact_object(doc, "",
+                      {"format", "version", "engine", "config", "physics", "players", "seed",
+                       "noise", "start", "actions"})) {
+      return false;
+    }
+    const json& engine = doc["engine"];
+    if (!exact_object(engine, "engine", {"version"}) ||
+        !text(engine["version"], "engine.version", r.engine)) {
+      return false;
+    }
+    if (r.engine.empty()) return fail("engine.version", "expected a library version, not \"\"");
+    if (!config(doc["config"], "config", r.config)) return false;
+    if (!physics(doc["physics"], "physics", r.config.physics)) {
+      // A name or a field this build does not have: say who made the
+      // record, so that the reader knows which breakshot replays it.
+      error->reason += "; this breakshot (" + std::string(kVersion) +
+                       ") cannot replay this version " + std::to_string(version) +
+                       " record made by breakshot " + r.engine +
+                       (newer_engine(r.engine) ? ", a newer version" : "");
+      return false;
+    }
+  }
   const json& players = doc["players"];
   if (!array(players, "players", 2)) return false;
   for (std::size_t i = 0; i < 2; ++i) {
@@ -296,7 +386,9 @@ std::string write_record(const GameRecord& record) {
   const Part head[] = {
       {"format", GameRecord::kFormat},
       {"version", GameRecord::kVersion},
+      {"engine", ojson::object({{"version", record.engine}})},
       {"config", config_json(record.config)},
+      {"physics", physics_json(record.config.physics)},
       {"players", ojson::array({record.players[0], record.players[1]})},
       {"seed", seed_json(record.seed)},
       {"noise", ojson::array({noise_json(record.noise[0]), noise_json(record.noise[1])})},

@@ -22,6 +22,16 @@ std::string_view to_string(BallBallModel m) {
   return "?";
 }
 
+bool parse_ball_ball_model(std::string_view name, BallBallModel& out) {
+  for (BallBallModel m : {BallBallModel::friction, BallBallModel::mathavan_2014}) {
+    if (name == to_string(m)) {
+      out = m;
+      return true;
+    }
+  }
+  return false;
+}
+
 std::string_view to_string(MotionState s) {
   switch (s) {
     case MotionState::stationary: return "stationary";

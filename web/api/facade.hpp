@@ -6,7 +6,7 @@
 //   playback.cpp  playbacks (BsPlayback): frames and events
 //   game.cpp      games (BsGame): configs, actions, the AI's, state,
 //                 table, undo
-//   link.cpp      links: a game as "v1." text and back
+//   link.cpp      links: a game as "v2." text and back ("v1." read too)
 //   web_api.cpp   the C API's entry points, each a call into the parts,
 //                 and bs_version with the engine's defaults
 //
@@ -271,7 +271,7 @@ std::string undo_to_json(BsGame& g, int n);
 
 namespace facade {
 
-/// bs_game_link's reply: {"link": "v1...."}.
+/// bs_game_link's reply: {"link": "v2...."}.
 std::string link_json(const BsGame& g);
 /// bs_game_from_link's game: the link's actions replayed through the
 /// rules; a bad input naming the first action refused.

@@ -1,8 +1,14 @@
-// Links. A link is "v1." followed by the base64url (RFC 4648 section 5,
+// Links. A link is "v2." followed by the base64url (RFC 4648 section 5,
 // no padding) of a compact JSON object:
-//   {"g": game, "t": table, "s": "seed (decimal)", "b": breaker,
-//    "p": [seat0, seat1], "n": ai_budget (only when set),
-//    "a": [action, ...]}
+//   {"e": "engine version", "g": game, "t": table,
+//    "ph": {"cushion_model", "ball_ball_model", "ball_ball_friction"},
+//    "s": "seed (decimal)", "b": breaker, "p": [seat0, seat1],
+//    "n": ai_budget (only when set), "a": [action, ...]}
+// "e" is the library version that wrote the link (version.hpp) and "ph"
+// the game's physics, as in a game record (record_json.cpp). A "v1." link
+// (before issue 22) has neither and is read as played with the legacy
+// physics (kLegacyGamePhysics), on which it replays; a physics name or
+// field this build does not know is refused naming the link's engine.
 // with each action as chosen (before noise):
 //   ["p", X, Y]                                      place the cue ball
 //   ["s", SPEED, PHI, THETA, A, B, ball, pocket, f]  shoot; ball and
@@ -31,12 +37,15 @@
 
 #include "breakshot/game.hpp"
 #include "breakshot/record.hpp"
+#include "breakshot/version.hpp"
 
 namespace facade {
 
 namespace {
 
-constexpr std::string_view kLinkPrefix = "v1.";
+constexpr std::string_view kLinkPrefix = "v2.";
+/// Links written before the engine and the physics were in them.
+constexpr std::string_view kLinkPrefixV1 = "v1.";
 
 // ---------------------------------------------------------------------------
 // Links: base64url and doubles as bits
@@ -133,8 +142,10 @@ double hex_double(const json& v, const std::string& path) {
 
 std::string link_text(const BsGame& g) {
   ojson j = ojson::object();
+  j["e"] = std::string(bs::kVersion);
   j["g"] = bs::to_string(g.record().config.game);
   j["t"] = g.record().config.table_size;
+  j["ph"] = bs::json_io::physics_json(g.record().config.physics);
   j["s"] = bs::json_io::seed_json(g.record().seed);
   j["b"] = g.record().start.breaker;
   j["p"] = ojson::array({g.seats[0], g.seats[1]});
@@ -207,14 +218,31 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
     text_view.remove_prefix(at + 5);
     text_view = text_view.substr(0, text_view.find('&'));
   }
-  if (text_view.substr(0, kLinkPrefix.size()) != kLinkPrefix) {
-    bad("link", "expected a link starting with \"v1.\"");
+  const bool v1 = text_view.substr(0, kLinkPrefixV1.size()) == kLinkPrefixV1;
+  if (!v1 && text_view.substr(0, kLinkPrefix.size()) != kLinkPrefix) {
+    std::string_view head = text_view.substr(0, text_view.find('.'));
+    if (head.size() > 8) head = head.substr(0, 8);
+    bad("link", "expected a link starting with \"v2.\" or \"v1.\" (this breakshot, " +
+                    std::string(bs::kVersion) + ", reads those), not \"" + std::string(head) +
+                    "\"");
   }
-  const std::optional<std::string> decoded = unbase64url(text_view.substr(kLinkPrefix.size()));
-  if (!decoded) bad("link", "not base64url text after \"v1.\"");
+  const std::string_view prefix = v1 ? kLinkPrefixV1 : kLinkPrefix;
+  const std::optional<std::string> decoded = unbase64url(text_view.substr(prefix.size()));
+  if (!decoded) bad("link", "not base64url text after \"" + std::string(prefix) + "\"");
   const json doc = parse_text(decoded->c_str(), "link", "link");
-  object(doc, "link", {"g", "t", "s", "b", "p", "n", "a"});
   GameConfigInput in;
+  if (v1) {
+    object(doc, "link", {"g", "t", "s", "b", "p", "n", "a"});
+    in.config.physics = bs::kLegacyGamePhysics;
+  } else {
+    object(doc, "link", {"e", "g", "t", "ph", "s", "b", "p", "n", "a"});
+    const std::string engine = text(required(doc, "link", "e"), "link.e");
+    Reader r;
+    if (!r.physics(required(doc, "link", "ph"), "link.ph", in.config.physics)) {
+      bad(r.error->path, r.error->reason + "; this breakshot (" + std::string(bs::kVersion) +
+                             ") cannot replay this v2 link made by breakshot " + engine);
+    }
+  }
   in.config.game = game_type(required(doc, "link", "g"), "link.g");
   in.config.table_size = table_size(required(doc, "link", "t"), "link.t");
   {

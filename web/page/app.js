@@ -19,7 +19,7 @@ function setError(text) {
   el.hidden = false;
 }
 
-/** The fragment as key/value pairs: "#game=v1.abc&shot=3". */
+/** The fragment as key/value pairs: "#game=v2.abc&shot=3". */
 function parseFragment() {
   const h = location.hash.replace(/^#/, '');
   const out = {};

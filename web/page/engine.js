@@ -241,7 +241,7 @@ class Game {
   aiAction(level) { return parse(this._raw.aiAction(this._handle(), level === undefined || level === null || level === '' ? null : String(level))); }
   /** The playback of the shot of action `index`, from the state before it. */
   shotPlayback(index) { return newPlayback(this._raw, this._raw.shotPlayback(this._handle(), intArg(index, 'index'))); }
-  /** The link text ("v1.…"). */
+  /** The link text ("v2.…"; "v1.…" links still open). */
   link() { return parse(this._raw.link(this._handle())).link; }
   /** The game record (the object of write_record's JSON). */
   record() { return parse(this._raw.record(this._handle())); }

@@ -1,0 +1,81 @@
+"""Games and matches with the physics to choose (issue 22): the keywords
+give the command's bytes (``breakshot match --cushion-model ...``), the
+records carry the physics and replay with the command, and bad values are
+ValueErrors naming the field."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+import breakshot as bs
+
+MATHAVAN = {"cushion_model": "mathavan_2010",
+            "ball_ball_friction": {"a": 0.016, "b": 0.219, "c": 0.691}}
+
+
+def test_default_physics_is_the_legacy_one_and_not_in_the_summary(run_cli):
+    g = bs.Game("nine_ball", seed=3)
+    assert g.physics == bs.physics_of()
+    assert g.physics == {"cushion_model": "han_2005_v0", "ball_ball_model": "friction",
+                         "ball_ball_friction": {"a": 0.009951, "b": 0.108, "c": 1.088}}
+    text = bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament")
+    assert "physics" not in text
+    # The legacy physics by its names: the same bytes.
+    assert bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament",
+                         physics=bs.physics_of()) == text
+
+
+def test_match_with_other_physics_equals_the_cli_and_replays(tmp_path, run_cli):
+    text = bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament",
+                         physics=MATHAVAN, records=tmp_path / "py")
+    cli = run_cli("match", "--game", "nine_ball", "--players", "baseline,baseline",
+                  "--games", "1", "--seed", "3", "--noise", "tournament",
+                  "--cushion-model", "mathavan_2010", "--ball-ball-friction", "tpb3",
+                  "--records", tmp_path / "cli", check=True)
+    assert text == cli.stdout
+    summary = json.loads(text)
+    assert summary["physics"] == bs.physics_of("mathavan_2010", ball_ball_friction="tpb3")
+    record = (tmp_path / "py" / "game-0001.json").read_text()
+    assert record == (tmp_path / "cli" / "game-0001.json").read_text()
+    head = json.loads(record)
+    assert head["version"] == 2
+    assert head["engine"] == {"version": bs.__version__}
+    assert head["physics"]["cushion_model"] == "mathavan_2010"
+    r = run_cli("replay", tmp_path / "py" / "game-0001.json")
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+def test_game_with_other_physics_records_it():
+    g = bs.Game("eight_ball", seed=5, physics={"cushion_model": "han_2005",
+                                               "ball_ball_model": "mathavan_2014",
+                                               "ball_ball_friction": 0.06})
+    assert g.physics == {"cushion_model": "han_2005", "ball_ball_model": "mathavan_2014",
+                         "ball_ball_friction": 0.06}
+    # Fields left out keep their defaults.
+    h = bs.Game("eight_ball", seed=5, physics={"cushion_model": "mathavan_2010"})
+    assert h.physics["ball_ball_model"] == "friction"
+    assert h.physics["ball_ball_friction"] == {"a": 0.009951, "b": 0.108, "c": 1.088}
+
+
+@pytest.mark.parametrize("physics, message", [
+    ({"cushion_model": "han_2006"}, "physics.cushion_model: unknown cushion model"),
+    ({"ball_ball_model": "hertz"}, "physics.ball_ball_model: unknown ball-ball model"),
+    ({"ball_ball_friction": {"a": 0.5, "b": 0.9, "c": 1}}, "physics.ball_ball_friction.b"),
+    ({"ball_ball_friction": -1}, "physics.ball_ball_friction"),
+    ({"jump": True}, "physics.jump: unknown field"),
+    ("mathavan_2010", "physics: expected a dict"),
+])
+def test_bad_physics_is_a_value_error_naming_the_field(physics, message):
+    with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(".", r"\.")):
+        bs.Game("nine_ball", physics=physics)
+    with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(".", r"\.")):
+        bs.match("nine_ball", ["baseline", "baseline"], physics=physics)
+
+
+def test_physics_of_names_the_curves():
+    assert bs.physics_of(ball_ball_friction="tpb3")["ball_ball_friction"] == \
+        {"a": 0.016, "b": 0.219, "c": 0.691}
+    with pytest.raises(ValueError, match="ball_ball_friction"):
+        bs.physics_of(ball_ball_friction="tpb4")
