@@ -36,7 +36,7 @@ import numpy as np
 
 from . import _core
 from .errors import ScenarioError
-from .game import _pair, mix_seed
+from .game import _pair, _physics, mix_seed
 from .result import Result
 
 __all__ = [
@@ -173,12 +173,14 @@ def _check_int(value, name: str, low: int, high: Optional[int] = None) -> int:
     return value
 
 
-def _match_chunk(expected, game, players, seed, noise, table, first, count, records):
-    """The task of a match: games first .. first + count - 1."""
+def _match_chunk(expected, game, players, seed, noise, table, first, count, records,
+                 physics=None):
+    """The task of a match: games first .. first + count - 1. ``physics`` is
+    the physics JSON text of the match (None: the default)."""
     _verify(expected)
     try:
         summary, recs = _core.match_chunk(game, list(players), seed, noise, table, first, count,
-                                          1, records)
+                                          1, records, physics)
     except RuntimeError as e:
         raise MatchError(str(e)) from None
     return first, count, summary, recs
@@ -241,20 +243,21 @@ def _workers(client) -> int:
 
 
 def _submit_match(client, expected, game, names, seed, noise, table, games, first_game, size,
-                  records: bool, tag: str):
+                  records: bool, tag: str, physics=None):
     futures = []
     for first in range(first_game, first_game + games, size):
         count = min(size, first_game + games - first)
         futures.append(client.submit(
             _match_chunk, expected, game, names, seed, noise, table, first, count, records,
-            key=f"breakshot-match-{tag}-{first}-{count}", pure=False, retries=0))
+            physics, key=f"breakshot-match-{tag}-{first}-{count}", pure=False, retries=0))
     return futures
 
 
 def match_json(client, game: str, players: Sequence[str], games: int, seed: int = 0,
                noise: str = "none", table: str = "9ft",
                records: Union[None, str, os.PathLike] = None, chunk: Optional[int] = None,
-               first_game: int = 0, progress: Optional[bool] = None) -> str:
+               first_game: int = 0, progress: Optional[bool] = None,
+               physics: Optional[dict] = None) -> str:
     """The summary text ``breakshot match`` prints for the same arguments,
     byte for byte, with the games played on the cluster.
 
@@ -266,10 +269,12 @@ def match_json(client, game: str, players: Sequence[str], games: int, seed: int 
     first_game + games - 1 (``breakshot match --first-game``). ``progress``
     shows a bar on standard error (default: when it is a terminal). A game
     that fails raises MatchError naming the game, its seed and the command
-    that reproduces it alone.
+    that reproduces it alone. ``physics`` chooses the games' physics as
+    for breakshot.match (a dict, breakshot.physics_of).
     """
     from dask.distributed import as_completed
 
+    physics_text = _physics(physics)
     names = _pair(players, "players")
     games = _check_int(games, "games", 1)
     seed = _check_int(seed, "seed", 0, 2**64 - 1)
@@ -286,7 +291,7 @@ def match_json(client, game: str, players: Sequence[str], games: int, seed: int 
         folder.mkdir(parents=True, exist_ok=True)
     tag = f"{os.getpid()}-{id(names)}-{seed}"
     futures = _submit_match(client, expected, game, names, seed, noise, table, games,
-                            first_game, size, folder is not None, tag)
+                            first_game, size, folder is not None, tag, physics_text)
     bar = _Progress(games, "games", progress)
     summaries: Dict[int, str] = {}
     try:
@@ -311,12 +316,13 @@ def match_json(client, game: str, players: Sequence[str], games: int, seed: int 
 def match(client, game: str, players: Sequence[str], games: int, seed: int = 0,
           noise: str = "none", table: str = "9ft",
           records: Union[None, str, os.PathLike] = None, chunk: Optional[int] = None,
-          first_game: int = 0, progress: Optional[bool] = None) -> dict:
+          first_game: int = 0, progress: Optional[bool] = None,
+          physics: Optional[dict] = None) -> dict:
     """A match on the cluster: the summary of ``breakshot match`` with the
     same arguments, parsed (field for field what ``breakshot.match`` gives
     on one machine). See match_json for the arguments."""
     return json.loads(match_json(client, game, players, games, seed, noise, table, records,
-                                 chunk, first_game, progress))
+                                 chunk, first_game, progress, physics))
 
 
 # --- ladders ----------------------------------------------------------------
@@ -549,6 +555,32 @@ def _pot_map_json(pm) -> dict:
     }
 
 
+def _physics_args(args) -> Optional[dict]:
+    """The physics options of `match` as breakshot.physics_of's dict (None
+    when none is given)."""
+    if not (args.cushion_model or args.ball_ball_model or args.ball_ball_friction):
+        return None
+    from .game import physics_of
+
+    friction: Any = args.ball_ball_friction or "tpa28"
+    if friction not in ("tpa28", "tpb3"):
+        parts = friction.split(",")
+        try:
+            values = [float(v) for v in parts]
+        except ValueError:
+            raise ValueError(f"--ball-ball-friction: expected tpa28, tpb3, A,B,C or MU, "
+                             f"not {friction!r}") from None
+        if len(values) == 3:
+            friction = dict(zip("abc", values))
+        elif len(values) == 1:
+            friction = values[0]
+        else:
+            raise ValueError(f"--ball-ball-friction: expected tpa28, tpb3, A,B,C or MU, "
+                             f"not {friction!r}")
+    return physics_of(args.cushion_model or "han_2005_v0", args.ball_ball_model or "friction",
+                      friction)
+
+
 def _client_for(args):
     if args.scheduler:
         from dask.distributed import Client
@@ -589,6 +621,10 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     m.add_argument("--records", help="write each game's record to DIR/game-NNNN.json")
     m.add_argument("--first-game", type=int, default=0)
     m.add_argument("--chunk", type=int, default=None, help="games per task")
+    m.add_argument("--cushion-model", help="as breakshot match --cushion-model")
+    m.add_argument("--ball-ball-model", help="as breakshot match --ball-ball-model")
+    m.add_argument("--ball-ball-friction",
+                   help="as breakshot match --ball-ball-friction: tpa28, tpb3, A,B,C or MU")
     common(m)
 
     lad = sub.add_parser("ladder", help="every adjacent pair of levels")
@@ -625,7 +661,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                 players = args.players.split(",")
                 text = match_json(client, args.game, players, args.games, args.seed, args.noise,
                                   args.table, args.records, args.chunk, args.first_game,
-                                  args.progress)
+                                  args.progress, _physics_args(args))
                 sys.stdout.write(text)
             elif args.command == "ladder":
                 table = ladder(client, args.game, args.levels.split(","), args.games, args.seed,

@@ -59,6 +59,16 @@ def test_first_game_equals_the_command(client, run_cli):
     assert got == expected
 
 
+def test_physics_choice_equals_the_command(client, run_cli):
+    expected = cli_match(run_cli, *MATCH_ARGS[:4], "--games", "3", *MATCH_ARGS[6:],
+                         "--cushion-model", "mathavan_2010", "--ball-ball-friction", "tpb3")
+    assert '"physics"' in expected
+    physics = breakshot.physics_of("mathavan_2010", ball_ball_friction="tpb3")
+    got = bd.match_json(client, **dict(MATCH, games=3), physics=physics, chunk=1,
+                        progress=False)
+    assert got == expected
+
+
 def test_records_are_the_commands_files(client, run_cli, tmp_path):
     cli_match(run_cli, *MATCH_ARGS[:4], "--games", "5", *MATCH_ARGS[6:],
               "--records", tmp_path / "cli")
