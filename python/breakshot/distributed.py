@@ -413,7 +413,7 @@ def shot_map(client, state, ball, pocket, level: str = "champion", *, xs=None, y
     (``cells_per_task``, default: about eight tasks a worker)."""
     from dask.distributed import as_completed
 
-    from .pot_maps import PotMap, _args, _count
+    from .pot_maps import PotMap, _args, _grid
     from ._position import game_position
 
     pos, table, ball_n, pocket_i, level, samples, candidates, seed, _ = _args(
@@ -421,14 +421,7 @@ def shot_map(client, state, ball, pocket, level: str = "champion", *, xs=None, y
     if level not in _core.level_names():
         raise ValueError(f"level: unknown level {level!r} (known: "
                          f"{', '.join(_core.level_names())})")
-    if xs is None:
-        nx = _count(nx, "nx")
-        xs = (np.arange(nx) + 0.5) * table["length"] / max(nx, 1)
-    if ys is None:
-        ny = _count(ny, "ny")
-        ys = (np.arange(ny) + 0.5) * table["width"] / max(ny, 1)
-    xs = np.asarray(xs, dtype=float).ravel()
-    ys = np.asarray(ys, dtype=float).ravel()
+    xs, ys = _grid(table, xs, ys, nx, ny)
     if xs.size == 0 or ys.size == 0:
         raise ValueError("the grid is empty (xs and ys need at least one point each)")
     if not (np.isfinite(xs).all() and np.isfinite(ys).all()):

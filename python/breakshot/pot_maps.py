@@ -52,6 +52,18 @@ def _seed(seed) -> int:
     return int(seed)
 
 
+def _grid(table: dict, xs, ys, nx, ny):
+    """The grid's xs and ys: as given, or the centres of nx by ny equal
+    cells covering the playing surface."""
+    if xs is None:
+        nx = _count(nx, "nx")
+        xs = (np.arange(nx) + 0.5) * table["length"] / max(nx, 1)
+    if ys is None:
+        ny = _count(ny, "ny")
+        ys = (np.arange(ny) + 0.5) * table["width"] / max(ny, 1)
+    return np.asarray(xs, dtype=float).ravel(), np.asarray(ys, dtype=float).ravel()
+
+
 def _args(position, ball, pocket, level, samples, candidates, seed, threads):
     pos = game_position(position)
     table = _core.pool_table(pos["table_size"])
@@ -100,14 +112,7 @@ def pot_map(position, ball, pocket, level="champion", *, xs=None, ys=None, nx=40
     """
     pos, table, ball, pocket_i, level, samples, candidates, seed, threads = _args(
         position, ball, pocket, level, samples, candidates, seed, threads)
-    if xs is None:
-        nx = _count(nx, "nx")
-        xs = (np.arange(nx) + 0.5) * table["length"] / max(nx, 1)
-    if ys is None:
-        ny = _count(ny, "ny")
-        ys = (np.arange(ny) + 0.5) * table["width"] / max(ny, 1)
-    xs = np.asarray(xs, dtype=float).ravel()
-    ys = np.asarray(ys, dtype=float).ravel()
+    xs, ys = _grid(table, xs, ys, nx, ny)
     data = _core.pot_map(pos["game"], pos["table_size"], pos["positions"], pos["on_table"],
                          pos["player"], pos["groups"], ball, pocket_i, level, xs.tolist(),
                          ys.tolist(), samples, candidates, seed, threads)
