@@ -10,7 +10,9 @@
 namespace breakshot {
 
 /// How a ball is moving. `moving` and `stationary` are the states of the
-/// ideal and friction models; the pool model uses the others.
+/// ideal and friction models; the pool model uses the others. `airborne`
+/// (off the cloth, in flight) and `off_table` (it left the table over a
+/// rail; out of play, like `pocketed`) need physics.airborne.
 enum class MotionState : std::uint8_t {
   stationary,
   moving,
@@ -18,6 +20,8 @@ enum class MotionState : std::uint8_t {
   rolling,
   spinning,
   pocketed,
+  airborne,
+  off_table,
 };
 
 std::string_view to_string(MotionState s);
@@ -40,6 +44,11 @@ struct BallState {
   Vec2 velocity;
   Vec3 spin;  ///< rad/s (pool model; zero otherwise)
   MotionState state = MotionState::stationary;
+  /// Height of the centre above its resting height (m) and vertical
+  /// velocity (m/s, up positive): nonzero only for an airborne ball, and
+  /// for a ball whose scenario velocity has a vertical component.
+  double z = 0.0;
+  double vz = 0.0;
 };
 
 }  // namespace breakshot

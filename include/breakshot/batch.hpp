@@ -16,6 +16,9 @@
 
 namespace breakshot {
 
+/// In ShotBatch::pockets: the ball left the table (physics.airborne).
+inline constexpr std::int32_t kLeftTable = -2;
+
 /// How a batch is run.
 struct ShotBatchOptions {
   /// Threads to use; 0 uses every core. The results do not depend on it.
@@ -33,7 +36,7 @@ struct ShotBatch {
   std::size_t shots = 0;
   std::size_t balls = 0;
   std::vector<Vec2> final_positions;      ///< shots x balls, at the run's end
-  std::vector<std::int32_t> pockets;      ///< shots x balls: pocket index, -1 if not pocketed
+  std::vector<std::int32_t> pockets;      ///< shots x balls: pocket index, -1 if not pocketed, kLeftTable if it left the table
   std::vector<std::int32_t> cushions;     ///< shots x balls: ball_cushion events of the ball
   std::vector<std::int32_t> cue_index;    ///< shots: index of the ball "cue"
   /// shots: the first ball the cue ball touches (a ball_ball event), -1

@@ -14,6 +14,8 @@ enum class EventType : std::uint8_t {
   ball_cushion,
   ball_pocket,
   state_change,
+  ball_slate,      ///< an airborne ball lands on the slate (`from`, `to`)
+  ball_off_table,  ///< a ball leaves the table (over wall `wall`, or -1)
 };
 
 std::string_view to_string(EventType t);
@@ -27,8 +29,8 @@ struct Event {
   std::int32_t other = -1;  ///< second ball of a ball_ball event
   std::int32_t wall = -1;   ///< wall of a ball_cushion event
   std::int32_t pocket = -1; ///< pocket of a ball_pocket event
-  MotionState from = MotionState::stationary;  ///< state_change only
-  MotionState to = MotionState::stationary;    ///< state_change only
+  MotionState from = MotionState::stationary;  ///< state_change, ball_slate
+  MotionState to = MotionState::stationary;    ///< state_change, ball_slate
 
   bool operator==(const Event&) const = default;
 };

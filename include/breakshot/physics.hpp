@@ -101,6 +101,21 @@ struct PhysicsParams {
   /// Off by default; the games' scenarios (make_break_scenario) turn it
   /// on so that a break spreads the rack.
   bool ball_clusters = false;
+  /// Pool model: balls may leave the cloth (docs/physics.md, "Airborne
+  /// balls"). A cue strike's downward part then goes into the slate,
+  /// which throws the ball back up with slate_restitution (a jump when
+  /// the cue is raised enough); balls fly, land and bounce, meet other
+  /// balls in three dimensions, hop off a cushion nose and can leave the
+  /// table. Off, the vertical parts of every impulse are dropped, as in
+  /// breakshot 0.1.
+  bool airborne = false;
+  /// Restitution of a ball landing on the slate (through the cloth):
+  /// Alciatore's "ball-table coefficient of restitution", 0.5. In [0, 1).
+  double slate_restitution = 0.5;
+  /// A bounce off the slate lower than this (m, the height the ball's
+  /// bottom would reach) ends the flight: the ball stays on the cloth.
+  /// About the cloth's thickness. Positive.
+  double min_bounce_height = 0.001;
 };
 
 /// The pool model's default collapse_speed (m/s): larger, because balls

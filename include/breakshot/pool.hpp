@@ -49,6 +49,9 @@ struct StrikeResult {
   /// right english squirts the ball to the left, a positive angle.
   double squirt = 0.0;
   bool miscue = false;  ///< offset beyond CueParams::miscue_limit: not played
+  /// The vertical part of the ball's velocity as the tip leaves it (m/s,
+  /// -(J/m) sin theta: down, into the slate; 0 for a level cue).
+  double vertical = 0.0;
 };
 
 /// The ball's velocity and spin just after the tip leaves it. A centre

@@ -39,6 +39,9 @@ struct RunResult {
   double final_time = 0.0;
   std::vector<BallState> final_balls;
   std::vector<Sample> samples;
+  /// Some ball left the cloth (rose more than 1e-9 m): the result file
+  /// then gives every ball's height "z".
+  bool airborne = false;
 };
 
 /// Runs a validated scenario to its `until` (or the event limit).
@@ -82,6 +85,9 @@ class Simulation {
   /// True if no ball moves.
   bool at_rest() const;
 
+  /// True once some ball has left the cloth (risen more than 1e-9 m).
+  bool left_cloth() const;
+
   /// State of ball i at the current clock.
   BallState ball(std::size_t i) const;
   std::vector<BallState> balls() const;
@@ -108,6 +114,12 @@ class Simulation {
     double wz_rate = 0.0;  ///< decay of |w_z| per second (pool)
     double t_end = 0.0;  ///< +inf if the motion never changes by itself
     MotionState state = MotionState::stationary;
+    /// Airborne only: height above the resting height and vertical
+    /// velocity at t0, z(t) = z0 + vz0 dt - g dt^2 / 2 until the landing
+    /// at t_end (gravity from the scenario's physics).
+    double z0 = 0.0;
+    double vz0 = 0.0;
+    double gravity = 0.0;
     Vec2 box_lo;  ///< bounds of the centre's path from t0 to t_end
     Vec2 box_hi;
   };

@@ -97,6 +97,12 @@ py::dict event_dict(const Scenario& s, const Event& e) {
               ? py::object(py::str(s.table.pockets[static_cast<std::size_t>(e.pocket)].name))
               : py::object(py::none());
       break;
+    case EventType::ball_off_table:
+      if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < s.table.walls.size()) {
+        d["cushion"] = std::string(s.table.walls[static_cast<std::size_t>(e.wall)].name);
+      }
+      break;
+    case EventType::ball_slate:
     case EventType::state_change:
       d["from"] = std::string(to_string(e.from));
       d["to"] = std::string(to_string(e.to));

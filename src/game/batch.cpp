@@ -75,8 +75,14 @@ void play_one(Simulation& sim, std::size_t k, ShotBatch& out) {
           out.pockets[k * n + static_cast<std::size_t>(e.ball)] = e.pocket;
         }
         break;
+      case EventType::ball_off_table:
+        if (e.ball >= 0 && static_cast<std::size_t>(e.ball) < n) {
+          out.pockets[k * n + static_cast<std::size_t>(e.ball)] = kLeftTable;
+        }
+        break;
       case EventType::cue_strike:
       case EventType::state_change:
+      case EventType::ball_slate:
         break;
     }
   }

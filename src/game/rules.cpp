@@ -343,6 +343,8 @@ ShotFacts Rules::facts(const std::vector<Event>& events) const {
         break;
       case EventType::cue_strike:
       case EventType::state_change:
+      case EventType::ball_slate:
+      case EventType::ball_off_table:
         break;
     }
   }

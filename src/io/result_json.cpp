@@ -64,6 +64,14 @@ void write_event(JsonWriter& w, const Scenario& s, const Event& e) {
         w.raw("null");
       }
       break;
+    case EventType::ball_off_table:
+      // The rail it flew over; none when it landed beyond a pocket.
+      if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < s.table.walls.size()) {
+        w.raw(", \"cushion\": ");
+        w.string(s.table.walls[static_cast<std::size_t>(e.wall)].name);
+      }
+      break;
+    case EventType::ball_slate:
     case EventType::state_change:
       w.raw(", \"from\": ");
       w.string(to_string(e.from));
@@ -84,6 +92,7 @@ class ResultWriter {
   ResultWriter(const Scenario& s, std::string& out) : s_(s), w_(out) {}
 
   void write(const RunResult& r) {
+    airborne_ = r.airborne;
     w_.raw("{\n  \"complete\": ");
     w_.raw(r.complete ? "true" : "false");
     if (r.cue) cue(*r.cue);
@@ -144,6 +153,10 @@ class ResultWriter {
     w_.vec2(b.velocity);
     w_.raw(", \"spin\": ");
     w_.vec3(b.spin);
+    if (airborne_) {
+      w_.raw(", \"z\": ");
+      w_.number(b.z);
+    }
     if (in_sample) {
       w_.raw(", \"kinetic_energy\": ");
       w_.number(i < s_.balls.size() ? kinetic_energy(s_.balls[i], b) : 0.0);
@@ -178,6 +191,7 @@ class ResultWriter {
 
   const Scenario& s_;
   JsonWriter w_;
+  bool airborne_ = false;  // some ball left the cloth: every ball has "z"
 };
 
 }  // namespace

@@ -182,7 +182,8 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
                     {"model", "ball_ball_restitution", "ball_ball_friction", "gravity",
                      "deceleration", "sliding_friction", "rolling_friction",
                      "spinning_friction", "collapse_speed", "ball_clusters",
-                     "ball_ball_model"})) {
+                     "ball_ball_model", "airborne", "slate_restitution",
+                     "min_bounce_height"})) {
     return false;
   }
 
@@ -282,6 +283,31 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
     if (ph.ball_ball_model != BallBallModel::friction && ph.model != Model::pool) {
       return fail(bpath, "\"" + law + "\" needs the pool model");
     }
+  }
+  // Extension: balls that leave the cloth (pool model).
+  if (const json* a = find(*p, "airborne")) {
+    const std::string apath = member_path(path, "airborne");
+    if (!a->is_boolean()) return fail(apath, expected("true or false", *a));
+    ph.airborne = a->get<bool>();
+    if (ph.airborne && ph.model != Model::pool) return fail(apath, "true needs the pool model");
+    if (ph.airborne && !(ph.gravity > 0.0)) {
+      return fail(apath, "true needs a positive physics.gravity (a ball would never land)");
+    }
+  }
+  for (const char* key : {"slate_restitution", "min_bounce_height"}) {
+    if (find(*p, key) != nullptr && !ph.airborne) {
+      return fail(member_path(path, key), "needs physics.airborne true");
+    }
+  }
+  if (!optional_number(*p, path, "slate_restitution", ph.slate_restitution)) return false;
+  if (!(ph.slate_restitution >= 0.0 && ph.slate_restitution < 1.0)) {
+    return fail(member_path(path, "slate_restitution"),
+                "must be in [0, 1) (at 1 a ball would bounce forever), not " +
+                    format_number(ph.slate_restitution));
+  }
+  if (!optional_number(*p, path, "min_bounce_height", ph.min_bounce_height) ||
+      !positive(ph.min_bounce_height, member_path(path, "min_bounce_height"))) {
+    return false;
   }
   // Without an explicit deceleration a ball slows as a rolling ball does
   // on cloth: mu_r g (0.0981 m/s^2 with the defaults). The pool model
@@ -589,7 +615,23 @@ bool ScenarioReader::read_ball(const json& v, const std::string& path, Scenario&
   if (pos == nullptr) return fail(member_path(path, "position"), "missing required field");
   if (!vec2(*pos, member_path(path, "position"), state.position)) return false;
   if (const json* vel = find(v, "velocity")) {
-    if (!vec2(*vel, member_path(path, "velocity"), state.velocity)) return false;
+    const std::string vpath = member_path(path, "velocity");
+    if (vel->is_array() && vel->size() == 3) {
+      // Pool model: a vertical component (up positive).
+      Vec3 v3;
+      if (!vec3(*vel, vpath, v3)) return false;
+      if (s.physics.model != Model::pool) {
+        return fail(vpath, "a vertical component needs the pool model");
+      }
+      if (v3.z != 0.0 && !s.physics.airborne) {
+        return fail(vpath, "a vertical component (" + format_number(v3.z) +
+                               ") needs physics.airborne true");
+      }
+      state.velocity = {v3.x, v3.y};
+      state.vz = v3.z;
+    } else if (!vec2(*vel, vpath, state.velocity)) {
+      return false;
+    }
   }
   if (const json* spin = find(v, "spin")) {
     const std::string spin_path = member_path(path, "spin");
@@ -617,7 +659,9 @@ bool ScenarioReader::read_ball(const json& v, const std::string& path, Scenario&
     // same rule, so that the scenario says what the engine will do.
     const Vec2 slip{state.velocity.x - spec.radius * state.spin.y,
                     state.velocity.y + spec.radius * state.spin.x};
-    if (slip != Vec2{}) {
+    if (state.vz > 0.0) {
+      state.state = MotionState::airborne;
+    } else if (slip != Vec2{}) {
       state.state = MotionState::sliding;
     } else if (state.velocity != Vec2{}) {
       state.state = MotionState::rolling;

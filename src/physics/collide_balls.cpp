@@ -92,6 +92,10 @@ void Engine::collide_pool_balls(std::int32_t i, std::int32_t j) {
   const auto uj = static_cast<std::size_t>(j);
   Trajectory& A = traj_[ui];
   Trajectory& B = traj_[uj];
+  if (A.state == MotionState::airborne || B.state == MotionState::airborne) {
+    collide_airborne_balls(i, j);  // engine_airborne.cpp
+    return;
+  }
   const double ma = scenario_.balls[ui].mass;
   const double mb = scenario_.balls[uj].mass;
   Vec2 n = B.p0 - A.p0;

@@ -73,7 +73,8 @@ void Engine::gather_cluster(std::int32_t i, std::int32_t j, double t) {
         for (std::int32_t x = std::max(0, cx - reach); x <= std::min(grid_.nx() - 1, cx + reach);
              ++x) {
           for (std::int32_t k = grid_.first(y * grid_.nx() + x); k >= 0; k = grid_.next(k)) {
-            if (traj_[static_cast<std::size_t>(k)].state != MotionState::pocketed) {
+            const MotionState sk = traj_[static_cast<std::size_t>(k)].state;
+            if (!out_of_play(sk) && sk != MotionState::airborne) {
               near.push_back(k);
             }
           }
@@ -85,18 +86,20 @@ void Engine::gather_cluster(std::int32_t i, std::int32_t j, double t) {
       }
     }
   } else {
-    // Every ball's place at t, once (pocketed balls are never gathered).
+    // Every ball's place at t, once (balls out of play or in flight are
+    // never gathered).
     std::vector<Vec2>& at = cluster_.place;
     at.clear();
     for (std::int32_t k = 0; k < n; ++k) {
       const Trajectory& tk = traj_[static_cast<std::size_t>(k)];
-      at.push_back(tk.state == MotionState::pocketed ? Vec2{} : position_at(tk, t));
+      at.push_back(out_of_play(tk.state) ? Vec2{} : position_at(tk, t));
     }
     for (std::size_t g = 0; g < group.size(); ++g) {
       const auto ug = static_cast<std::size_t>(group[g]);
       const Vec2 pg = traj_[ug].p0;
       for (std::int32_t k = 0; k < n; ++k) {
-        if (traj_[static_cast<std::size_t>(k)].state == MotionState::pocketed) continue;
+        const MotionState sk = traj_[static_cast<std::size_t>(k)].state;
+        if (out_of_play(sk) || sk == MotionState::airborne) continue;
         join(ug, pg, k, at[static_cast<std::size_t>(k)]);
       }
     }

@@ -12,7 +12,11 @@ namespace breakshot::detail {
 
 void Engine::collide_wall(std::int32_t i, std::int32_t w) {
   if (scenario_.physics.model == Model::pool) {
-    collide_pool_wall(i, w);
+    if (traj_[static_cast<std::size_t>(i)].state == MotionState::airborne) {
+      collide_airborne_wall(i, w);  // engine_airborne.cpp
+    } else {
+      collide_pool_wall(i, w);
+    }
     return;
   }
   Trajectory& A = traj_[static_cast<std::size_t>(i)];

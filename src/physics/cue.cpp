@@ -151,6 +151,7 @@ StrikeResult strike(const CueStrike& cue, double ball_mass, double ball_radius,
   Vec2 heading;
   dm::sincos(dir, heading.y, heading.x);
   out.velocity = heading * (along * ct);
+  out.vertical = -along * st;
   out.squirt = alpha / kDegree;
   // Overflow with absurd magnitudes (a speed near DBL_MAX, a radius near
   // zero) would give inf or NaN: such a stroke is outside the model too.

@@ -65,6 +65,8 @@ class Engine {
   const Scenario& scenario() const { return scenario_; }
   const std::optional<StrikeResult>& cue_result() const { return cue_result_; }
   const Trajectory& trajectory(std::size_t i) const { return traj_[i]; }
+  // Has any ball left the cloth (risen more than 1e-9 m) so far?
+  bool left_cloth() const { return left_cloth_; }
 
   // advance_to_rest() up to time t: takes every event up to t unless the
   // run to rest ends first. Returns true once that run is over: every
@@ -95,11 +97,19 @@ class Engine {
   void take_cell_crossing(std::int32_t i, std::int32_t direction, double time);
   void take_ball_ball(std::int32_t i, std::int32_t j, double t);
   void take_pocket(std::int32_t i, double t);
+  void take_off_table(std::int32_t i, double t);
+  void take_landing(std::int32_t i, double t, Event& ev);  // airborne.cpp's engine part
   void finish_event(std::int32_t i, const Event& ev);
 
   // --- motion (set_motion, set_velocity below; end_phase in motion.cpp)
   void set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls = false);
   void set_velocity(std::int32_t i, Vec2 v);
+  // A new motion with a vertical velocity vz, from the ball's present
+  // height (physics.airborne; engine_airborne.cpp): a flight, a push into
+  // the slate (which bounces it), or motion on the cloth.
+  void set_motion3(std::int32_t i, Vec2 v, double vz, Vec3 w);
+  // The height of the nose of every wall for ball i (m above the slate).
+  double rail_height(std::int32_t i) const;
   MotionState end_phase(std::int32_t i, double t);
 
   // --- prediction (predict*.cpp)
@@ -120,6 +130,8 @@ class Engine {
   void predict_walls(const Kinematics& ki, Prediction& best) const;
   void predict_wall(const Kinematics& ki, std::size_t w, double window, Prediction& best) const;
   void predict_pockets(const Kinematics& ki, Prediction& best) const;
+  void predict_wall_airborne(const Kinematics& ki, std::size_t w, double window,
+                             Prediction& best) const;  // engine_airborne.cpp
   void predict_cell_crossing(std::int32_t i, Prediction& best) const;
 
   // --- collision responses (collide_*.cpp)
@@ -130,6 +142,8 @@ class Engine {
   void gather_cluster(std::int32_t i, std::int32_t j, double t);
   void collide_wall(std::int32_t i, std::int32_t w);
   void collide_pool_wall(std::int32_t i, std::int32_t w);
+  void collide_airborne_wall(std::int32_t i, std::int32_t w);      // engine_airborne.cpp
+  void collide_airborne_balls(std::int32_t i, std::int32_t j);     // engine_airborne.cpp
 
   // --- the run's events
   // Appends ev to the run's events and counts it.
@@ -171,6 +185,7 @@ class Engine {
   double origin_ = 0.0;  // time of the last event: origin of predictions
   std::uint64_t event_count_ = 0;
   bool limit_hit_ = false;  // set when max_events stopped a step
+  bool left_cloth_ = false; // some ball has risen above the cloth
   std::size_t moving_ = 0;  // balls not at rest
   std::vector<Trajectory> traj_;
   std::vector<double> radius_;  // a copy of each ball's radius, packed

@@ -40,7 +40,8 @@ void Engine::set_up_balls() {
     tr.w0 = scenario_.start[i].spin;
     tr.state = MotionState::stationary;
     tr.t_end = kInf;
-    set_motion(static_cast<std::int32_t>(i), scenario_.start[i].velocity, scenario_.start[i].spin);
+    set_motion3(static_cast<std::int32_t>(i), scenario_.start[i].velocity, scenario_.start[i].vz,
+                scenario_.start[i].spin);
   }
 }
 
@@ -81,7 +82,9 @@ void Engine::strike_cue() {
   const auto ub = static_cast<std::size_t>(cue.ball);
   cue_result_ = strike(cue.strike, scenario_.balls[ub].mass, radius_[ub], cue.params);
   if (cue_result_->miscue) return;
-  set_motion(cue.ball, cue_result_->velocity, cue_result_->spin);
+  // With physics.airborne the downward part goes into the slate
+  // (set_motion3); without, it is dropped.
+  set_motion3(cue.ball, cue_result_->velocity, cue_result_->vertical, cue_result_->spin);
   Event ev;
   ev.time = 0.0;
   ev.type = EventType::cue_strike;

@@ -44,7 +44,10 @@ namespace breakshot::detail {
                                                           double t) {
   move_to(traj_[static_cast<std::size_t>(i)], t);
   move_to(traj_[static_cast<std::size_t>(j)], t);
-  if (scenario_.physics.ball_clusters && collide_cluster(i, j, t)) return;
+  if (scenario_.physics.ball_clusters && traj_[static_cast<std::size_t>(i)].state != MotionState::airborne &&
+      traj_[static_cast<std::size_t>(j)].state != MotionState::airborne && collide_cluster(i, j, t)) {
+    return;
+  }
   collide_balls(i, j);
   ++counter_[static_cast<std::size_t>(i)];
   ++counter_[static_cast<std::size_t>(j)];
@@ -122,9 +125,18 @@ bool Engine::step(double limit) {
       ev.wall = p.other;
       break;
     case EventKind::stop:
+      if (traj_[static_cast<std::size_t>(i)].state == MotionState::airborne) {
+        take_landing(i, t, ev);  // engine_airborne.cpp
+        break;
+      }
       ev.type = EventType::state_change;
       ev.from = end_phase(i, t);
       ev.to = traj_[static_cast<std::size_t>(i)].state;
+      break;
+    case EventKind::off:
+      take_off_table(i, t);
+      ev.type = EventType::ball_off_table;
+      ev.wall = p.other;
       break;
     case EventKind::pocket:
       take_pocket(i, t);

@@ -13,7 +13,7 @@ namespace breakshot::detail {
 
 // What a ball's next event is. Kinds in the order simultaneous events of
 // one ball are taken.
-enum class EventKind : std::uint8_t { ball, wall, pocket, stop, cell, none };
+enum class EventKind : std::uint8_t { ball, wall, pocket, off, stop, cell, none };
 
 // A ball's earliest predicted event. Ball-ball predictions remember the
 // partner's event counter so that one made stale by the partner's own

@@ -18,7 +18,10 @@ double kinetic_energy(const BallSpec& spec, const BallState& state) {
   const double inertia = 0.4 * spec.mass * spec.radius * spec.radius;
   const Vec3& w = state.spin;
   const double w2 = w.x * w.x + w.y * w.y + w.z * w.z;
-  return 0.5 * spec.mass * norm2(state.velocity) + 0.5 * inertia * w2;
+  // A ball in flight adds its vertical motion (0 for every other ball,
+  // so the sum is unchanged bit for bit).
+  const double v2 = norm2(state.velocity) + state.vz * state.vz;
+  return 0.5 * spec.mass * v2 + 0.5 * inertia * w2;
 }
 
 Vec2 momentum(const BallSpec& spec, const BallState& state) {

@@ -12,6 +12,11 @@ void move_to(Trajectory& tr, double t) {
   const Vec2 p = position_at(tr, t);
   const Vec2 v = velocity_at(tr, t);
   const Vec3 w = spin_at(tr, t);
+  if (tr.state == MotionState::airborne) {
+    const double z = z_at(tr, t);
+    tr.vz0 = vz_at(tr, t);
+    tr.z0 = z;
+  }
   tr.p0 = p;
   tr.v0 = v;
   tr.w0 = w;

@@ -23,12 +23,29 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Does a ball in this state change position?
 inline bool translating(MotionState s) {
-  return s == MotionState::moving || s == MotionState::sliding || s == MotionState::rolling;
+  return s == MotionState::moving || s == MotionState::sliding || s == MotionState::rolling ||
+         s == MotionState::airborne;
+}
+
+// Has the ball left play (into a pocket or off the table)?
+inline bool out_of_play(MotionState s) {
+  return s == MotionState::pocketed || s == MotionState::off_table;
 }
 
 // Is a ball in this state done (nothing more will happen by itself)?
-inline bool resting(MotionState s) {
-  return s == MotionState::stationary || s == MotionState::pocketed;
+inline bool resting(MotionState s) { return s == MotionState::stationary || out_of_play(s); }
+
+// Height above the resting height and vertical velocity: nonzero only in
+// flight. The landing (t_end) is exactly at z = 0.
+inline double z_at(const Trajectory& tr, double t) {
+  if (tr.state != MotionState::airborne || t >= tr.t_end) return 0.0;
+  const double dt = t - tr.t0;
+  return tr.z0 + tr.vz0 * dt - 0.5 * tr.gravity * dt * dt;
+}
+
+inline double vz_at(const Trajectory& tr, double t) {
+  if (tr.state != MotionState::airborne) return 0.0;
+  return tr.vz0 - tr.gravity * (std::min(t, tr.t_end) - tr.t0);
 }
 
 inline Vec2 position_at(const Trajectory& tr, double t) {
@@ -63,6 +80,10 @@ inline BallState state_at(const Trajectory& tr, double t) {
   s.velocity = velocity_at(tr, t);
   s.spin = spin_at(tr, t);
   s.state = (t >= tr.t_end && tr.state == MotionState::moving) ? MotionState::stationary : tr.state;
+  if (tr.state == MotionState::airborne) {
+    s.z = z_at(tr, t);
+    s.vz = vz_at(tr, t);
+  }
   return s;
 }
 
@@ -132,6 +153,27 @@ inline void start_pool_motion(Trajectory& tr, Vec2 v, Vec3 w, bool rolls,
   }
 }
 
+// A flight from tr.t0 on, from tr.p0 at height z >= 0 with vertical
+// velocity vz (z > 0 or vz > 0): no friction acts, so the velocity along
+// the cloth and the spin stay as they are, and the height is a parabola
+// until the landing at z = 0, t_end = t0 + (vz + sqrt(vz^2 + 2 g z)) / g.
+inline void start_airborne(Trajectory& tr, Vec2 v, double vz, double z, Vec3 w,
+                           const PhysicsParams& ph) {
+  tr.v0 = v;
+  tr.w0 = w;
+  tr.acc = {};
+  tr.alpha = {};
+  tr.wz_rate = 0.0;
+  tr.state = MotionState::airborne;
+  tr.z0 = z;
+  tr.vz0 = vz;
+  tr.gravity = ph.gravity;
+  // The positive root of z + vz T - g T^2 / 2 = 0, without cancellation.
+  const double root = std::sqrt(vz * vz + 2.0 * ph.gravity * z);
+  tr.t_end = tr.t0 + (vz > 0.0 ? (vz + root) / ph.gravity : 2.0 * z / (root - vz));
+  update_box(tr);
+}
+
 // A new motion from tr.t0 on, from tr.p0 with velocity v and spin w:
 // picks the state and the polynomial of the phase for the scenario's
 // model, and the box around its path. `rolls` says that a pool ball's
@@ -143,6 +185,8 @@ inline void start_motion(Trajectory& tr, Vec2 v, Vec3 w, bool rolls, const Physi
   tr.alpha = {};
   tr.wz_rate = 0.0;
   tr.t_end = kInf;
+  tr.z0 = 0.0;
+  tr.vz0 = 0.0;
   if (ph.model != Model::pool) {
     start_plain_motion(tr, v, ph);
   } else {

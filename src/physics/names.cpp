@@ -40,6 +40,8 @@ std::string_view to_string(MotionState s) {
     case MotionState::rolling: return "rolling";
     case MotionState::spinning: return "spinning";
     case MotionState::pocketed: return "pocketed";
+    case MotionState::airborne: return "airborne";
+    case MotionState::off_table: return "off_table";
   }
   return "?";
 }
@@ -51,6 +53,8 @@ std::string_view to_string(EventType t) {
     case EventType::ball_cushion: return "ball_cushion";
     case EventType::ball_pocket: return "ball_pocket";
     case EventType::state_change: return "state_change";
+    case EventType::ball_slate: return "ball_slate";
+    case EventType::ball_off_table: return "ball_off_table";
   }
   return "?";
 }

@@ -19,13 +19,19 @@ Kinematics Engine::kinematics(std::int32_t i) const {
   k.still = !translating(A.state);
   k.box_lo = A.box_lo;
   k.box_hi = A.box_hi;
+  if (A.state == MotionState::airborne) {
+    k.airborne = true;
+    k.z = z_at(A, t);
+    k.vz = vz_at(A, t);
+    k.g = A.gravity;
+  }
   return k;
 }
 
 void Engine::predict(std::int32_t i) {
   const auto ui = static_cast<std::size_t>(i);
   Prediction best{kInf, EventKind::none, -1, 0};
-  if (traj_[ui].state == MotionState::pocketed) {
+  if (out_of_play(traj_[ui].state)) {
     event_[ui] = best;
     queue_.set(i, best);
     return;

@@ -15,7 +15,7 @@ namespace breakshot::detail {
 void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
                                        Prediction& best) const {
   const Trajectory& B = traj_[static_cast<std::size_t>(j)];
-  if (B.state == MotionState::pocketed) return;
+  if (out_of_play(B.state)) return;
   const bool b_still = !translating(B.state);
   if (ki.still && b_still) return;
   const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
@@ -33,7 +33,27 @@ void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
   const Vec2 da = (b_moves ? B.acc : Vec2{}) - ki.a;
   const double dist2 = norm2(dp);
   double tau = kInf;
-  if (da.x == 0.0 && da.y == 0.0) {
+  if (ki.airborne || B.state == MotionState::airborne) {
+    // In three dimensions: the heights of the centres differ by
+    // dz(s) = dz + dvz s + daz s^2 / 2 (each ball's radius plus its
+    // height; gravity pulls only the one in flight).
+    const double window =
+        within_best(best, t, std::max(0.0, std::min(ki.t_end, B.t_end) - t));
+    const double gap = std::sqrt(dist2) - sigma;
+    if (gap > 0.0 && window < kInf && norm(dv) * window + 0.5 * norm(da) * window * window < gap) {
+      return;  // even the distance along the cloth stays too large
+    }
+    const double rb = radius_[static_cast<std::size_t>(j)];
+    const bool b_flies = B.state == MotionState::airborne;
+    const double dz = (rb + (b_flies ? z_at(B, t) : 0.0)) - (ki.radius + ki.z);
+    const double dvz = (b_flies ? vz_at(B, t) : 0.0) - ki.vz;
+    const double daz = (b_flies ? -B.gravity : 0.0) + ki.g;
+    const double c[5] = {dist2 + dz * dz - sigma * sigma, 2.0 * (dot(dp, dv) + dz * dvz),
+                         norm2(dv) + dot(dp, da) + dvz * dvz + dz * daz,
+                         dot(dv, da) + dvz * daz, 0.25 * (norm2(da) + daz * daz)};
+    tau = first_contact(c, 4, window);
+    if (!(tau < kInf)) return;
+  } else if (da.x == 0.0 && da.y == 0.0) {
     const double b = dot(dp, dv);
     if (b >= 0.0) return;  // moving apart or not at all: never closer
     tau = first_contact_quadratic(dist2 - sigma * sigma, b, norm2(dv));

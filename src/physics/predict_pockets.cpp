@@ -11,6 +11,10 @@ namespace breakshot::detail {
 
 void Engine::predict_pockets(const Kinematics& ki, Prediction& best) const {
   if (ki.still) return;
+  const auto rail_top = [&](double radius) {
+    const CushionParams& c = scenario_.table.cushion;
+    return c.height > 0.0 ? c.height : 2.0 * radius * c.nose_height;
+  };
   const double t = origin_;
   const double window = within_best(best, t, std::max(0.0, ki.t_end - t));
   const auto& pockets = scenario_.table.pockets;
@@ -33,7 +37,11 @@ void Engine::predict_pockets(const Kinematics& ki, Prediction& best) const {
                            dot(ki.v, ki.a), 0.25 * norm2(ki.a)};
       tau = first_contact(c, 4, window);
     }
-    if (tau <= window) consider(best, t + tau, EventKind::pocket, static_cast<std::int32_t>(k), 0);
+    if (!(tau <= window)) continue;
+    // In flight, a ball whose bottom is above the rail's top passes over
+    // the hole (engine_airborne.cpp).
+    if (ki.airborne && ki.z + ki.vz * tau - 0.5 * ki.g * tau * tau >= rail_top(ki.radius)) continue;
+    consider(best, t + tau, EventKind::pocket, static_cast<std::int32_t>(k), 0);
   }
 }
 

@@ -80,7 +80,12 @@ void Engine::predict_walls(const Kinematics& ki, Prediction& best) const {
       continue;  // the ball's path never comes within reach of these walls
     }
     for (std::size_t w = run.begin; w < run.end; ++w) {
-      predict_wall(ki, w, within_best(best, t, std::max(0.0, ki.t_end - t)), best);
+      const double window = within_best(best, t, std::max(0.0, ki.t_end - t));
+      if (ki.airborne) {
+        predict_wall_airborne(ki, w, window, best);  // engine_airborne.cpp
+      } else {
+        predict_wall(ki, w, window, best);
+      }
     }
   }
 }

@@ -18,6 +18,10 @@ struct Kinematics {
   double t_end = 0.0;
   double radius = 0.0;
   bool still = true;
+  // In flight: height above the resting height, vertical velocity and
+  // gravity at the origin (z(s) = z + vz s - g s^2 / 2).
+  bool airborne = false;
+  double z = 0.0, vz = 0.0, g = 0.0;
 };
 
 // Among a ball's candidate events at the same time the order is fixed by

@@ -57,6 +57,7 @@ RunResult run(const Scenario& scenario, RunRecord* record) {
   result.cue = sim.cue_result();
   result.final_time = sim.time();
   result.final_balls = sim.balls();
+  result.airborne = sim.left_cloth();
   result.events = std::move(sim.events());
   return result;
 }

@@ -36,6 +36,7 @@ StopReason Simulation::advance_to(double t) { return engine_->advance_to(t); }
 StopReason Simulation::advance_to_rest() { return engine_->advance_to_rest(); }
 double Simulation::next_event_time() { return engine_->next_event_time(); }
 bool Simulation::at_rest() const { return engine_->at_rest(); }
+bool Simulation::left_cloth() const { return engine_->left_cloth(); }
 BallState Simulation::ball(std::size_t i) const { return engine_->ball(i); }
 std::vector<BallState> Simulation::balls() const { return engine_->balls(); }
 std::size_t Simulation::ball_count() const { return engine_->ball_count(); }
