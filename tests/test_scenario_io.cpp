@@ -414,7 +414,7 @@ TEST(ScenarioInvalid, UnknownFields) {
   expect_invalid(doc, "physics.frction",
                  "unknown field (known: model, ball_ball_restitution, ball_ball_friction, "
                  "gravity, deceleration, sliding_friction, rolling_friction, spinning_friction, "
-                 "collapse_speed, ball_clusters, ball_ball_model)");
+                 "collapse_speed, ball_clusters, ball_ball_model, airborne, slate_restitution, min_bounce_height)");
   doc = base();
   doc["table"]["cushion_restitutoin"] = 0.9;  // cushion_restitution is a field of any table
   expect_invalid(doc, "table.cushion_restitutoin", "unknown field");
