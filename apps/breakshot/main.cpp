@@ -5,7 +5,7 @@
 //   breakshot match --game eight_ball|nine_ball --players A,B --games N
 //                   --seed S --noise LEVEL [--table 7ft|8ft|9ft] [--records DIR] [--timing]
 //                   [--first-game N] [--cushion-model NAME] [--ball-ball-model NAME]
-//                   [--ball-ball-friction tpa28|tpb3|A,B,C|MU]
+//                   [--ball-ball-friction tpa28|tpb3|A,B,C|MU] [--airborne on|off]
 //   breakshot match-sum SUMMARY...
 //     (--noise is the noise of players without one of their own; AI levels
 //     shoot with their level's noise)
@@ -204,6 +204,7 @@ struct MatchArgs {
   std::string cushion_model;       // empty: the default
   std::string ball_ball_model;     // empty: the default
   std::string ball_ball_friction;  // empty: the default
+  std::string airborne;            // "on", "off"; empty: the default
 };
 
 template <class T>
@@ -271,6 +272,11 @@ bs::GamePhysics match_physics(const MatchArgs& a) {
                       "' (friction or mathavan_2014)"};
   }
   if (!a.ball_ball_friction.empty()) parse_ball_ball_friction(a.ball_ball_friction, p);
+  if (a.airborne == "on" || a.airborne == "off") {
+    p.airborne = a.airborne == "on";
+  } else if (!a.airborne.empty()) {
+    throw BadArgument{"--airborne: expected on or off, not '" + a.airborne + "'"};
+  }
   return p;
 }
 
@@ -527,6 +533,10 @@ int main(int argc, char** argv) {
                     "refit to the measured throw, TP B-3), a curve A,B,C (mu = a + b exp(-c v)) "
                     "or a constant")
       ->type_name("SPEC");
+  match->add_option("--airborne", match_args.airborne,
+                    "on: balls may leave the cloth (jumps, hops, balls off the table); off "
+                    "(default): they stay on it, the legacy physics")
+      ->type_name("on|off");
   match->add_flag("--timing", match_args.timing,
                   "Add each player's decision times (median, p90, max seconds) to the summary; "
                   "they vary from run to run");

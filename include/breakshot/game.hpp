@@ -59,16 +59,20 @@ struct GamePhysics {
   bool ball_ball_friction_fit = true;
   FrictionCurve ball_ball_friction_curve = kThrowFitTPA28;
   double ball_ball_friction = 0.0;
+  /// Balls may leave the cloth (`physics.airborne`): jump shots, hops,
+  /// balls off the table.
+  bool airborne = false;
   bool operator==(const GamePhysics&) const = default;
 };
 
-/// The physics of every game played before issue 22, by its names:
-/// "han_2005_v0" cushions, "friction" ball-ball impacts with Alciatore's
-/// TP A-28 friction curve (kThrowFitTPA28). Version 1 game records and
+/// The physics of breakshot 0.1's games, by its names: "han_2005_v0"
+/// cushions, "friction" ball-ball impacts with Alciatore's TP A-28
+/// friction curve (kThrowFitTPA28), balls that stay on the cloth. Version
+/// 1 game records and
 /// "v1." share links were played with it, and replay on it. Spelled out
 /// field by field: it stays this physics when GamePhysics's defaults move.
 inline constexpr GamePhysics kLegacyGamePhysics{CushionModel::han_2005_v0, BallBallModel::friction,
-                                                true, kThrowFitTPA28, 0.0};
+                                                true, kThrowFitTPA28, 0.0, false};
 
 /// Why `physics` cannot be played (a friction curve that is no curve, a
 /// negative or non-finite constant friction), naming the field; nullopt

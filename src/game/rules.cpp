@@ -165,6 +165,7 @@ Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_rule
   base_.physics.ball_ball_model = gp.ball_ball_model;
   base_.physics.ball_ball_friction_fit = gp.ball_ball_friction_fit;
   base_.physics.ball_ball_friction_curve = gp.ball_ball_friction_curve;
+  base_.physics.airborne = gp.airborne;
   base_.physics.ball_ball_friction = gp.ball_ball_friction;
   // The cushion law as a scenario's table.cushion_model sets it:
   // mathavan_2010 with Mathavan et al.'s own restitution and contact

@@ -75,6 +75,9 @@ ojson physics_json(const GamePhysics& p) {
   j["ball_ball_model"] = to_string(p.ball_ball_model);
   j["ball_ball_friction"] = p.ball_ball_friction_fit ? friction_curve_json(p.ball_ball_friction_curve)
                                                      : ojson(p.ball_ball_friction);
+  // Written only when on, so that records of games on the cloth keep
+  // their bytes; absent reads as false.
+  if (p.airborne) j["airborne"] = true;
   return j;
 }
 
@@ -183,8 +186,16 @@ bool GameReader::config(const json& v, const std::string& path, GameConfig& c) {
 }
 
 bool GameReader::physics(const json& v, const std::string& path, GamePhysics& p) {
-  if (!exact_object(v, path, {"cushion_model", "ball_ball_model", "ball_ball_friction"})) {
+  const bool has_airborne = v.is_object() && v.contains("airborne");
+  if (has_airborne ? !exact_object(v, path, {"cushion_model", "ball_ball_model", "ball_ball_friction",
+                                             "airborne"})
+                   : !exact_object(v, path, {"cushion_model", "ball_ball_model", "ball_ball_friction"})) {
     return false;
+  }
+  p.airborne = false;
+  if (has_airborne) {
+    if (!v["airborne"].is_boolean()) return fail(member_path(path, "airborne"), "expected true or false");
+    p.airborne = v["airborne"].get<bool>();
   }
   const auto at = [&](std::string_view key) { return member_path(path, key); };
   std::string name;
