@@ -77,8 +77,7 @@ void Engine::set_motion3(std::int32_t i, Vec2 v, double vz, Vec3 w) {
     vz = m.velocity.z;
     w = m.spin;
   }
-  const bool flies =
-      z > 0.0 || (vz > 0.0 && vz * vz >= 2.0 * ph.gravity * ph.min_bounce_height);
+  const bool flies = z > 0.0 || (vz > 0.0 && vz * vz >= 2.0 * ph.gravity * ph.min_bounce_height);
   if (!flies) {
     set_motion(i, v, w);
     return;
@@ -203,7 +202,8 @@ void Engine::predict_wall_airborne(const Kinematics& ki, std::size_t w, double w
   // The post's side below its top: the horizontal distance reaches reach.
   if (dot(d, v) < 0.0) {
     const double s = first_contact_quadratic(norm2(d) - reach * reach, dot(d, v), norm2(v));
-    if (s <= window && above(s) <= 0.0 && on_arc(s)) consider(best, t + s, EventKind::wall, kind, 0);
+    if (s <= window && above(s) <= 0.0 && on_arc(s))
+      consider(best, t + s, EventKind::wall, kind, 0);
   }
   const double s = first_contact(c, 4, window);
   if (s <= window && above(s) > 0.0 && on_arc(s)) consider(best, t + s, EventKind::wall, kind, 0);
