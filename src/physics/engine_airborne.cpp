@@ -17,10 +17,14 @@
 //   a ball that crosses the line (d = 0) without meeting either has
 //   e >= R: it passes above the rail and leaves the table (off_table).
 // Corners and the round tips of pocket jaws are vertical posts of their
-// radius and of the same height: the face when e <= 0, and for e > 0 the
-// top, taken as the point on the post's axis at height h, reached at the
+// radius and of the same height: the face when e <= 0 (only the arc's
+// own directions, as on the cloth), and for e > 0 the top all round,
+// taken as the point on the post's axis at height h, reached at the
 // distance R + radius (exact for a corner; for a jaw tip of radius 1/8 in
 // the ball meets it up to that radius higher than a rounded rim would).
+// The top all round also stands for the ends of the neighbouring noses,
+// which lie on the tip's circle: a ball above a nose's line but beyond
+// its end meets the rail there.
 // In flight the ball meets a pocket's hole only while its bottom is below
 // the rail's top (else it flies over it), and a ball that lands inside a
 // pocket's circle drops in; one that lands outside the table has left it.
@@ -44,6 +48,15 @@ constexpr double kRisen = 1e-9;
 // A wall contact counts where the foot of the centre lies on the segment,
 // with the slack of the walls on the cloth (predict_walls.cpp).
 constexpr double kSegmentSlack = 1e-9;
+
+// Rounds of a ball pressed between another and the slate (see
+// collide_airborne_balls); the last one is plastic.
+constexpr int kPressRounds = 32;
+
+// The parting nudges after an impact in flight start at a few ulps of the
+// speed and double: 24 steps reach about 1e-8 of it, plenty for rounding,
+// and never enough to matter to the energy.
+constexpr int kPartingSteps = 24;
 
 Vec3 lift(Vec2 v, double z) { return {v.x, v.y, z}; }
 Vec2 flat(Vec3 v) { return {v.x, v.y}; }
@@ -173,12 +186,39 @@ void Engine::predict_wall_airborne(const Kinematics& ki, std::size_t w, double w
         consider(best, t + s, EventKind::wall, kind, 0);
       }
     }
-    // The nose's edge.
-    const double c[5] = {d0 * d0 + e0 * e0 - r * r, 2.0 * (d0 * dv + e0 * e1),
-                         dv * dv + e1 * e1 + 2.0 * e0 * e2, 2.0 * e1 * e2, e2 * e2};
-    const double s = first_contact(c, 4, window);
-    if (s <= window && above(s) > 0.0 && d0 + dv * s >= 0.0 && on_segment(s)) {
-      consider(best, t + s, EventKind::wall, kind, 0);
+    // The nose's edge, searched only while the foot of the centre is on
+    // the segment: a ball that lands in a pocket's mouth can lie within R
+    // of a nose's line beyond its end, and the contact that counts comes
+    // later, once it is over the nose itself.
+    const double fa = dot(p - wall.a, ab) / norm2(ab);
+    const double fb = dot(v, ab) / norm2(ab);
+    double lo = 0.0;
+    double hi = window;
+    if (fb != 0.0) {
+      const double s1 = (-kSegmentSlack - fa) / fb;
+      const double s2 = (1.0 + kSegmentSlack - fa) / fb;
+      lo = std::max(lo, std::min(s1, s2));
+      hi = std::min(hi, std::max(s1, s2));
+    } else if (fa < -kSegmentSlack || fa > 1.0 + kSegmentSlack) {
+      hi = -1.0;
+    }
+    if (lo <= hi) {
+      // The distance to the edge from lo on: d = dl + dv u, e = el + el1 u + e2 u^2.
+      const double dl = d0 + dv * lo;
+      const double el = above(lo);
+      const double el1 = e1 + 2.0 * e2 * lo;
+      const double c[5] = {dl * dl + el * el - r * r, 2.0 * (dl * dv + el * el1),
+                           dv * dv + el1 * el1 + 2.0 * el * e2, 2.0 * el1 * e2, e2 * e2};
+      double s = kInf;
+      if (lo > 0.0 && c[0] <= 0.0) {
+        s = lo;  // it comes over the nose's end already within reach: the end
+      } else {
+        const double u = first_contact(c, 4, hi - lo);
+        if (u <= hi - lo) s = lo + u;
+      }
+      if (s <= window && above(s) > 0.0 && d0 + dv * s >= 0.0) {
+        consider(best, t + s, EventKind::wall, kind, 0);
+      }
     }
     // Over the rail: the centre crosses the nose's line above it.
     if (dv < 0.0 && d0 >= 0.0) {
@@ -205,8 +245,11 @@ void Engine::predict_wall_airborne(const Kinematics& ki, std::size_t w, double w
     if (s <= window && above(s) <= 0.0 && on_arc(s))
       consider(best, t + s, EventKind::wall, kind, 0);
   }
+  // The top, all round: where the arc's directions end, the nearest
+  // points of the rail are the ends of the neighbouring noses, which lie
+  // on the same circle (their own edges count only along their length).
   const double s = first_contact(c, 4, window);
-  if (s <= window && above(s) > 0.0 && on_arc(s)) consider(best, t + s, EventKind::wall, kind, 0);
+  if (s <= window && above(s) > 0.0) consider(best, t + s, EventKind::wall, kind, 0);
 }
 
 // A ball in flight meets wall w (the trajectory moved to the contact):
@@ -244,7 +287,7 @@ void Engine::collide_airborne_wall(std::int32_t i, std::int32_t w) {
   set_motion3(i, flat(out.velocity), out.velocity.z, out.spin);
   // Leave the contact in the predictor's arithmetic (as on the cloth).
   double extra = 4.0 * std::numeric_limits<double>::epsilon() * std::max(norm(A.v0), vc);
-  for (int k = 0; k < 64; ++k, extra *= 2.0) {
+  for (int k = 0; k < kPartingSteps; ++k, extra *= 2.0) {
     const double vz = A.state == MotionState::airborne ? A.vz0 : 0.0;
     if (d * dot(across, A.v0) + std::max(e, 0.0) * vz > 0.0) break;
     set_motion3(i, A.v0 + across * extra, vz, A.w0);
@@ -281,10 +324,33 @@ void Engine::collide_airborne_balls(std::int32_t i, std::int32_t j) {
   const BallFriction friction = ph.ball_ball_friction_fit
                                     ? BallFriction{curve.a, curve.b, curve.c}
                                     : BallFriction{ph.ball_ball_friction, 0.0, 0.0};
-  const Impact3 r = ball_ball_impact_3d(ca, ma, scenario_.balls[ui].mass, ra, cb, mb,
-                                        scenario_.balls[uj].mass, rb, e, friction);
-  set_motion3(i, flat(r.a.velocity), r.a.velocity.z, r.a.spin);
-  set_motion3(j, flat(r.b.velocity), r.b.velocity.z, r.b.spin);
+  // A ball on the cloth pushed down is pressed between the other ball
+  // and the slate: the impacts are taken in turn (the pair's, then the
+  // slate's on the ball pushed into it) until the pair parts. Each round
+  // loses energy (e_s < 1), so the rounds shrink geometrically.
+  Motion3 a = ma;
+  Motion3 b = mb;
+  const Vec3 up{0.0, 0.0, 1.0};
+  const auto slate = [&](Motion3& m, const Trajectory& tr, double r) {
+    if (tr.state != MotionState::airborne && m.velocity.z < 0.0) {
+      m = fixed_contact_impact(m, up, r, ph.slate_restitution, ph.sliding_friction);
+    }
+  };
+  for (int round = 0; round < kPressRounds; ++round) {
+    const double e_round = round + 1 < kPressRounds ? e : 0.0;
+    const Impact3 r = ball_ball_impact_3d(ca, a, scenario_.balls[ui].mass, ra, cb, b,
+                                          scenario_.balls[uj].mass, rb, e_round, friction);
+    a = r.a;
+    b = r.b;
+    slate(a, A, ra);
+    slate(b, B, rb);
+    if (!(dot3(a.velocity - b.velocity, dc) > 0.0)) break;  // parting
+  }
+  // What the slate left pushed down (after the last round) it takes up.
+  if (A.state != MotionState::airborne && a.velocity.z < 0.0) a.velocity.z = 0.0;
+  if (B.state != MotionState::airborne && b.velocity.z < 0.0) b.velocity.z = 0.0;
+  set_motion3(i, flat(a.velocity), a.velocity.z, a.spin);
+  set_motion3(j, flat(b.velocity), b.velocity.z, b.spin);
   // Part in the predictor's arithmetic: push apart along the cloth.
   const Vec2 dp = B.p0 - A.p0;
   const double dpl = norm(dp);
@@ -293,7 +359,7 @@ void Engine::collide_airborne_balls(std::int32_t i, std::int32_t j) {
   const double dz = (rb + height(B)) - (ra + height(A));
   double extra = 4.0 * std::numeric_limits<double>::epsilon() *
                  std::max({norm(A.v0), norm(B.v0), ph.collapse_speed});
-  for (int k = 0; k < 64; ++k, extra *= 2.0) {
+  for (int k = 0; k < kPartingSteps; ++k, extra *= 2.0) {
     if (dot(dp, B.v0 - A.v0) + dz * (rise(B) - rise(A)) > 0.0) break;
     set_motion3(i, A.v0 - n * extra, rise(A), A.w0);
     set_motion3(j, B.v0 + n * extra, rise(B), B.w0);
