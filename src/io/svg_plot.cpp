@@ -1059,6 +1059,54 @@ std::string momentum_svg(const Scenario& scenario, const std::vector<Sample>& fr
   return out;
 }
 
+// The height of each ball's centre above its resting height against
+// time (balls that leave the cloth), with the bottom of the ball on the
+// rail's nose marked as a dashed line: a ball above it can clear a rail.
+std::string height_svg(const Scenario& scenario, const std::vector<Sample>& frames) {
+  const Common c = common(scenario, frames);
+  const std::size_t shown = series_count(c.n);
+  std::vector<std::vector<double>> z(shown, std::vector<double>(frames.size()));
+  double hi = 0.0;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    for (std::size_t i = 0; i < shown; ++i) {
+      z[i][k] = state_of(frames[k], i).z;
+      hi = std::max(hi, z[i][k]);
+    }
+  }
+  const CushionParams& cp = scenario.table.cushion;
+  const double r = scenario.balls.empty() ? kPoolBallRadius : scenario.balls[0].radius;
+  const double nose = cp.height > 0.0 ? cp.height : 2.0 * r * cp.nose_height;
+  Panel p;
+  p.ax = time_axis(c.t0, c.t1);
+  p.ay = value_axis(0.0, std::max(hi, nose) * 1.05, 1e-3, true);
+  choose_labels(p.ay);
+  std::vector<LegendItem> items = series_legend(scenario, shown);
+  items.erase(items.begin());  // no total: heights do not add up
+  const double left = left_margin(p.ay);
+  const double lw = legend_width(items);
+  const double top = 64.0;
+  const double panel_h = 320.0;
+  const double plot_w = kTimeWidth - left - lw - 36.0;
+  p.r = {left, top, plot_w, panel_h};
+  const double height = std::max(top + panel_h + 56.0, top + legend_height(items) + 20.0);
+  std::string out;
+  open_svg(out, kTimeWidth, height);
+  titles(out, left, c.model + " model, " + plural(c.n, "ball") + ": height above the cloth",
+         time_range(c) + "; dashed: the rail's nose (" + general(nose) +
+             " m): a ball whose bottom is below it meets a rail");
+  draw_axes(out, p, p.ax.title("time", "s"), p.ay.title("height of the centre above rest", "m"),
+            true);
+  clip_rect(out, "hz", p.r);
+  out += "<g clip-path=\"url(#hz)\">\n";
+  series(out, p, c.t, std::vector<double>(frames.size(), nose),
+         stroke("#888", 1.0) + " stroke-dasharray=\"6 4\"");
+  for (std::size_t i = 0; i < shown; ++i) series(out, p, c.t, z[i], stroke(ball_colour(i), 1.5));
+  out += "</g>\n";
+  draw_legend(out, p.r.x + plot_w + 20.0, top, items);
+  close_svg(out);
+  return out;
+}
+
 // Writes text to path, or throws naming the path.
 void write_file(const std::string& path, const std::string& content) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
@@ -1084,7 +1132,15 @@ std::vector<std::string> write_plots(const Scenario& scenario,
   write_file(paths[0], trajectories_svg(scenario, frames));
   write_file(paths[1], energy_svg(scenario, frames));
   write_file(paths[2], momentum_svg(scenario, frames));
-  return paths;
+  // A run in which some ball left the cloth also shows the heights.
+  const bool flew = std::any_of(frames.begin(), frames.end(), [](const Sample& f) {
+    return std::any_of(f.balls.begin(), f.balls.end(), [](const BallState& b) { return b.z > 0.0; });
+  });
+  if (!flew) return paths;
+  std::vector<std::string> all = paths;
+  all.push_back(prefix + "-height.svg");
+  write_file(all.back(), height_svg(scenario, frames));
+  return all;
 }
 
 }  // namespace breakshot
