@@ -103,6 +103,12 @@ ojson event_json(const Table& table, const Event& e) {
         j["pocket_name"] = nullptr;
       }
       break;
+    case EventType::ball_off_table:
+      if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < table.walls.size()) {
+        j["cushion"] = table.walls[static_cast<std::size_t>(e.wall)].name;
+      }
+      break;
+    case EventType::ball_slate:
     case EventType::state_change:
       j["from"] = std::string(to_string(e.from));
       j["to"] = std::string(to_string(e.to));
