@@ -351,14 +351,14 @@ TEST(PoolInvalid, CushionFields) {
   }
 }
 
-// table.cushion_model: the three laws by name, the legacy one by default;
+// table.cushion_model: the four laws by name, the legacy one by default;
 // mathavan_2010 brings the paper's restitution and contact height unless
 // they are given.
 TEST(PoolRead, CushionModel) {
   const bs::Scenario d = read_ok(pool_base());
   EXPECT_EQ(d.table.cushion.model, bs::CushionModel::han_2005_v0);
   EXPECT_EQ(d.table.cushion.height, 0.0);
-  for (const char* name : {"han_2005_v0", "han_2005", "mathavan_2010"}) {
+  for (const char* name : {"han_2005_v0", "han_2005", "mathavan_2010", "impulse_frictional"}) {
     json doc = pool_base();
     doc["table"]["cushion_model"] = name;
     const bs::Scenario s = read_ok(doc);
@@ -379,7 +379,9 @@ TEST(PoolRead, CushionModel) {
 
   doc = pool_base();
   doc["table"]["cushion_model"] = "han";
-  expect_invalid(doc, "table.cushion_model", "han_2005");
+  expect_invalid(doc, "table.cushion_model",
+                 "unknown cushion model \"han\" (expected \"han_2005_v0\", \"han_2005\", "
+                 "\"mathavan_2010\" or \"impulse_frictional\")");
   doc["table"]["cushion_model"] = 2005;
   expect_invalid(doc, "table.cushion_model", "expected a string");
 }

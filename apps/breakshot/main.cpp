@@ -54,6 +54,7 @@
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/plot.hpp"
+#include "breakshot/pool.hpp"
 #include "breakshot/record.hpp"
 #include "breakshot/players.hpp"
 #include "breakshot/match_io.hpp"
@@ -259,12 +260,23 @@ void parse_ball_ball_friction(const std::string& text, bs::GamePhysics& p) {
   }
 }
 
+/// The cushion models' names, "han_2005_v0, ... or impulse_frictional".
+std::string cushion_model_list() {
+  std::string out;
+  const std::size_t n = std::size(bs::kCushionModels);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k > 0) out += k + 1 == n ? " or " : ", ";
+    out += bs::cushion_model_name(bs::kCushionModels[k]);
+  }
+  return out;
+}
+
 /// The physics options of `match`: the engine's defaults where not given.
 bs::GamePhysics match_physics(const MatchArgs& a) {
   bs::GamePhysics p;
   if (!a.cushion_model.empty() && !bs::parse_cushion_model(a.cushion_model, p.cushion_model)) {
-    throw BadArgument{"--cushion-model: unknown cushion model '" + a.cushion_model +
-                      "' (han_2005_v0, han_2005 or mathavan_2010)"};
+    throw BadArgument{"--cushion-model: unknown cushion model '" + a.cushion_model + "' (" +
+                      cushion_model_list() + ")"};
   }
   if (!a.ball_ball_model.empty() &&
       !bs::parse_ball_ball_model(a.ball_ball_model, p.ball_ball_model)) {
@@ -522,8 +534,8 @@ int main(int argc, char** argv) {
                     "as in one long match, so chunks of a match can be summed (match-sum)")
       ->type_name("N");
   match->add_option("--cushion-model", match_args.cushion_model,
-                    "Cushion law: han_2005_v0 (default, the legacy law), han_2005 or "
-                    "mathavan_2010 (docs/physics.md)")
+                    "Cushion law: " + cushion_model_list() +
+                        " (the first is the default, the legacy law; docs/physics.md)")
       ->type_name("NAME");
   match->add_option("--ball-ball-model", match_args.ball_ball_model,
                     "Ball-ball impact law: friction (default) or mathavan_2014")

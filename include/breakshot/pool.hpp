@@ -136,7 +136,27 @@ enum class CushionModel : std::uint8_t {
   /// "mathavan_2010": Mathavan, Jackson and Parkin 2010, rigid cushion,
   /// slip at the nose and at the cloth, integrated over the impulse.
   mathavan_2010,
+  /// "impulse_frictional": one frictional impulse at the nose against the
+  /// half-space of the tilted contact normal, the slate holding the ball
+  /// on the cloth: Newton's restitution on the final normal velocity
+  /// (the ball leaves at -e times its normal velocity, whatever its spin),
+  /// Coulomb friction capped by the impulse that stops the slip, and the
+  /// friction never doing positive work.
+  impulse_frictional,
 };
+
+/// Every cushion model, in the order messages and help texts list them.
+inline constexpr CushionModel kCushionModels[] = {CushionModel::han_2005_v0, CushionModel::han_2005,
+                                                  CushionModel::mathavan_2010,
+                                                  CushionModel::impulse_frictional};
+
+/// Whether m is one of kCushionModels (an enum can hold other values).
+constexpr bool is_cushion_model(CushionModel m) {
+  for (const CushionModel k : kCushionModels) {
+    if (k == m) return true;
+  }
+  return false;
+}
 
 /// The scenario name of a cushion model ("han_2005_v0", ...).
 std::string_view cushion_model_name(CushionModel m);

@@ -399,8 +399,8 @@ class Game:
     the rules' 400) ends a game still going after that many shots as a
     draw; 0 means no limit. ``physics`` (None: the defaults) chooses the
     pool model's laws, as ``breakshot match`` does: a dict with any of
-    ``"cushion_model"`` (``"han_2005_v0"``, the default, ``"han_2005"`` or
-    ``"mathavan_2010"``), ``"ball_ball_model"`` (``"friction"`` or
+    ``"cushion_model"`` (``"han_2005_v0"``, the default, ``"han_2005"``,
+    ``"mathavan_2010"`` or ``"impulse_frictional"``), ``"ball_ball_model"`` (``"friction"`` or
     ``"mathavan_2014"``) and ``"ball_ball_friction"`` (a number, or a curve
     ``{"a": .., "b": .., "c": ..}``); see :func:`physics_of`.
 

@@ -127,8 +127,7 @@ std::shared_ptr<const detail::Ruleset> make_ruleset(GameType game) {
 }  // namespace
 
 std::optional<std::string> check_game_physics(const GamePhysics& p) {
-  if (p.cushion_model != CushionModel::han_2005_v0 && p.cushion_model != CushionModel::han_2005 &&
-      p.cushion_model != CushionModel::mathavan_2010) {
+  if (!is_cushion_model(p.cushion_model)) {
     return "physics.cushion_model: not a cushion model";
   }
   if (p.ball_ball_model != BallBallModel::friction &&

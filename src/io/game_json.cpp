@@ -199,11 +199,10 @@ bool GameReader::physics(const json& v, const std::string& path, GamePhysics& p)
   }
   const auto at = [&](std::string_view key) { return member_path(path, key); };
   std::string name;
-  if (!text_of(v["cushion_model"], at("cushion_model"), "cushion model",
-               {"han_2005_v0", "han_2005", "mathavan_2010"}, name)) {
-    return false;
+  if (!text(v["cushion_model"], at("cushion_model"), name)) return false;
+  if (!parse_cushion_model(name, p.cushion_model)) {
+    return fail(at("cushion_model"), unknown("cushion model", name, cushion_model_names()));
   }
-  parse_cushion_model(name, p.cushion_model);
   if (!text_of(v["ball_ball_model"], at("ball_ball_model"), "ball-ball model",
                {"friction", "mathavan_2014"}, name)) {
     return false;

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "breakshot/pool.hpp"
 #include "io/json_write.hpp"
 
 namespace breakshot::json_io {
@@ -222,6 +223,12 @@ std::string one_of(const std::string_view* names, std::size_t n) {
     out += '"';
   }
   return out;
+}
+
+std::string cushion_model_names() {
+  std::vector<std::string_view> names;
+  for (const CushionModel m : kCushionModels) names.push_back(cushion_model_name(m));
+  return one_of(names.data(), names.size());
 }
 
 // ---------------------------------------------------------------------------

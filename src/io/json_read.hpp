@@ -56,6 +56,9 @@ std::string one_of(const std::string_view* names, std::size_t n);
 inline std::string one_of(std::initializer_list<std::string_view> names) {
   return one_of(names.begin(), names.size());
 }
+/// The cushion models' scenario names as one_of lists them
+/// ("\"han_2005_v0\", ... or \"impulse_frictional\""), from kCushionModels.
+std::string cushion_model_names();
 
 // ---------------------------------------------------------------------------
 // Parsing

@@ -422,11 +422,11 @@ bool ScenarioReader::read_cushion(const json& t, Scenario& s) {
   CushionParams& cp = s.table.cushion;
   if (const json* m = find(t, "cushion_model")) {
     std::string name;
-    if (!text_of(*m, "table.cushion_model", "cushion model",
-                 {"han_2005_v0", "han_2005", "mathavan_2010"}, name)) {
-      return false;
+    if (!text(*m, "table.cushion_model", name)) return false;
+    if (!parse_cushion_model(name, cp.model)) {
+      return fail("table.cushion_model",
+                  unknown("cushion model", name, json_io::cushion_model_names()));
     }
-    parse_cushion_model(name, cp.model);
   }
   // Mathavan et al. 2010's own constants are that model's defaults.
   const bool mathavan = cp.model == CushionModel::mathavan_2010;

@@ -1,8 +1,8 @@
 // Cushion rebound for the pool model: the rail's nose touches the ball
-// above its centre. Three laws (CushionModel): han_2005_v0 (breakshot
+// above its centre. Four laws (CushionModel): han_2005_v0 (breakshot
 // 0.1's law, the default; first part below), han_2005 (the same impulse
-// law with the slate's reaction; second part) and mathavan_2010 (third
-// part).
+// law with the slate's reaction; second part), mathavan_2010 (third
+// part) and impulse_frictional (fourth part).
 //
 // PART 1, han_2005_v0 (H. Han, "Dynamics in carom and three cushion
 // billiards", J. Mech. Sci. Tech. 19 (2005)). Every step below is derived
@@ -99,7 +99,7 @@
 // rail "keeps" energy that its restitution does not account for. Kept
 // as the named legacy law so that earlier results replay exactly.
 //
-// Cushion height. All three laws take sin t = 2 nose_height - 1, or
+// Cushion height. Every law takes sin t = 2 nose_height - 1, or
 // (height - R) / R when a height in metres is given (table.cushion_height),
 // so that balls of any radius meet the same rail at their own angle.
 //
@@ -176,6 +176,78 @@
 // cloth's sliding friction (the paper's 0.212; in a simulation,
 // physics.sliding_friction).
 //
+// PART 4, impulse_frictional: one rigid-body impulse at the nose, the
+// kind of law pooltool calls "impulse_frictional_inelastic" (a sphere
+// hitting a half-space whose normal is the contact normal: Newton's
+// restitution along it, Coulomb friction capped by the impulse that
+// stops the slip). Pooltool solves it for a free sphere and then drops
+// the vertical velocity; for a free sphere that is part 1's law exactly,
+// with its defect (0.854 of the speed straight in, e = 1, no friction).
+// Here the ball is held on the cloth during the impulse, as in part 2.
+//
+// The constrained ball. The slate's frictionless reaction P_C z acts
+// through the centre and keeps v_z = 0. A rail impulse per unit mass
+// p = p_N N + p1 t1 + p2 t2 then changes the nose's contact velocity
+// (u_N = u . N, u1, u2 as in part 1) by K p, with (from part 2's dv, dw)
+//   du_N = c^2 p_N + c s p2,   du1 = 7/2 p1,   du2 = c s p_N + (5/2 + s^2) p2.
+// K is symmetric positive definite: it is the constrained ball's inverse
+// mass at the nose, and an impulse p changes the kinetic energy per unit
+// mass by p . u + 1/2 p . K p (the slate's impulse does no work: v_z
+// stays 0). The coupling c s is what makes this law differ from a free
+// sphere's: a normal impulse turns the ball's horizontal motion round, and
+// the contact point then slides along the tilted nose (u2 changes).
+//
+// Newton's restitution on the final normal velocity: u_N' = -e u_N, i.e.
+// (u_N = -v_x c, v_z = 0 before and after)
+//   v_x' = -e v_x,
+// whatever the friction: the friction's own normal part is made up by the
+// rail's normal impulse, p_N = (1 + e) v_x / c - (s / c) p2. With that,
+// the slip left after an impulse with tangential part q = (p1, p2) is
+//   u_t' = w + S q,   w = (u1, e v_x s - R w_y),   S = diag(7/2, 5/2),
+// where w is the slip a frictionless impulse would leave (u2 evaluated at
+// v_x' = -e v_x, as in part 2) and S = K_tt - K_tn K_nt / K_nn is the
+// tangential response with the normal velocity held. The impulse that
+// stops the slip is q* = -g, g = S^-1 w = (u1 / (7/2), w2 / (5/2)). The
+// law takes q = -a g with the largest fraction a in [0, 1] that meets both
+// of the following.
+//
+// Coulomb: |q| <= mu p_N. With q = -a g, p_N = P0 + a (s / c) g2, P0 =
+// (1 + e) v_x / c, this is a (|g| - mu (s/c) g2) <= mu P0, so
+//   a <= mu P0 / (|g| - mu (s/c) g2)   when |g| - mu (s/c) g2 > 0
+// (otherwise the friction raises its own normal impulse faster than it
+// grows, and Coulomb sets no bound). When the bound is below 1 the ball
+// slides along the direction of the stopping impulse (as in part 2; for a
+// slip along t1 or t2 alone that is straight against the slip).
+//
+// Energy. Newton's law on the final velocity together with friction can
+// create energy (Kane's paradox; Stronge, "Impact Mechanics", 2000): the
+// extra normal impulse -(s/c) p2 that holds v_x' = -e v_x works against
+// the separating speed. From the energy formula above, the frictionless
+// impulse changes the energy by -1/2 (1 - e^2) v_x^2 and the friction
+// adds
+//   dE_f(a) = -(a - a^2/2) W + a e v_x s g2,   W = w . g = u1^2/(7/2) + w2^2/(5/2).
+// A full stick (a = 1) thus changes the energy by
+//   -1/2 (1 - e^2) v_x^2 - u1^2 / 7 - (R w_y)^2 / 5 + (e v_x s)^2 / 5,
+// which is positive for a ball without topspin driven straight in once
+// e > 1 / sqrt(1 + 2 s^2 / 5) (0.986 at the 63.5 % nose, 0.970 at 70 %).
+// The law does not let the impact create energy: with D = 1/2 (1 - e^2)
+// v_x^2 and L = e v_x s g2, the total change 1/2 W a^2 - (W - L) a - D
+// must stay <= 0, i.e. a <= a+, the quadratic's larger root
+//   a+ = ((W - L) + sqrt((W - L)^2 + 2 W D)) / W
+// (evaluated as 2 D / (sqrt(...) - (W - L)) when W - L < 0, free of
+// cancellation). a+ >= 1 whenever L <= W/2 + D (always when L <= 0: at
+// t = 0, and for a nose above the centre whenever g2 <= 0, i.e. topspin
+// w_y at least e v_x s / R, a rolling ball among them). With e = 1 and a
+// ball without topspin straight in, a+ = 0: no friction at all.
+//
+// New state: v_x' = -e v_x, v_y' = v_y + p1, w' = w + (5/2R) (-p1 s, -p2,
+// p1 c). After a stick the nose's contact point does not slip (u_t' = 0).
+// At t = 0 the law is plain reflection (v_x' = -e v_x) with the sphere's
+// Coulomb friction at its equator: p1 = -sign(u1) min(u1 / (7/2), mu (1 +
+// e) v_x) when w_y = 0. The slate's reaction p_N s - p2 c is not checked
+// for sign: a ball that friction would lift is kept on the cloth, as in
+// part 2. No guard on v_x' is needed (e >= 0).
+//
 // The mass cancels: every impulse is proportional to it. Only sqrt is
 // used, so results are bit-identical wherever IEEE doubles are (the
 // build has -ffp-contract=off).
@@ -194,13 +266,14 @@ std::string_view cushion_model_name(CushionModel m) {
       return "han_2005";
     case CushionModel::mathavan_2010:
       return "mathavan_2010";
+    case CushionModel::impulse_frictional:
+      return "impulse_frictional";
   }
   return "han_2005_v0";
 }
 
 bool parse_cushion_model(std::string_view name, CushionModel& out) {
-  for (CushionModel m :
-       {CushionModel::han_2005_v0, CushionModel::han_2005, CushionModel::mathavan_2010}) {
+  for (const CushionModel m : kCushionModels) {
     if (name == cushion_model_name(m)) {
       out = m;
       return true;
@@ -361,6 +434,37 @@ Local mathavan_2010(Local b, double R, double s, double c, double e, double mu_w
   return b;
 }
 
+/// Part 4: one frictional impulse with the slate's reaction.
+Local impulse_frictional(Local b, double R, double s, double c, double e, double mu) {
+  const double p0 = (1.0 + e) * b.vx / c;  // the frictionless normal impulse
+  // The slip a frictionless impulse would leave, and the stopping impulse -g.
+  const double w1 = b.vy + R * (b.wz * c - b.wx * s);
+  const double w2 = e * b.vx * s - R * b.wy;
+  const double g1 = w1 / 3.5;
+  const double g2 = w2 / 2.5;
+  const double size = std::sqrt(g1 * g1 + g2 * g2);
+  double a = 0.0;
+  if (size > 0.0) {
+    a = 1.0;
+    // Coulomb: a (|g| - mu (s/c) g2) <= mu P0.
+    const double grows = size - mu * (s / c) * g2;
+    if (grows > 0.0 && a * grows > mu * p0) a = mu * p0 / grows;
+    // No energy created: a <= a+, the larger root of
+    // 1/2 W a^2 - (W - L) a - D.
+    const double W = w1 * g1 + w2 * g2;
+    const double L = e * b.vx * s * g2;
+    const double D = 0.5 * (1.0 - e * e) * b.vx * b.vx;
+    const double k = W - L;
+    const double root = std::sqrt(k * k + 2.0 * W * D);
+    const double top = k >= 0.0 ? (k + root) / W : 2.0 * D / (root - k);
+    if (a > top) a = top;
+  }
+  const double p1 = -a * g1;
+  const double p2 = -a * g2;
+  const double q = 2.5 / R;
+  return {-e * b.vx, b.vy + p1, b.wx - q * s * p1, b.wy - q * p2, b.wz + q * c * p1};
+}
+
 }  // namespace
 
 CushionImpact cushion_impact(Vec2 v, Vec3 w, Vec2 n, double mass, double radius,
@@ -391,6 +495,9 @@ CushionImpact cushion_impact(Vec2 v, Vec3 w, Vec2 n, double mass, double radius,
       break;
     case CushionModel::mathavan_2010:
       out = mathavan_2010(in, R, s, c, e, mu, params.cloth_friction);
+      break;
+    case CushionModel::impulse_frictional:
+      out = impulse_frictional(in, R, s, c, e, mu);
       break;
   }
 

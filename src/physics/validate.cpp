@@ -135,8 +135,7 @@ std::optional<ScenarioError> check_ball(const Scenario& s, std::size_t i) {
 /// The cushion parameters (pool model; the defaults pass on any table).
 std::optional<ScenarioError> check_cushion(const Scenario& s) {
   const CushionParams& c = s.table.cushion;
-  if (c.model != CushionModel::han_2005_v0 && c.model != CushionModel::han_2005 &&
-      c.model != CushionModel::mathavan_2010) {
+  if (!is_cushion_model(c.model)) {
     return ScenarioError{"table.cushion_model", "unknown cushion model"};
   }
   if (!(std::isfinite(c.height) && c.height >= 0.0)) {
