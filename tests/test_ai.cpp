@@ -109,6 +109,7 @@ TEST(AiShotKind, Names) {
   EXPECT_EQ(to_string(ShotKind::combination), "combination");
   EXPECT_EQ(to_string(ShotKind::safety), "safety");
   EXPECT_EQ(to_string(ShotKind::break_shot), "break_shot");
+  EXPECT_EQ(to_string(ShotKind::jump), "jump");
 }
 
 TEST(AiPlayer, PotsAStraightInBall) {
@@ -230,6 +231,93 @@ TEST(AiPlayer, FindsTheBankWhenEveryDirectPotIsBlocked) {
   EXPECT_EQ(out.facts.first_hit, 1);
   EXPECT_GE(pocket_of(out.facts, 1), 0) << out.ruling.text;
   EXPECT_TRUE(out.ruling.turn_continues) << out.ruling.text;
+}
+
+Rules nine_ball_airborne(bool airborne) {
+  GameConfig c;
+  c.game = GameType::nine_ball;
+  c.physics.airborne = airborne;
+  return Rules(c);
+}
+
+/// 9-ball: the 1 0.35 m out of the bottom-right corner, the cue ball
+/// 0.7 m from its ghost ball for a 15 degree cut, and the 2 on the cue
+/// ball's path 0.25 m in front of it; with `blocker` false the 2 is left
+/// off and the line is open.
+GameState jump_table(const Rules& rules, bool blocker) {
+  const int pocket = pocket_index(rules, "bottom_right");
+  const Vec2 c = pocket_centre(rules, pocket);
+  const Vec2 out = unit(Vec2{rules.table().length / 2.0, rules.table().width / 2.0} - c);
+  const Vec2 one = c + out * 0.35;
+  const Vec2 ghost = one + out * (2.0 * kR);
+  const Vec2 cue = ghost + at({0.0, 0.0}, std::atan2(out.y, out.x) * 180.0 / kPi - 15.0, 0.7);
+  GameState s = bare_table(rules, cue);
+  put(s, 1, one);
+  if (blocker) put(s, 2, cue + unit(ghost - cue) * 0.25);
+  put(s, 9, {0.4, 1.0});
+  return s;
+}
+
+/// The top level with a smaller search (jumps on, as in the level).
+AiLevel small_champion() {
+  AiLevel l = ai_level("champion");
+  l.candidates = 8;
+  l.samples = 16;
+  l.lookahead = false;
+  l.centre_aim = false;
+  l.threads = 1;
+  return l;
+}
+
+TEST(AiJump, TheTopLevelJumpsTheBallInFrontOfTheCueBall) {
+  // The direct pot of the 1 is blocked by the 2 just in front of the cue
+  // ball (kicks off a rail are left, none of them easy). With balls that
+  // may leave the cloth the champion jumps the 2: an elevated stroke
+  // that, played without noise, flies, hits the 1 first and pots it with
+  // no foul.
+  const Rules rules = nine_ball_airborne(true);
+  const GameState s = jump_table(rules, true);
+  const auto player = make_ai_player(small_champion());
+  const Action a = decide_legal(*player, rules, s);
+  ASSERT_TRUE(std::holds_alternative<Shoot>(a));
+  const Shoot& shot = std::get<Shoot>(a);
+  EXPECT_GT(shot.strike.theta, 20.0);
+  const Outcome out = rules.apply(s, a);
+  EXPECT_EQ(out.facts.first_hit, 1) << describe(out);
+  EXPECT_EQ(pocket_of(out.facts, 1), pocket_index(rules, "bottom_right")) << describe(out);
+  EXPECT_TRUE(out.ruling.fouls.empty()) << out.ruling.text;
+  bool flew = false;
+  for (const Event& e : out.events) flew = flew || (e.type == EventType::ball_slate && e.ball == 0);
+  EXPECT_TRUE(flew) << describe(out);
+}
+
+TEST(AiJump, NoJumpOnTheClothOrBelowTheLevelsThatMayJump) {
+  // The same table with balls on the cloth, or a level that does not
+  // jump (club): a level stroke, and a legal action.
+  for (const bool airborne : {false, true}) {
+    const Rules rules = nine_ball_airborne(airborne);
+    const GameState s = jump_table(rules, true);
+    const auto player = make_ai_player(airborne ? small_level("club") : small_champion());
+    const Action a = decide_legal(*player, rules, s);
+    ASSERT_TRUE(std::holds_alternative<Shoot>(a)) << airborne;
+    EXPECT_EQ(std::get<Shoot>(a).strike.theta, 0.0) << airborne;
+  }
+  EXPECT_FALSE(ai_level("club").generation.jumps);
+  EXPECT_TRUE(ai_level("champion").generation.jumps);
+}
+
+TEST(AiJump, AnOpenLineIsPlayedStraight) {
+  // Without the 2 the straight pot is open: the champion plays it level,
+  // and it pots.
+  const Rules rules = nine_ball_airborne(true);
+  const GameState s = jump_table(rules, false);
+  const auto player = make_ai_player(small_champion());
+  const Action a = decide_legal(*player, rules, s);
+  ASSERT_TRUE(std::holds_alternative<Shoot>(a));
+  EXPECT_EQ(std::get<Shoot>(a).strike.theta, 0.0);
+  const Outcome out = rules.apply(s, a);
+  EXPECT_GE(pocket_of(out.facts, 1), 0) << describe(out);
+  EXPECT_TRUE(out.ruling.fouls.empty()) << out.ruling.text;
 }
 
 TEST(AiPlayer, PlaysASafetyWhenNothingIsMakeable) {

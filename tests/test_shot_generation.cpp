@@ -440,6 +440,125 @@ TEST(ShotGenAll, PostBreakTablesCheckedDeterministicAndTimed) {
   }
 }
 
+// ---------------------------------------------------------------------------
+// Jump shots (physics.airborne)
+
+Rules nine_ball_rules_airborne(bool airborne) {
+  GameConfig c;
+  c.game = GameType::nine_ball;
+  c.physics.airborne = airborne;
+  return Rules(c);
+}
+
+/// 9-ball: the 1 0.35 m out of the bottom-right corner, the cue ball
+/// 0.7 m from its ghost ball for a 15 degree cut, and the 2 on the cue
+/// ball's path 0.25 m in front of it: every path to the 1 passes within
+/// 2R of the 2, so no direct pot (nor bank, nor combination) is open.
+GameState jump_table(const Rules& rules, int pocket) {
+  const Vec2 c = pocket_centre(rules, pocket);
+  const Vec2 out = unit(Vec2{rules.table().length / 2.0, rules.table().width / 2.0} - c);
+  const Vec2 one = c + out * 0.35;
+  const Vec2 ghost = one + out * (2.0 * kR);
+  const Vec2 cue = ghost + rotate_deg(out, -15.0) * 0.7;
+  GameState s = bare_table(rules, cue);
+  put(s, 1, one);
+  put(s, 2, cue + unit(ghost - cue) * 0.25);
+  put(s, 9, {0.4, 1.0});
+  return s;
+}
+
+ShotGenOptions jump_options() {
+  ShotGenOptions o;
+  o.jumps = true;
+  o.speed_factors = {1.0};
+  o.spins = {0.0};
+  return o;
+}
+
+TEST(ShotGenJump, JumpsTheBallInFrontOfTheCueBallWithAirbornePhysics) {
+  const Rules rules = nine_ball_rules_airborne(true);
+  const int pocket = pocket_index(rules, "bottom_right");
+  const GameState s = jump_table(rules, pocket);
+  const std::vector<CandidateShot> cands = generate_shots(rules, s, jump_options());
+  expect_well_formed(rules, s, cands);
+  EXPECT_FALSE(find_kind(cands, ShotKind::direct).has_value());
+  int jumps = 0;
+  for (const CandidateShot& c : cands) {
+    if (c.kind != ShotKind::jump) continue;
+    ++jumps;
+    std::printf("[ShotGen] jump: theta %.0f speed %.2f phi %.2f prior %.3f\n", c.shot.strike.theta,
+                c.shot.strike.speed, c.shot.strike.phi, c.prior);
+    EXPECT_EQ(c.target, 1);
+    EXPECT_EQ(c.first, 1);
+    EXPECT_GT(c.shot.strike.theta, 20.0) << what(c);
+    expect_pots(rules, s, c);
+    // The cue ball really flew: struck down into the slate, it is thrown
+    // back up at vz = e_s (J/m) sin(theta), with J/m = (1 + e_tip) V /
+    // (1 + m/M) for a centre hit (Alciatore TP A-30, the cue.cpp
+    // derivation), and is in flight for 2 vz / g before it lands
+    // (ballistic flight). Its apex vz^2 / (2g) is above 2R: it can pass
+    // over a ball, and it lands before reaching the 1.
+    const Outcome o = rules.apply(s, Action{c.shot});
+    const GameConfig& cfg = rules.config();
+    const PhysicsParams ph = default_physics(Model::pool);
+    const CueParams cue;
+    const double jm =
+        (1.0 + cue.tip_restitution) * c.shot.strike.speed / (1.0 + cfg.ball_mass / cue.mass);
+    const double vz = ph.slate_restitution * jm * std::sin(c.shot.strike.theta * kPi / 180.0);
+    EXPECT_GT(vz * vz / (2.0 * ph.gravity), 2.0 * kR) << what(c);
+    double landed = -1.0;
+    double first_hit = -1.0;
+    for (const Event& e : o.events) {
+      if (landed < 0.0 && e.type == EventType::ball_slate && e.ball == 0) landed = e.time;
+      if (first_hit < 0.0 && e.type == EventType::ball_ball) first_hit = e.time;
+    }
+    ASSERT_GT(landed, 0.0) << what(c) << ": " << describe(o);
+    EXPECT_NEAR(landed, 2.0 * vz / ph.gravity, 1e-6) << what(c);
+    EXPECT_LT(landed, first_hit) << what(c);
+  }
+  EXPECT_GT(jumps, 0);
+}
+
+TEST(ShotGenJump, NoJumpsWithoutAirbornePhysicsOrWithoutTheOption) {
+  const int pocket = pocket_index(nine_ball_rules(), "bottom_right");
+  {
+    // Balls on the cloth: the same table has no jump and no direct pot.
+    const Rules rules = nine_ball_rules_airborne(false);
+    const GameState s = jump_table(rules, pocket);
+    const std::vector<CandidateShot> cands = generate_shots(rules, s, jump_options());
+    expect_well_formed(rules, s, cands);
+    EXPECT_FALSE(find_kind(cands, ShotKind::jump).has_value());
+    EXPECT_FALSE(find_kind(cands, ShotKind::direct).has_value());
+    for (const CandidateShot& c : cands) EXPECT_EQ(c.shot.strike.theta, 0.0) << what(c);
+  }
+  {
+    // Airborne physics, jumps not asked for (the default).
+    const Rules rules = nine_ball_rules_airborne(true);
+    const GameState s = jump_table(rules, pocket);
+    ShotGenOptions o = jump_options();
+    o.jumps = false;
+    for (const CandidateShot& c : generate_shots(rules, s, o)) {
+      EXPECT_NE(c.kind, ShotKind::jump) << what(c);
+      EXPECT_EQ(c.shot.strike.theta, 0.0) << what(c);
+    }
+  }
+}
+
+TEST(ShotGenJump, NoJumpWhereTheLineIsOpen) {
+  // The same table without the 2: the straight pot is open, and no jump
+  // is generated for it (nor for any other pot of the 1).
+  const Rules rules = nine_ball_rules_airborne(true);
+  const int pocket = pocket_index(rules, "bottom_right");
+  GameState s = jump_table(rules, pocket);
+  s.on_table[2] = 0;
+  const std::vector<CandidateShot> cands = generate_shots(rules, s, jump_options());
+  expect_well_formed(rules, s, cands);
+  EXPECT_FALSE(find_kind(cands, ShotKind::jump).has_value());
+  const std::optional<CandidateShot> d = find_kind(cands, ShotKind::direct, 1, pocket);
+  ASSERT_TRUE(d.has_value());
+  expect_pots(rules, s, *d);
+}
+
 TEST(ShotGenAll, NothingOutsideAShotPhase) {
   const Rules rules = nine_ball_rules();
   const GameState s = rules.start(1, 0);  // a break is not generated here

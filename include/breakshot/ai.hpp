@@ -24,6 +24,7 @@ enum class ShotKind : std::uint8_t {
   combination,  ///< the cue ball hits `first`, which drives `target` into `pocket`
   safety,       ///< no pot intended: a legal hit that leaves the opponent badly
   break_shot,   ///< the opening break
+  jump,         ///< the cue ball flies over the balls in its way; `target` into `pocket`
 };
 std::string_view to_string(ShotKind k);
 
@@ -49,6 +50,12 @@ struct ShotGenOptions {
   bool kicks = true;
   bool combinations = true;
   bool safeties = true;
+  /// Jump shots over the balls that block a direct pot, tried only when
+  /// the game's physics lets balls leave the cloth
+  /// (GamePhysics::airborne); off, nothing changes.
+  bool jumps = false;
+  /// Cue elevations (degrees) tried for jump shots.
+  std::vector<double> jump_thetas{25.0, 35.0, 45.0, 55.0};
   /// Cue speeds tried per aim line, as multiples of the least speed that
   /// carries the target to the pocket (e.g. {1.0, 1.6, 2.4}).
   std::vector<double> speed_factors{1.0, 1.6, 2.4};
@@ -83,7 +90,10 @@ struct ShotGenOptions {
 /// can then be pocketed) have their aim refined on noiseless simulations
 /// of the engine, so throw, squirt and cushion physics are accounted for;
 /// a pot is kept only if its noiseless play pockets the target in the
-/// pocket with no foul. Blocked paths are rejected. Safeties and kicks
+/// pocket with no foul. Blocked paths are rejected, except that with
+/// `options.jumps` and airborne physics a direct pot blocked by balls
+/// near the cue ball is tried as jump shots (elevated strokes whose
+/// flight clears them). Safeties and kicks
 /// that merely make a legal hit are added when `options.safeties`. Every
 /// candidate passes Rules::check. Deterministic.
 std::vector<CandidateShot> generate_shots(const Rules& rules, const GameState& state,

@@ -85,6 +85,8 @@ std::string_view to_string(ShotKind k) {
       return "safety";
     case ShotKind::break_shot:
       return "break_shot";
+    case ShotKind::jump:
+      return "jump";
   }
   return "unknown";
 }
@@ -198,6 +200,7 @@ ShotGenOptions lookahead_generation(const ShotGenOptions& base) {
   o.kicks = false;
   o.combinations = false;
   o.safeties = false;
+  o.jumps = false;
   o.speed_factors = {1.0, 1.7};
   o.spins = {-0.3, 0.0, 0.3};
   o.sides = {};
@@ -908,6 +911,7 @@ AiLevel make_level(std::string_view name) {
     // more than the depth of their search (with the same noise the
     // champion won only 55 of 100 9-ball games).
     l.noise = parse_noise("1.25x");
+    l.generation.jumps = true;
     l.candidates = 24;
     l.samples = 24;
   } else if (name == "champion") {
@@ -924,6 +928,7 @@ AiLevel make_level(std::string_view name) {
     l.generation.safety_turns = {0.0, 12.0, 25.0, 38.0, 50.0, 62.0};
     l.generation.safety_speeds = {0.8, 1.2, 1.7, 2.4, 3.4};
     l.generation.safety_spins = {-0.4, 0.0, 0.4};
+    l.generation.jumps = true;
     l.candidates = 60;
     l.samples = 128;
     l.lookahead = true;

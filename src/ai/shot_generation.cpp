@@ -26,6 +26,13 @@
 // used for the last aim correction is simply continued to rest, so
 // verification costs no extra simulation.
 //
+// Jump shots (only with physics.airborne, and only where the level asks
+// for them) are direct pots whose cue ball path is blocked by balls near
+// it: the flight's closed form (jump_lines) gives, for each elevation
+// tried, the range of cue speeds that lift the cue ball over the blockers
+// and bring it down before the ghost ball, and the engine aims and checks
+// them like any other pot.
+//
 // Safeties are strikes at legal balls (full to thin, soft to medium) and,
 // when needed, one-rail kicks, all played out; a legal hit with no foul
 // and no scratch is kept and ranked by how little the opponent is left.
@@ -41,6 +48,7 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
+#include "breakshot/airborne.hpp"
 #include "breakshot/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/pool.hpp"
@@ -74,6 +82,18 @@ constexpr double kMinCueSpeed = 0.8;          // m/s
 constexpr double kMaxPotSpeed = 9.0;          // m/s: faster least speeds are not tried
 constexpr double kAcceptMiss = 0.0008;        // m: aim good enough, stop refining
 constexpr double kMaxStep = 2.0;              // degrees a secant step may turn the aim
+// Jump shots (physics.airborne): the cue ball's centre passes a blocker
+// this much beyond 2R; blockers farther along the path than
+// kMaxJumpBlocker are not jumped (a flight long enough to clear them
+// would overshoot most pots); the least cue speed that clears is raised
+// by kJumpSpeedMargin, about ten times the tournament speed noise (0.075
+// m/s) at the 2-3 m/s that short jumps take, as a share; and a jump's
+// prior is its aim prior times kJumpPrior, for what the aim slope cannot
+// see (elevation and speed errors move the landing).
+constexpr double kJumpClearance = 0.004;  // m
+constexpr double kMaxJumpBlocker = 0.6;   // m
+constexpr double kJumpSpeedMargin = 1.1;
+constexpr double kJumpPrior = 0.6;
 // Effective phi noise (degrees) for priors: tournament phi noise 0.125
 // plus about as much again from tip-offset squirt and speed-dependent throw.
 constexpr double kSigmaAim = 0.17;
@@ -118,13 +138,15 @@ struct Line {
   int first = -1;
   int target = -1;
   int pocket = -1;
-  double phi = 0.0;          ///< geometric aim, degrees
-  double speed = 0.0;        ///< least cue speed estimate, m/s
-  double room = 0.0;         ///< m of room at the pocket
-  double geo_prior = 0.0;    ///< prior from geometry alone, for ordering
-  double prior_scale = 1.0;  ///< what the slope cannot see (cushion, kicks)
-  Watch watch;               ///< the target's run into the pocket
-  std::optional<Watch> pre;  ///< kicks: the cue ball's run off the rail first
+  double phi = 0.0;                 ///< geometric aim, degrees
+  double speed = 0.0;               ///< least cue speed estimate, m/s
+  double room = 0.0;                ///< m of room at the pocket
+  double geo_prior = 0.0;           ///< prior from geometry alone, for ordering
+  double prior_scale = 1.0;         ///< what the slope cannot see (cushion, kicks)
+  Watch watch;                      ///< the target's run into the pocket
+  std::optional<Watch> pre;         ///< kicks: the cue ball's run off the rail first
+  double theta = 0.0;               ///< jumps: the cue's elevation, degrees
+  std::vector<double> jump_speeds;  ///< jumps: the cue speeds tried, m/s
 };
 
 class Generator {
@@ -170,6 +192,15 @@ class Generator {
         if (std::optional<Line> l = direct_line(t, static_cast<int>(k))) {
           direct_ok[static_cast<std::size_t>(t)][k] = true;
           lines.push_back(*l);
+        }
+      }
+    }
+    // Jumps over the balls that block a direct pot (physics.airborne).
+    if (opt_.jumps && base_.physics.airborne) {
+      for (int t : targets_) {
+        for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
+          if (direct_ok[static_cast<std::size_t>(t)][k]) continue;
+          for (Line& l : jump_lines(t, static_cast<int>(k))) lines.push_back(std::move(l));
         }
       }
     }
@@ -427,6 +458,128 @@ class Generator {
     return l;
   }
 
+  /// The flight of a cue ball struck at elevation theta (degrees) with a
+  /// centre hit, per unit cue speed: its speed along the cloth and its
+  /// vertical speed once the slate has thrown it back up. The strike is
+  /// linear in the cue speed (cue.cpp) and so is the slate's impulse
+  /// (fixed_contact_impact: restitution on the normal part, friction
+  /// capped at the impulse that stops the slip), so a cue speed V gives
+  /// V times both.
+  struct Flight {
+    double along = 0.0;  ///< m/s per m/s of cue speed
+    double up = 0.0;     ///< m/s per m/s of cue speed
+  };
+  Flight flight(double theta) const {
+    CueStrike k;
+    k.speed = 1.0;
+    k.theta = theta;
+    const StrikeResult sr = strike(k, m_, R_, base_.cue ? base_.cue->params : CueParams{});
+    const Motion3 in{{sr.velocity.x, sr.velocity.y, sr.vertical}, sr.spin};
+    const Motion3 out = fixed_contact_impact(
+        in, {0.0, 0.0, 1.0}, R_, base_.physics.slate_restitution, base_.physics.sliding_friction);
+    return {std::sqrt(out.velocity.x * out.velocity.x + out.velocity.y * out.velocity.y),
+            out.velocity.z};
+  }
+
+  /// Jump shots at t into `pocket` (physics.airborne): when the cue
+  /// ball's straight path to the ghost ball is blocked by other balls,
+  /// one line per elevation of opt_.jump_thetas at which some cue speed
+  /// lifts it over every one of them and brings it down before the ghost
+  /// ball. The flight from the slate is the closed form
+  ///   z(x) = k x - g x^2 / (2 v^2),   k = vz / v,
+  /// with v and vz the speeds along the cloth and up (Flight); a blocker
+  /// whose centre is s along the path and l to its side is cleared when
+  /// the centres stay 2R (and a margin) apart,
+  ///   z(x)^2 >= (2R)^2 - l^2 - (x - s)^2,
+  /// checked at points across the blocker, which bounds the cue speed
+  /// from below; landing (z = 0 at x = 2 k v^2 / g) at least R short of
+  /// the ghost ball bounds it from above. The speeds tried lie in that
+  /// range; the engine then aims each one and keeps what pots.
+  std::vector<Line> jump_lines(int t, int pocket) const {
+    std::vector<Line> out;
+    const std::optional<Approach> ap = approach(layout_, pos(t), pocket, t);
+    if (!ap) return out;
+    const Vec2 b = pos(t);
+    const Vec2 ghost = b - ap->dir * (2.0 * R_);
+    const Vec2 cue = pos(0);
+    const double d1 = norm(ghost - cue);
+    if (d1 < 1e-6 || !fits(ghost)) return out;
+    const Vec2 u = (ghost - cue) / d1;
+    const double cos_cut = dot(u, ap->dir);
+    if (cos_cut < kMaxCutCos) return out;
+    if (!walls_clear(cue, ghost) || balls_clear(layout_, cue, ghost, t)) return out;
+    // The balls in the way, as balls_clear finds them: their distance
+    // along the path and to its side.
+    struct Blocker {
+      double s = 0.0;
+      double l = 0.0;
+    };
+    std::vector<Blocker> blockers;
+    const double reach = 2.0 * R_ + kJumpClearance;
+    for (std::size_t n = 1; n < layout_.on.size(); ++n) {
+      if (!layout_.on[n] || static_cast<int>(n) == t) continue;
+      const Vec2 p = layout_.pos[n];
+      if (dot(p - cue, u) <= 0.0 && norm(p - cue) >= 2.0 * R_) continue;
+      if (segments_distance(p, p, cue, ghost) >= 2.0 * R_ + ai::kBallMargin) continue;
+      const double s = dot(p - cue, u);
+      if (s > kMaxJumpBlocker) return out;  // too far off for a jump to clear
+      blockers.push_back({s, std::abs(cross(u, p - cue))});
+    }
+    if (blockers.empty()) return out;
+    const double g = base_.physics.gravity;
+    const double vo = start_speed(kArrival, ap->length);
+    const double need = start_speed(vo / transfer(cos_cut), d1);  // cue ball speed at the start
+    const double geo = prior_from(ap->room, slope_estimate(d1, ap->length, cos_cut));
+    for (double theta : opt_.jump_thetas) {
+      const Flight f = flight(theta);
+      if (!(f.along > 0.0) || !(f.up > 0.0)) continue;
+      const double k = f.up / f.along;
+      // Least speed along the cloth (squared) that clears every blocker.
+      double v2_lo = 0.0;
+      bool possible = true;
+      for (const Blocker& bl : blockers) {
+        const double w = std::sqrt(std::max(reach * reach - bl.l * bl.l, 0.0));
+        constexpr int kPoints = 16;
+        for (int i = 0; i <= kPoints && possible; ++i) {
+          const double x = bl.s - w + 2.0 * w * i / kPoints;
+          const double h2 = reach * reach - bl.l * bl.l - (x - bl.s) * (x - bl.s);
+          if (h2 <= 0.0) continue;
+          const double spare = k * x - std::sqrt(h2);
+          if (!(x > 0.0) || !(spare > 0.0)) {
+            possible = false;
+          } else {
+            v2_lo = std::max(v2_lo, g * x * x / (2.0 * spare));
+          }
+        }
+      }
+      if (!possible) continue;
+      // Most speed that still lands R short of the ghost ball.
+      const double v2_hi = g * (d1 - R_) / (2.0 * k);
+      // Cue speeds: the least one with a margin for the speed noise, and
+      // the middle of the range, each at least what the pot needs.
+      const double lo = std::max(std::sqrt(v2_lo) * kJumpSpeedMargin, need) / f.along;
+      const double hi = std::sqrt(std::max(v2_hi, 0.0)) / f.along;
+      if (!(lo < hi) || lo > kMaxPotSpeed) continue;
+      Line l;
+      l.kind = ShotKind::jump;
+      l.first = t;
+      l.target = t;
+      l.pocket = pocket;
+      l.phi = phi_of(u);
+      l.theta = theta;
+      l.jump_speeds.push_back(lo);
+      const double mid = std::min(0.5 * (lo + hi), kMaxPotSpeed);
+      if (mid > 1.05 * lo) l.jump_speeds.push_back(mid);
+      l.speed = lo;
+      l.room = ap->room;
+      l.geo_prior = kJumpPrior * geo;
+      l.prior_scale = kJumpPrior;
+      l.watch = Watch{index_of(t), false, 0, ap->aim, ap->dir};
+      out.push_back(std::move(l));
+    }
+    return out;
+  }
+
   /// Balls a combination off first ball f may pocket: 9-ball, any other
   /// ball (a legal hit on the lowest makes any pot count); 8-ball, another
   /// legal target (so the call is a ball of the shooter's group).
@@ -498,12 +651,13 @@ class Generator {
   // -------------------------------------------------------------------------
   // Simulation
 
-  Simulation start(double phi, double speed, double b, double a = 0.0) const {
+  Simulation start(double phi, double speed, double b, double a = 0.0, double theta = 0.0) const {
     Scenario sc = base_;
     sc.cue->strike.speed = speed;
     sc.cue->strike.phi = phi;
     sc.cue->strike.b = b;
     sc.cue->strike.a = a;
+    sc.cue->strike.theta = theta;
     ++simulations_;
     return Simulation(sc);
   }
@@ -570,6 +724,7 @@ class Generator {
     std::vector<int> pocketed;
     std::vector<int> pocket_of;
     Layout after;
+    bool off_table = false;  ///< some ball left the table
   };
 
   Judged judge(Simulation& sim) const {
@@ -588,8 +743,11 @@ class Generator {
     for (std::size_t k = 0; k < numbers_.size(); ++k) {
       const auto n = static_cast<std::size_t>(numbers_[k]);
       const BallState st = sim.ball(k);
-      if (st.state == MotionState::pocketed) {
+      if (st.state == MotionState::pocketed || st.state == MotionState::off_table) {
         j.after.on[n] = 0;
+        // A ball that left the table (physics.airborne) is a foul under
+        // the rules of both games: such a shot is never planned.
+        if (st.state == MotionState::off_table) j.off_table = true;
       } else {
         j.after.pos[n] = st.position;
       }
@@ -599,7 +757,7 @@ class Generator {
         std::find(targets_.begin(), targets_.end(), f.first_hit) != targets_.end();
     const bool scratch = std::find(f.pocketed.begin(), f.pocketed.end(), 0) != f.pocketed.end();
     const bool rail = f.cushion_after_contact || !f.pocketed.empty();
-    j.legal = !miscue && legal_first && !scratch && rail;
+    j.legal = !miscue && legal_first && !scratch && rail && !j.off_table;
     return j;
   }
 
@@ -631,8 +789,8 @@ class Generator {
   /// secant step would leave it), and an aim that gives no measure (the
   /// run ends some other way) is backed off halfway toward the best aim.
   /// At most `iterations` + 2 simulations.
-  std::optional<Refined> refine(double phi0, double speed, double b, const Watch& w,
-                                double slope, int iterations, double a = 0.0) const {
+  std::optional<Refined> refine(double phi0, double speed, double b, const Watch& w, double slope,
+                                int iterations, double a = 0.0, double theta = 0.0) const {
     Refined best;
     bool have = false;
     double best_abs = kInf;
@@ -640,7 +798,7 @@ class Generator {
     std::optional<double> below, above;             // phi with miss < 0, > 0
     double phi = phi0;
     for (int it = 0; it < iterations + 2; ++it) {
-      Simulation sim = start(phi, speed, b, a);
+      Simulation sim = start(phi, speed, b, a, theta);
       const Probe p = follow(sim, w);
       if (!p.ok) {
         if (!have) return std::nullopt;
@@ -679,7 +837,7 @@ class Generator {
     if (slope == 0.0) {
       // Right on the first try: one more run for the slope, which the
       // variants and the prior need.
-      Simulation sim = start(best.phi + 0.05, speed, b, a);
+      Simulation sim = start(best.phi + 0.05, speed, b, a, theta);
       const Probe p = follow(sim, w);
       if (p.ok) slope = (p.miss - best.probe.miss) / 0.05;
     }
@@ -687,7 +845,37 @@ class Generator {
     return best;
   }
 
+  /// A jump line: each of its speeds at its elevation, centre ball, the
+  /// aim refined on the engine; kept when the noiseless play pots.
+  void play_jump(const Line& l, std::vector<CandidateShot>& out) const {
+    for (double speed : l.jump_speeds) {
+      std::optional<Refined> r =
+          refine(l.phi, speed, 0.0, l.watch, 0.0, opt_.refine_iterations + 2, 0.0, l.theta);
+      if (!r || !r->sim || !r->probe.reached || r->slope == 0.0) continue;
+      const Judged j = judge(*r->sim);
+      if (!pot_made(j, l)) continue;
+      CandidateShot c;
+      c.kind = l.kind;
+      c.first = l.first;
+      c.target = l.target;
+      c.pocket = l.pocket;
+      c.shot.strike.speed = speed;
+      c.shot.strike.phi = r->phi;
+      c.shot.strike.theta = l.theta;
+      c.shot.call = Call{l.target, l.pocket};
+      if (!la_.call && rules_.check(state_, Action{c.shot})) c.shot.call.reset();
+      c.prior = std::clamp(l.prior_scale * prior_from(l.room, r->slope), 0.0, 1.0);
+      if (rules_.check(state_, Action{c.shot})) continue;
+      c.leave = leave(j, l);
+      out.push_back(c);
+    }
+  }
+
   void play_line(const Line& l, std::vector<CandidateShot>& out) const {
+    if (l.kind == ShotKind::jump) {
+      play_jump(l, out);
+      return;
+    }
     double phi = l.phi;
     double speed = l.speed;
     // Kicks: first bring the cue ball off the rail onto the ghost ball.
