@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -175,7 +176,7 @@ TEST(WebApi, ErrorsNameTheField) {
       {R"({"game": "eight_ball", "players": ["human", "club"], "breaker": 2})", "breaker:"},
       {R"({"game": "eight_ball", "players": ["human", "club"], "table": "6ft"})", "table:"},
       {R"({"game": "eight_ball", "players": ["human", "club"], "ai_budget": 0})", "ai_budget:"},
-      {R"({"game": "eight_ball", "players": ["human", "club"], "colour": "red"})", "colour: unknown field (known: game, table, seed, breaker, players, ai_budget)"},
+      {R"({"game": "eight_ball", "players": ["human", "club"], "colour": "red"})", "colour: unknown field (known: game, table, seed, breaker, players, ai_budget, physics)"},
       {R"({"game": "eight_ball", "players": ["human", "club"], "seed": "1", "seed": "2"})", "seed: duplicate key"},
       {R"({"game": "eight_ball", "players": ["human", "club"], "table": "6ft"})",
        "table: unknown table size \"6ft\" (expected \"7ft\", \"8ft\" or \"9ft\")"},
@@ -452,13 +453,27 @@ void expect_frame_data_is(const double* d, const json& f, const std::string& wha
   EXPECT_TRUE(same_bits(d[5], f["momentum"][0].get<double>())) << what;
   EXPECT_TRUE(same_bits(d[6], f["momentum"][1].get<double>())) << what;
   ASSERT_EQ(d[7], static_cast<double>(f["balls"].size())) << what;
-  for (std::size_t i = 0; i < f["balls"].size(); ++i) {
+  const std::size_t n = f["balls"].size();
+  // The flight block's flag: 1 exactly when the JSON's balls carry z and
+  // their place (10 numbers, else 8).
+  const double flag = d[8 + 8 * n];
+  ASSERT_TRUE(flag == 0.0 || flag == 1.0) << what;
+  for (std::size_t i = 0; i < n; ++i) {
     const json& b = f["balls"][i];
     const double* db = d + 8 + 8 * i;
-    ASSERT_EQ(b.size(), 8U);
+    ASSERT_EQ(b.size(), flag != 0.0 ? 10U : 8U) << what;
     EXPECT_EQ(db[2], static_cast<double>(b[2].get<int>())) << what << " ball " << i;
     for (const std::size_t k : {0U, 1U, 3U, 4U, 5U, 6U, 7U}) {
       EXPECT_TRUE(same_bits(db[k], b[k].get<double>())) << what << " ball " << i << " [" << k << "]";
+    }
+    const double* fl = d + 8 + 8 * n + 1 + 2 * i;
+    if (flag != 0.0) {
+      EXPECT_TRUE(same_bits(fl[0], b[8].get<double>())) << what << " ball " << i << " z";
+      EXPECT_EQ(fl[1], static_cast<double>(b[9].get<int>())) << what << " ball " << i << " place";
+    } else {
+      // Balls on the cloth or in pockets: no height.
+      EXPECT_EQ(fl[0], 0.0) << what << " ball " << i;
+      EXPECT_EQ(fl[1], 0.0) << what << " ball " << i;
     }
   }
 }
@@ -490,6 +505,115 @@ TEST(WebApi, FrameDataIsTheJsonFramesNumbers) {
     }
     EXPECT_EQ(saw_incomplete, name.find("max_events") != std::string::npos) << name;
   }
+}
+
+/// A game of 8-ball on a 9 ft table between two humans whose physics lets
+/// balls leave the cloth (or not), with the cue ball placed at (0.6,
+/// 0.635) and shot straight up the table at 3 m/s with the cue raised 45
+/// degrees: a jump shot when the physics allows it.
+GamePtr jump_game(bool airborne) {
+  GamePtr g = new_game(std::string(R"({"game": "eight_ball", "table": "9ft", "seed": "7",
+      "players": ["human", "human"], "physics": {"airborne": )") +
+                       (airborne ? "true" : "false") + "}}");
+  if (g == nullptr) return g;
+  act(g.get(), place_json(0.6, 0.635));
+  act(g.get(), shoot_json(R"("speed": 3.0, "phi": 0, "theta": 45, "a": 0, "b": 0)"));
+  return g;
+}
+
+TEST(WebApi, JumpShotFramesCarryTheCueBallsFlight) {
+  GamePtr g = jump_game(true);
+  ASSERT_NE(g, nullptr);
+  // The game's physics is in its record and its link.
+  EXPECT_TRUE(J(record_of(g.get()).c_str())["physics"]["airborne"].get<bool>());
+  GamePtr again(bs_game_from_link(link_of(g.get()).c_str()));
+  ASSERT_NE(again, nullptr) << bs_last_error();
+  EXPECT_EQ(record_of(again.get()), record_of(g.get()));
+
+  PlaybackPtr pb(bs_game_shot_playback(g.get(), 1));
+  PlaybackPtr twin(bs_game_shot_playback(g.get(), 1));
+  ASSERT_NE(pb, nullptr) << bs_last_error();
+  // Frames every 5 ms over the first half second: the cue ball (index 0
+  // of the shot's balls, the cue ball first) rises and falls.
+  constexpr double kDt = 0.005;
+  std::vector<double> z;
+  std::vector<int> place;
+  double top = 0.0;
+  for (int k = 0; k <= 100; ++k) {
+    const double t = kDt * k;
+    const json f = J(bs_playback_frame(pb.get(), t));
+    ASSERT_EQ(error_of(f.dump().c_str()), "") << t;
+    expect_frame_data_is(bs_playback_frame_data(twin.get(), t), f, "jump t=" + std::to_string(t));
+    const json& cue = f["balls"][0];
+    if (cue.size() == 10) {
+      z.push_back(cue[8].get<double>());
+      place.push_back(cue[9].get<int>());
+      EXPECT_EQ(cue[2].get<int>(), 1) << "in flight is on the table (in play) at t=" << t;
+    } else {
+      z.push_back(0.0);
+      place.push_back(0);
+    }
+    top = std::max(top, z.back());
+  }
+  // A flight: at least a few frames in the air, and a height of centimetres
+  // (here only its order).
+  int in_air = 0;
+  for (const int p : place) in_air += p == 1 ? 1 : 0;
+  EXPECT_GE(in_air, 10);
+  EXPECT_GT(top, 0.02);
+  EXPECT_LT(top, 1.0);
+  // In flight the height is a parabola under gravity: the second difference
+  // of z at a step dt is -g dt^2 (g = 9.81 m/s^2, the pool default), as for
+  // any projectile without drag, between events (a bounce on the slate
+  // starts another parabola).
+  std::vector<double> events;
+  const json reply = J(bs_playback_events(pb.get(), 0));
+  for (const json& e : reply["events"]) {
+    events.push_back(e["time"].get<double>());
+  }
+  const auto event_between = [&](double t0, double t1) {
+    return std::any_of(events.begin(), events.end(), [&](double t) { return t > t0 && t < t1; });
+  };
+  int parabolas = 0;
+  for (std::size_t k = 0; k + 2 < z.size(); ++k) {
+    if (place[k] != 1 || place[k + 1] != 1 || place[k + 2] != 1) continue;
+    if (event_between(kDt * static_cast<double>(k), kDt * static_cast<double>(k + 2))) continue;
+    const double second = z[k] - 2.0 * z[k + 1] + z[k + 2];
+    EXPECT_NEAR(second, -9.81 * kDt * kDt, 1e-9) << "k=" << k;
+    ++parabolas;
+  }
+  EXPECT_GE(parabolas, 5);
+}
+
+TEST(WebApi, JumpShotOnTheClothKeepsEightNumbersPerBall) {
+  // The same strike where balls stay on the cloth (GamePhysics's default,
+  // and a game config without "physics"): no frame carries heights.
+  for (const bool explicit_off : {true, false}) {
+    GamePtr g = explicit_off ? jump_game(false)
+                             : new_game(R"({"game": "eight_ball", "table": "9ft", "seed": "7",
+                                           "players": ["human", "human"]})");
+    ASSERT_NE(g, nullptr);
+    if (!explicit_off) {
+      act(g.get(), place_json(0.6, 0.635));
+      act(g.get(), shoot_json(R"("speed": 3.0, "phi": 0, "theta": 45, "a": 0, "b": 0)"));
+    }
+    EXPECT_FALSE(J(record_of(g.get()).c_str())["physics"].contains("airborne"));
+    PlaybackPtr pb(bs_game_shot_playback(g.get(), 1));
+    ASSERT_NE(pb, nullptr) << bs_last_error();
+    for (int k = 0; k <= 100; ++k) {
+      const json f = J(bs_playback_frame(pb.get(), 0.005 * k));
+      for (const json& b : f["balls"]) ASSERT_EQ(b.size(), 8U) << "t=" << 0.005 * k;
+    }
+  }
+  // A physics option the facade does not know, or not a bool, is refused.
+  EXPECT_EQ(bs_game_new(R"({"game": "eight_ball", "players": ["human", "human"],
+                            "physics": {"airborne": 1}})"),
+            nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "physics.airborne:")) << bs_last_error();
+  EXPECT_EQ(bs_game_new(R"({"game": "eight_ball", "players": ["human", "human"],
+                            "physics": {"gravity": 1}})"),
+            nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "physics")) << bs_last_error();
 }
 
 TEST(WebApi, FrameDataErrorsAreThoseOfTheJsonFrame) {

@@ -233,7 +233,7 @@ inline constexpr std::int64_t kMaxBudget = 1'000'000'000;
 bs::GameType game_type(const json& v, const std::string& path);
 std::string table_size(const json& v, const std::string& path);
 /// bs_game_new's config: {"game", "table", "seed", "breaker", "players",
-/// "ai_budget"}.
+/// "ai_budget", "physics": {"airborne"}}.
 GameConfigInput read_config(const json& doc);
 std::unique_ptr<BsGame> make_game(const GameConfigInput& in);
 

@@ -151,7 +151,7 @@ std::string table_size(const json& v, const std::string& path) {
 }
 
 GameConfigInput read_config(const json& doc) {
-  object(doc, "", {"game", "table", "seed", "breaker", "players", "ai_budget"});
+  object(doc, "", {"game", "table", "seed", "breaker", "players", "ai_budget", "physics"});
   GameConfigInput in;
   in.config.game = game_type(required(doc, "", "game"), "game");
   if (const json* t = find(doc, "table")) in.config.table_size = table_size(*t, "table");
@@ -163,6 +163,15 @@ GameConfigInput read_config(const json& doc) {
   }
   for (std::size_t k = 0; k < 2; ++k) in.seats[k] = seat_name(players[k], index_path("players", k));
   if (const json* n = find(doc, "ai_budget")) in.ai_budget = integer(*n, "ai_budget", 1, kMaxBudget);
+  if (const json* ph = find(doc, "physics")) {
+    // The choices a game may change from GamePhysics's defaults; the
+    // others keep them.
+    const json& phys = object(*ph, "physics", {"airborne"});
+    if (const json* a = find(phys, "airborne")) {
+      if (!a->is_boolean()) bad("physics.airborne", "expected true or false");
+      in.config.physics.airborne = a->get<bool>();
+    }
+  }
   return in;
 }
 

@@ -42,6 +42,24 @@ enum FrameHeader : std::size_t {
 };
 // Per ball: x, y, on_table (1 or 0), vx, vy, energy, px, py.
 constexpr std::size_t kFrameStride = 8;
+// After the balls: the flight block. Its first double is 1 when a ball of
+// the frame is off the cloth (in flight or off the table), else 0; then
+// kFlightStride doubles per ball in scenario order: z (the height of the
+// centre above its resting height, m) and its FlightCode. The JSON frame
+// carries them (per ball, after py) only when the flag is 1, so that a
+// frame whose balls are all on the cloth or in pockets has 8 numbers per
+// ball.
+constexpr std::size_t kFlightStride = 2;
+enum FlightCode : int { kOnCloth = 0, kAirborne = 1, kOffTable = 2 };
+
+FlightCode flight_code(bs::MotionState s) {
+  if (s == bs::MotionState::airborne) return kAirborne;
+  if (s == bs::MotionState::off_table) return kOffTable;
+  return kOnCloth;
+}
+
+/// Where the flight block of a frame of n balls starts.
+std::size_t flight_at(std::size_t n) { return kFrameHeaderSize + kFrameStride * n; }
 
 /// Advances the playback to t and writes its frame into pb.frame: the one
 /// computation of a frame, for both the JSON and the binary reply.
@@ -56,8 +74,9 @@ void compute_frame(BsPlayback& pb, double t) {
   if (!pb.limit && pb.sim.advance_to(target) == bs::StopReason::event_limit) pb.limit = true;
   const std::size_t n = pb.sim.ball_count();
   std::vector<double>& d = pb.frame;
-  d.assign(kFrameHeaderSize + kFrameStride * n, 0.0);
+  d.assign(flight_at(n) + 1 + kFlightStride * n, 0.0);
   double energy = 0.0;
+  bool off_cloth = false;
   bs::Vec2 p;
   for (std::size_t i = 0; i < n; ++i) {
     const bs::BallState st = pb.sim.ball(i);
@@ -70,13 +89,22 @@ void compute_frame(BsPlayback& pb, double t) {
     double* b = d.data() + kFrameHeaderSize + kFrameStride * i;
     b[0] = st.position.x;
     b[1] = st.position.y;
-    b[2] = st.state == bs::MotionState::pocketed ? 0.0 : 1.0;
+    // Out of play: in a pocket, or off the table.
+    const bool out =
+        st.state == bs::MotionState::pocketed || st.state == bs::MotionState::off_table;
+    b[2] = out ? 0.0 : 1.0;
     b[3] = st.velocity.x;
     b[4] = st.velocity.y;
     b[5] = e;
     b[6] = m.x;
     b[7] = m.y;
+    const FlightCode code = flight_code(st.state);
+    off_cloth = off_cloth || code != kOnCloth;
+    double* f = d.data() + flight_at(n) + 1 + kFlightStride * i;
+    f[0] = st.z;
+    f[1] = static_cast<double>(code);
   }
+  d[flight_at(n)] = off_cloth ? 1.0 : 0.0;
   d[kFrameT] = pb.sim.time();
   d[kFrameEvents] = static_cast<double>(pb.sim.events().size());
   d[kFrameAtRest] = pb.sim.at_rest() ? 1.0 : 0.0;
@@ -95,10 +123,17 @@ std::string frame_json(BsPlayback& pb, double t) {
   const auto n = static_cast<std::size_t>(d[kFrameBalls]);
   ojson j = ojson::object();
   j["t"] = d[kFrameT];
+  const bool flight = d[flight_at(n)] != 0.0;
   ojson balls = ojson::array();
   for (std::size_t i = 0; i < n; ++i) {
     const double* b = d.data() + kFrameHeaderSize + kFrameStride * i;
-    balls.push_back(ojson::array({b[0], b[1], b[2] != 0.0 ? 1 : 0, b[3], b[4], b[5], b[6], b[7]}));
+    ojson ball = ojson::array({b[0], b[1], b[2] != 0.0 ? 1 : 0, b[3], b[4], b[5], b[6], b[7]});
+    if (flight) {
+      const double* f = d.data() + flight_at(n) + 1 + kFlightStride * i;
+      ball.push_back(f[0]);
+      ball.push_back(static_cast<int>(f[1]));
+    }
+    balls.push_back(std::move(ball));
   }
   j["balls"] = balls;
   j["energy"] = d[kFrameEnergy];

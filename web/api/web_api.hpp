@@ -47,7 +47,16 @@ const char* bs_playback_frame(BsPlayback* pb, double t);
  *   [0] t  [1] events  [2] at_rest (1|0)  [3] complete (1|0)
  *   [4] energy  [5] px  [6] py  [7] n, the number of balls
  * then 8 per ball, in scenario order, from [8 + 8 i]:
- *   x, y, on_table (1|0), vx, vy, energy, px, py.
+ *   x, y, on_table (1|0: 0 in a pocket or off the table), vx, vy,
+ *   energy, px, py;
+ * then the flight block, from [8 + 8 n]: a flag, 1 when a ball of the
+ * frame is off the cloth (in flight or off the table, physics.airborne)
+ * else 0, then 2 per ball from [9 + 8 n + 2 i]: z (the height of the
+ * centre above its resting height, m) and its place: 0 on the cloth (or
+ * in a pocket), 1 in flight, 2 off the table. bs_playback_frame's JSON
+ * appends z and the place to each ball's array only when the flag is 1:
+ * a frame whose balls are all on the cloth or in pockets has 8 numbers
+ * per ball.
  * The buffer belongs to the playback and stays valid until the next call
  * on it (bs_playback_frame included) or bs_playback_free. NULL on error
  * (a null handle, t not finite or earlier than the last frame's): see

@@ -92,7 +92,22 @@ function formConfig() {
     seed,
     breaker: Number($('breaker').value),
     players: ['human', opponent === 'friend' ? 'human' : opponent],
+    physics: { airborne: $('airborne').checked },
   };
+}
+
+/** The engine's default of a game's physics.airborne (GamePhysics), from
+ *  the record of a game made without a physics: the page keeps no copy. */
+function defaultAirborne() {
+  let g = null;
+  try {
+    g = engine.newGame({ game: 'eight_ball', players: ['human', 'human'], seed: '0' });
+    return !!g.record().physics.airborne;
+  } catch (e) {
+    return false;
+  } finally {
+    if (g) { try { g.free(); } catch (e) { /* gone */ } }
+  }
 }
 
 function startFromForm() {
@@ -133,6 +148,8 @@ function syncForm() {
   const st = ui.st;
   $('game-type').value = st.game;
   if (st.players && st.players[1]) $('opponent').value = st.players[1] === 'human' ? 'friend' : st.players[1];
+  const physics = ui.physics();
+  if (physics) $('airborne').checked = !!physics.airborne;
   if (ui.table) {
     const size = Math.abs(ui.table.length - 2.54) < 0.01 ? '9ft' : Math.abs(ui.table.length - 2.34) < 0.01 ? '8ft' : '7ft';
     $('table-size').value = size;
@@ -172,6 +189,7 @@ async function main() {
     $('version').textContent = `engine ${typeof v === 'string' ? v : (v && v.version) || ''}`;
   } catch (e) { /* no version */ }
   ui = new GameUI(engine);
+  $('airborne').checked = defaultAirborne();
 
   window.breakshot = {
     engine,

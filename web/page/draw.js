@@ -21,6 +21,43 @@ export const BALL_COLOURS = [
   '#151515',  // 8 black
 ];
 
+// Balls in flight (physics.airborne) as seen by a camera above the
+// table: a ball whose centre is z above its resting height is drawn
+// flightScale(z) = 1 + z / CAMERA_HEIGHT times larger (a pinhole camera
+// CAMERA_HEIGHT above the resting centres sees a size H / (H - z); this is
+// its first-order form, and it never blows up), and lifted up the screen by
+// flightLift(z) = TILT * z (a camera tilted toward the player, so that
+// height reads as a shift as well as a size). Its shadow stays on the cloth
+// under its ground position, softer and fainter the higher the ball. The
+// cue drawn at an elevation uses the same projection.
+export const CAMERA_HEIGHT = 1.0;  // m
+export const TILT = 0.5;           // screen shift per metre of height
+
+export function flightScale(z) {
+  return 1 + Math.max(0, z) / CAMERA_HEIGHT;
+}
+
+export function flightLift(z) {
+  return TILT * Math.max(0, z);
+}
+
+/** A soft round shadow of radius r at (cx, cy) for a ball z above the cloth. */
+export function drawFlightShadow(ctx, cx, cy, r, z) {
+  const h = Math.max(0, z);
+  const rr = r * (1.1 + h / 0.25);         // wider the higher it flies
+  const alpha = 0.55 / (1 + h / 0.15);     // and fainter
+  const g = ctx.createRadialGradient(cx, cy, 0, cx, cy, rr);
+  g.addColorStop(0, `rgba(0, 0, 0, ${alpha.toFixed(3)})`);
+  g.addColorStop(0.55, `rgba(0, 0, 0, ${(alpha * 0.6).toFixed(3)})`);
+  g.addColorStop(1, 'rgba(0, 0, 0, 0)');
+  ctx.save();
+  ctx.fillStyle = g;
+  ctx.beginPath();
+  ctx.arc(cx, cy, rr, 0, Math.PI * 2);
+  ctx.fill();
+  ctx.restore();
+}
+
 export function ballColour(n) {
   if (n <= 8) return BALL_COLOURS[n];
   return BALL_COLOURS[n - 8];
@@ -392,7 +429,8 @@ export class TableView {
 
   /**
    * Draws a frame. scene: {
-   *   balls: [{n, x, y, alpha?}], R (ball radius, m),
+   *   balls: [{n, x, y, z?, alpha?, scale?}], R (ball radius, m); z > 0:
+   *     in flight (drawn with flightScale and flightLift over its shadow),
    *   kitchen: bool (shade the area behind the head string),
    *   aim: {cue: {x, y}, phi, geo (aimGeometry), power (0..1), stick: bool} | null,
    *   call: {ball, pocket, auto} | null, place: {x, y, ok, reason} | null,
@@ -438,15 +476,30 @@ export class TableView {
     const aim = scene.aim;
     if (aim && aim.geo) this.drawAim(aim, rpx);
 
-    // balls
+    // balls: those on the cloth, then those in flight over their shadows,
+    // lowest first
     const callBall = scene.call ? scene.call.ball : null;
+    const flying = [];
     for (const b of scene.balls) {
       if (scene.place && b.n === 0) continue;
+      if (b.z > 0) {
+        flying.push(b);
+        continue;
+      }
       drawBall(ctx, b.n, this.sx(b.x), this.sy(b.y), rpx * (b.scale ?? 1), {
         alpha: b.alpha,
         ring: callBall != null && b.n === callBall ? (scene.call.ballAuto ? 'rgba(255, 214, 90, 0.6)' : '#ffd65a') : null,
       });
     }
+    flying.sort((p, q) => p.z - q.z);
+    for (const b of flying) drawFlightShadow(ctx, this.sx(b.x), this.sy(b.y), rpx, b.z);
+    for (const b of flying) {
+      drawBall(ctx, b.n, this.sx(b.x), this.sy(b.y) - this.px(flightLift(b.z)),
+        rpx * (b.scale ?? 1) * flightScale(b.z), { alpha: b.alpha, shadow: false });
+    }
+    // What the last frame drew in flight (the page's tests read it).
+    this.flight = { count: flying.length, maxZ: flying.reduce((m, b) => Math.max(m, b.z), 0) };
+    this.canvas.dataset.flight = String(flying.length);
 
     if (scene.place) {
       const p = scene.place;
@@ -584,8 +637,19 @@ export class TableView {
     const len = this.px(1.45);
     const tipW = this.px(0.0065);
     const buttW = this.px(0.015);
-    // the stick lies on the side opposite the shot: p(s) = c - u (gap + s)
-    const at = (s, w) => [cx - ux * (gap + s) + vx * w, cy - uy * (gap + s) + vy * w];
+    // Raised by the elevation theta, the stick rises from the tip: a point s
+    // along it (px) is s cos(theta) back on the cloth and s sin(theta) up,
+    // drawn with the balls' projection (flightLift, flightScale).
+    const th = (Math.max(0, Math.min(89, aim.theta ?? 0)) * Math.PI) / 180;
+    const cosT = Math.cos(th);
+    const sinT = Math.sin(th);
+    const height = (s) => (s * sinT) / this.scale;  // m
+    // the stick lies on the side opposite the shot: p(s) = c - u (gap + s cos) + lift
+    const at = (s, w) => {
+      const lift = this.px(flightLift(height(s)));
+      const ww = w * flightScale(height(s));
+      return [cx - ux * (gap + s * cosT) + vx * ww, cy - uy * (gap + s * cosT) + vy * ww - lift];
+    };
     const width = (s) => tipW + (buttW - tipW) * (s / len);
     const quad = (s0, s1, fill) => {
       const a = at(s0, width(s0));
@@ -602,9 +666,23 @@ export class TableView {
       ctx.fill();
     };
     ctx.save();
-    // shadow
+    // shadow: on the cloth under the stick (its plan), a little offset
+    const ground = (s, w) => [cx - ux * (gap + s * cosT) + vx * w, cy - uy * (gap + s * cosT) + vy * w];
     ctx.translate(this.px(0.01), this.px(0.014));
-    quad(0, len, 'rgba(0, 0, 0, 0.28)');
+    {
+      const a = ground(0, width(0));
+      const b = ground(len, width(len));
+      const c2 = ground(len, -width(len));
+      const d = ground(0, -width(0));
+      ctx.beginPath();
+      ctx.moveTo(a[0], a[1]);
+      ctx.lineTo(b[0], b[1]);
+      ctx.lineTo(c2[0], c2[1]);
+      ctx.lineTo(d[0], d[1]);
+      ctx.closePath();
+      ctx.fillStyle = `rgba(0, 0, 0, ${(0.28 * (1 - 0.5 * sinT)).toFixed(3)})`;
+      ctx.fill();
+    }
     ctx.restore();
     ctx.save();
     const tip = this.px(0.008);

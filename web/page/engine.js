@@ -27,9 +27,18 @@ import createBreakshot from './breakshot.js';
 const NEG_ZERO = '__breakshot_negative_zero__';
 
 // bs_playback_frame_data's layout: [t, events, at_rest, complete, energy,
-// px, py, n], then [x, y, on_table, vx, vy, energy, px, py] per ball.
+// px, py, n], then [x, y, on_table, vx, vy, energy, px, py] per ball, then
+// the flight block: a flag (1 when a ball is off the cloth) and [z, place]
+// per ball (place: 0 on the cloth or in a pocket, 1 in flight, 2 off the
+// table), which the frame object carries only when the flag is 1.
 const FRAME_HEADER = 8;
 const FRAME_STRIDE = 8;
+const FLIGHT_STRIDE = 2;
+
+/** The length of a frame's buffer of n balls, flight block included. */
+export function frameLength(n) {
+  return FRAME_HEADER + FRAME_STRIDE * n + 1 + FLIGHT_STRIDE * n;
+}
 
 /**
  * The frame object of bs_playback_frame_data's doubles (an array-like):
@@ -40,6 +49,10 @@ export function frameObject(d) {
   const balls = new Array(n);
   for (let i = 0, o = FRAME_HEADER; i < n; i++, o += FRAME_STRIDE) {
     balls[i] = [d[o], d[o + 1], d[o + 2], d[o + 3], d[o + 4], d[o + 5], d[o + 6], d[o + 7]];
+  }
+  const flight = FRAME_HEADER + FRAME_STRIDE * n;
+  if (d[flight] !== 0) {
+    for (let i = 0, o = flight + 1; i < n; i++, o += FLIGHT_STRIDE) balls[i].push(d[o], d[o + 1]);
   }
   return {
     t: d[0],
@@ -147,7 +160,7 @@ function rawApi(M) {
       const heap = M.HEAPF64;
       const at = p / 8;
       const n = heap[at + FRAME_HEADER - 1];
-      return heap.subarray(at, at + FRAME_HEADER + FRAME_STRIDE * n);
+      return heap.subarray(at, at + frameLength(n));
     },
     events: (h, from) => str(fn.events(h, from)),
     playbackFree: (h) => fn.playbackFree(h),

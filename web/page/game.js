@@ -176,6 +176,16 @@ export class GameUI {
     return true;
   }
 
+  /** The game's physics (its record's "physics"), or null. */
+  physics() {
+    if (!this.g) return null;
+    try {
+      return this.g.record().physics || null;
+    } catch (e) {
+      return null;
+    }
+  }
+
   link() {
     if (!this.g) return '';
     try {
@@ -655,8 +665,12 @@ export class GameUI {
     if (prev) {
       a.frame.balls.forEach((b, i) => {
         if (!b[2] && prev.balls[i] && prev.balls[i][2] && !a.gone.has(i)) {
-          const p = this.nearestPocket(b[0], b[1]);
-          a.gone.set(i, { x: b[0], y: b[1], t: a.t, px: p ? p.centre[0] : b[0], py: p ? p.centre[1] : b[1] });
+          // Off the table (place 2): it fades where it left, from the
+          // height it had; into a pocket: it slides to the pocket's centre.
+          const off = b.length > 8 && b[9] === 2;
+          const p = off ? null : this.nearestPocket(b[0], b[1]);
+          const z = prev.balls[i].length > 8 ? prev.balls[i][8] : 0;
+          a.gone.set(i, { x: b[0], y: b[1], z: off ? z : 0, t: a.t, px: p ? p.centre[0] : b[0], py: p ? p.centre[1] : b[1] });
         }
       });
     }
@@ -760,13 +774,14 @@ export class GameUI {
       const { frame, numbers, gone, t } = this.anim;
       frame.balls.forEach((b, i) => {
         if (b[2]) {
-          scene.balls.push({ n: numbers[i] ?? i, x: b[0], y: b[1] });
+          // z (b[8]) only when a ball of the frame is off the cloth
+          scene.balls.push({ n: numbers[i] ?? i, x: b[0], y: b[1], z: b.length > 8 ? b[8] : 0 });
         } else if (gone.has(i)) {
           const g = gone.get(i);
           const f = (t - g.t) / FADE;
           if (f < 1) {
             const k = Math.min(1, f * 1.5);
-            scene.balls.push({ n: numbers[i] ?? i, x: g.x + (g.px - g.x) * k, y: g.y + (g.py - g.y) * k, alpha: 1 - f, scale: 1 - 0.35 * f });
+            scene.balls.push({ n: numbers[i] ?? i, x: g.x + (g.px - g.x) * k, y: g.y + (g.py - g.y) * k, z: g.z, alpha: 1 - f, scale: 1 - 0.35 * f });
           }
         }
       });
@@ -792,6 +807,7 @@ export class GameUI {
       scene.aim = {
         cue: this.cuePos(),
         phi: this.aim.phi,
+        theta: this.aim.theta,
         geo,
         power: (this.aim.speed - MIN_SPEED) / (MAX_SPEED - MIN_SPEED),
         stick: true,
@@ -1108,6 +1124,7 @@ export class GameUI {
     $('elevation').addEventListener('input', () => {
       this.aim.theta = Number($('elevation').value);
       $('elevation-out').textContent = `${Math.round(this.aim.theta)}°`;
+      this.requestRender();  // the stick shows the elevation
     });
     $('phi').addEventListener('input', () => {
       const v = Number($('phi').value);

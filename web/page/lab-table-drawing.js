@@ -9,6 +9,7 @@ import { FELT, RAIL, TOTAL_COLOUR, luminance } from './lab-colours.js';
 import { tableVertices, bbox } from './lab-geometry.js';
 import { radiusOf } from './lab-scenario.js';
 import { TRACE_LIMIT } from './lab-run.js';
+import { flightScale, flightLift, drawFlightShadow } from './draw.js';
 
 // A setup velocity arrow ends where the ball would be after this many seconds.
 export const VEL_TAU = 0.25;
@@ -117,10 +118,20 @@ export function drawTable(ctx, w, h, v, scene) {
       ctx.fill();
     }
   } else {
-    for (let i = 0; i < n; i++) {
+    // A ball in flight (its z, the frame's b[8] when a ball is off the
+    // cloth): its shadow on the cloth, then the ball drawn after the others
+    // with the game's projection (draw.js: flightScale, flightLift).
+    const zOf = (i) => (run && run.frame && run.frame.balls[i].length > 8 ? run.frame.balls[i][8] : 0);
+    const order = [...Array(n).keys()].sort((a, b) => zOf(a) - zOf(b));
+    for (const i of order) {
+      const p = pos(i);
+      if (p && zOf(i) > 0) drawFlightShadow(ctx, v.X(p[0]), v.Y(p[1]), Math.max(1.5, radii[i] * v.s), zOf(i));
+    }
+    for (const i of order) {
       const p = pos(i);
       if (!p) continue;
-      const x = v.X(p[0]), y = v.Y(p[1]), r = Math.max(1.5, radii[i] * v.s);
+      const z = zOf(i);
+      const x = v.X(p[0]), y = v.Y(p[1]) - flightLift(z) * v.s, r = Math.max(1.5, radii[i] * v.s) * flightScale(z);
       ctx.beginPath();
       ctx.arc(x, y, r, 0, 2 * Math.PI);
       ctx.fillStyle = colours[i];

@@ -152,6 +152,52 @@ async function scratchBreak(page) {
   return reply;
 }
 
+test('with "balls may leave the cloth" a high-elevation shot jumps the cue ball, drawn in flight', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  // The box starts as the engine's default (GamePhysics: on the cloth).
+  check(!(await page.isChecked('#airborne')), 'the airborne box is ticked on a new page');
+  await page.click('#new-game');
+  await page.check('#airborne');
+  await newGame(page, { game: 'eight_ball', opponent: 'friend' });
+  check(await page.evaluate(() => window.breakshot.ui.physics().airborne === true),
+    'the game made with the box ticked does not have physics.airborne');
+  // The cue ball in the kitchen, aimed up the table, 3 m/s, the cue raised 45 degrees.
+  const place = await page.evaluate(() => window.breakshot.act({ type: 'place_cue_ball', position: [0.6, 0.635] }));
+  check(!place.error, 'placement refused: ' + place.error);
+  await idle(page);
+  await page.fill('#phi', '0');
+  await page.dispatchEvent('#phi', 'input');
+  await page.fill('#power', '3');
+  await page.dispatchEvent('#power', 'input');
+  await page.fill('#elevation', '45');
+  await page.dispatchEvent('#elevation', 'input');
+  check(await page.textContent('#elevation-out') === '45°', 'the elevation shows ' + await page.textContent('#elevation-out'));
+  check(Number(await page.getAttribute('#elevation', 'max')) >= 60, 'the elevation slider stops below 60 degrees');
+  const aim = await page.evaluate(() => window.breakshot.aim());
+  check(aim.theta === 45 && aim.speed === 3, 'the aim is ' + JSON.stringify(aim));
+  await page.screenshot({ path: path.join(shots, 'game-jump-aim.png') });
+  await page.selectOption('#playback-speed', '0.25');
+  await page.click('#shoot');
+  // The page draws the cue ball in flight (the canvas' data-flight counts
+  // the balls drawn off the cloth in the last frame).
+  await page.waitForFunction(() => Number(document.querySelector('#table').dataset.flight) > 0, null, { timeout: 10000 });
+  await page.waitForFunction(() => window.breakshot.ui.view.flight.maxZ > 0.09, null, { timeout: 10000 });
+  await page.locator('#table').screenshot({ path: path.join(shots, 'game-jump.png') });
+  await idle(page);
+  check(await page.evaluate(() => document.querySelector('#table').dataset.flight) === '0',
+    'a ball is still drawn in flight after the shot');
+  // The link carries the physics: opened, the game has it and the box shows it.
+  const link = await page.evaluate(() => window.breakshot.link());
+  const two = await openPage(browser, url + '#game=' + link);
+  await idle(two.page);
+  check(await two.page.evaluate(() => window.breakshot.ui.physics().airborne === true), 'the link lost physics.airborne');
+  check(await two.page.isChecked('#airborne'), 'the box does not show the linked game\'s physics');
+  const all = problems.concat(two.problems);
+  check(all.length === 0, all.join('\n'));
+  await two.context.close();
+  await context.close();
+});
+
 test('a scripted scratch shows the foul and ball in hand', async ({ browser, url }) => {
   const { page, context, problems } = await openPage(browser, url);
   await newGame(page, { game: 'nine_ball', opponent: 'friend' });

@@ -142,11 +142,14 @@ const pbOf = (step) => need(playbacks, step.pb, 'playback');
 const gameOf = (step) => need(games, step.game, 'game');
 
 // bs_playback_frame_data's doubles as web_api_probe prints them: the hex
-// of their bits, 16 digits each, separated by spaces; null (an error) as
+// of their bits, 16 digits each, separated by spaces (the header and the
+// balls, and the flight block when its flag is 1); null (an error) as
 // bs_last_error.
 function frameDataText(d) {
   if (!d) return raw.lastError();
-  const bits = new BigUint64Array(Float64Array.from(d).buffer);
+  // The header and the balls, and the flight block when its flag is 1.
+  const head = 8 + 8 * d[7];
+  const bits = new BigUint64Array(Float64Array.from(d[head] !== 0 ? d : d.subarray(0, head)).buffer);
   let out = '';
   for (let i = 0; i < bits.length; ++i) out += (i ? ' ' : '') + bits[i].toString(16).padStart(16, '0');
   return out;

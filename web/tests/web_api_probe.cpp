@@ -25,7 +25,8 @@
 //                                    ("frame k")
 //   frame_data {pb, t}               bs_playback_frame_data; "pb": null for a NULL handle
 //   The doubles of bs_playback_frame_data are printed as the hexadecimal of
-//   their bits, 16 digits each, separated by spaces; NULL as bs_last_error.
+//   their bits, 16 digits each, separated by spaces (the header and the
+//   balls, and the flight block when its flag is 1); NULL as bs_last_error.
 //   events {pb, from}
 //   playback_free {pb}               (prints nothing)
 //   game_new {as, config}            bs_game_new(config as JSON text); the state or bs_last_error
@@ -242,7 +243,10 @@ class Probe {
   /// bs_playback_frame_data's doubles as the hex of their bits, or bs_last_error.
   static std::string frame_data(const double* d) {
     if (d == nullptr) return bs_last_error();
-    const std::size_t n = 8 + 8 * static_cast<std::size_t>(d[7]);
+    // The header and the balls, and the flight block when its flag is 1.
+    const auto balls = static_cast<std::size_t>(d[7]);
+    const std::size_t head = 8 + 8 * balls;
+    const std::size_t n = d[head] != 0.0 ? head + 1 + 2 * balls : head;
     std::string out;
     out.reserve(17 * n);
     char buf[17];
