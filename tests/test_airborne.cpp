@@ -241,8 +241,9 @@ TEST(Airborne, OverABallOrOntoIt) {
   }
 }
 
-// Without physics.airborne nothing changes: a vertical velocity is an
-// error, and a level shot with it on leaves no "z" in the result.
+// With physics.airborne off (on by default in the pool model) nothing
+// leaves the cloth: a vertical velocity is an error; with it on, a level
+// shot leaves no "z" in the result.
 TEST(Airborne, ScenarioChecksAndResultFields) {
   const auto error = [](const std::string& json) {
     auto r = read_scenario(json);
@@ -250,7 +251,7 @@ TEST(Airborne, ScenarioChecksAndResultFields) {
     return e == nullptr ? std::string("no error") : e->path + ": " + e->reason;
   };
   const std::string table = R"("table": {"shape": "pool", "size": "9ft"})";
-  EXPECT_EQ(error(R"({"physics": {"model": "pool"}, )" + table +
+  EXPECT_EQ(error(R"({"physics": {"model": "pool", "airborne": false}, )" + table +
                   R"(, "balls": [{"id": "a", "position": [1, 0.6], "velocity": [1, 0, 1]}]})"),
             "balls[0].velocity: a vertical component (1.0) needs physics.airborne true");
   EXPECT_EQ(
@@ -265,7 +266,7 @@ TEST(Airborne, ScenarioChecksAndResultFields) {
                   table + R"(, "balls": [{"id": "a", "position": [1, 0.6]}]})"),
             "physics.slate_restitution: must be in [0, 1) (at 1 a ball would bounce forever), "
             "not 1.0");
-  EXPECT_EQ(error(R"({"physics": {"model": "pool", "min_bounce_height": 0.01}, )" + table +
+  EXPECT_EQ(error(R"({"physics": {"model": "pool", "airborne": false, "min_bounce_height": 0.01}, )" + table +
                   R"(, "balls": [{"id": "a", "position": [1, 0.6]}]})"),
             "physics.min_bounce_height: needs physics.airborne true");
 

@@ -64,9 +64,12 @@ TEST(Defaults, AreTheDocumentedValues) {
   const PhysicsParams pool = default_physics(Model::pool);
   EXPECT_EQ(pool.ball_ball_restitution, 0.95);  // Alciatore: 0.92-0.98
   EXPECT_TRUE(pool.ball_ball_friction_fit);
-  // Today's curve: Alciatore's TP A-28 fit to Marlow's data (the TP B-3
-  // refit to the measured throw becomes the default in a later step).
-  EXPECT_EQ(pool.ball_ball_friction_curve, (FrictionCurve{0.009951, 0.108, 1.088}));
+  // Alciatore's TP B-3 refit to Colenso's measured throw.
+  EXPECT_EQ(pool.ball_ball_friction_curve, (FrictionCurve{0.016, 0.219, 0.691}));
+  EXPECT_TRUE(pool.airborne);
+  EXPECT_EQ(pool.slate_restitution, 0.5);
+  EXPECT_EQ(pool.min_bounce_height, 0.001);
+  EXPECT_FALSE(ideal.airborne);
   EXPECT_EQ(pool.ball_ball_model, BallBallModel::friction);
   EXPECT_EQ(pool.collapse_speed, 1e-3);
   EXPECT_FALSE(pool.ball_clusters);

@@ -562,10 +562,17 @@ TEST_F(MatchCli, PhysicsOptionsAreRecordedAndShownOnlyWhenNotTheDefault) {
   ASSERT_EQ(plain.status, 0) << plain.err;
   EXPECT_EQ(plain.out.find("physics"), std::string::npos) << plain.out;
   // The defaults by their names give the same bytes.
-  const Run named = run(args + " --cushion-model han_2005_v0 --ball-ball-model friction "
-                               "--ball-ball-friction tpa28");
+  const Run named = run(args + " --cushion-model han_2005 --ball-ball-model friction "
+                               "--ball-ball-friction tpb3 --airborne on");
   ASSERT_EQ(named.status, 0) << named.err;
   EXPECT_EQ(named.out, plain.out);
+  // The legacy physics by its names is not the default: the summary says it.
+  const Run legacy = run(args + " --cushion-model han_2005_v0 --ball-ball-friction tpa28 "
+                                "--airborne off");
+  ASSERT_EQ(legacy.status, 0) << legacy.err;
+  const json lj = json::parse(legacy.out);
+  EXPECT_EQ(lj["physics"]["cushion_model"], "han_2005_v0");
+  EXPECT_FALSE(lj["physics"].contains("airborne"));
 
   const Run r = run(args + " --cushion-model mathavan_2010 --ball-ball-friction tpb3 --records " +
                     quote((dir_ / "records").string()));
@@ -588,9 +595,9 @@ TEST_F(MatchCli, PhysicsOptionsAreRecordedAndShownOnlyWhenNotTheDefault) {
   EXPECT_EQ(k["physics"]["cushion_model"], "han_2005");
   EXPECT_EQ(k["physics"]["ball_ball_model"], "mathavan_2014");
   EXPECT_EQ(k["physics"]["ball_ball_friction"], 0.06);
-  const Run curve = run(args + " --ball-ball-friction 0.016,0.219,0.691");
+  const Run curve = run(args + " --ball-ball-friction 0.009951,0.108,1.088");
   ASSERT_EQ(curve.status, 0) << curve.err;
-  EXPECT_EQ(json::parse(curve.out)["physics"]["ball_ball_friction"]["c"], 0.691);
+  EXPECT_EQ(json::parse(curve.out)["physics"]["ball_ball_friction"]["c"], 1.088);
 
   struct Case {
     const char* option;

@@ -152,7 +152,7 @@ TEST(PoolRead, BallFrictionAsACurve) {
 TEST(PoolRead, TheDefaultCurveGivenExplicitlyIsTheSamePhysics) {
   json doc = pool_break();
   const bs::Scenario implicit = read_ok(doc);
-  doc["physics"]["ball_ball_friction"] = {{"a", 0.009951}, {"b", 0.108}, {"c", 1.088}};
+  doc["physics"]["ball_ball_friction"] = {{"a", 0.016}, {"b", 0.219}, {"c", 0.691}};
   doc["physics"]["ball_ball_model"] = "friction";
   const bs::Scenario explicit_ = read_ok(doc);
   EXPECT_EQ(bs::write_result(implicit, bs::simulate(implicit)),
@@ -351,12 +351,13 @@ TEST(PoolInvalid, CushionFields) {
   }
 }
 
-// table.cushion_model: the four laws by name, the legacy one by default;
-// mathavan_2010 brings the paper's restitution and contact height unless
-// they are given.
+// table.cushion_model: the four laws by name, han_2005 by default; each
+// brings its own restitution, mathavan_2010 also the paper's contact
+// height, unless they are given.
 TEST(PoolRead, CushionModel) {
   const bs::Scenario d = read_ok(pool_base());
-  EXPECT_EQ(d.table.cushion.model, bs::CushionModel::han_2005_v0);
+  EXPECT_EQ(d.table.cushion.model, bs::CushionModel::han_2005);
+  EXPECT_EQ(d.table.cushion.restitution, 0.84);
   EXPECT_EQ(d.table.cushion.height, 0.0);
   for (const char* name : {"han_2005_v0", "han_2005", "mathavan_2010", "impulse_frictional"}) {
     json doc = pool_base();

@@ -135,12 +135,13 @@ TEST(RecordVersions, LegacyGamesGiveTheRecordsTheyGaveBefore) {
   }
 }
 
-TEST(RecordVersions, DefaultSummaryKeepsItsBytes) {
+TEST(RecordVersions, LegacyPhysicsKeepsTheSummarysGames) {
   // The summary of `breakshot match --game nine_ball --players club,club
-  // --games 3 --seed 1 --noise none` before record version 2. The day the
-  // default physics changes, this summary changes with it (and says its
-  // physics); the legacy physics then gives these games.
+  // --games 3 --seed 1 --noise none` before record version 2. The default
+  // physics has changed since; the legacy physics, named, gives these
+  // games again, and the summary adds only the physics it names.
   MatchOptions opt;
+  opt.physics = kLegacyGamePhysics;
   opt.game = GameType::nine_ball;
   opt.players = {"club", "club"};
   opt.games = 3;
@@ -148,8 +149,11 @@ TEST(RecordVersions, DefaultSummaryKeepsItsBytes) {
   opt.noise = parse_noise("none");
   auto p0 = make_player("club");
   auto p1 = make_player("club");
-  EXPECT_EQ(match_summary_json(play_match(opt, *p0, *p1)),
-            data_file("nine_ball_club_seed1_summary.json"));
+  nlohmann::ordered_json got = nlohmann::ordered_json::parse(match_summary_json(play_match(opt, *p0, *p1)));
+  ASSERT_TRUE(got.contains("physics"));
+  EXPECT_EQ(got["physics"]["cushion_model"], "han_2005_v0");
+  got.erase("physics");
+  EXPECT_EQ(got.dump(2) + "\n", data_file("nine_ball_club_seed1_summary.json"));
 }
 
 // ---------------------------------------------------------------------------
@@ -180,7 +184,8 @@ TEST(RecordVersions, Version2RoundTripKeepsTheEngineAndThePhysics) {
       << text;
   EXPECT_NE(text.find("\n  \"physics\": {\"cushion_model\":\"mathavan_2010\","
                       "\"ball_ball_model\":\"mathavan_2014\","
-                      "\"ball_ball_friction\":{\"a\":0.016,\"b\":0.219,\"c\":0.691}},\n"),
+                      "\"ball_ball_friction\":{\"a\":0.016,\"b\":0.219,\"c\":0.691},"
+                      "\"airborne\":true},\n"),
             std::string::npos)
       << text;
   const GameRecord back = read_ok(text);
@@ -194,7 +199,8 @@ TEST(RecordVersions, Version2RoundTripKeepsTheEngineAndThePhysics) {
   r.config.physics.ball_ball_friction_curve = FrictionCurve{};
   r.config.physics.ball_ball_friction = 0.06;
   const std::string constant = write_record(r);
-  EXPECT_NE(constant.find("\"ball_ball_friction\":0.06}"), std::string::npos) << constant;
+  EXPECT_NE(constant.find("\"ball_ball_friction\":0.06,\"airborne\":true}"), std::string::npos)
+      << constant;
   EXPECT_TRUE(read_ok(constant) == r);
   EXPECT_EQ(write_record(read_ok(constant)), constant);
 
@@ -289,13 +295,23 @@ TEST(RecordVersions, RulesPlayTheGamesPhysics) {
   EXPECT_TRUE(sc.physics.ball_ball_friction_fit);
   EXPECT_TRUE(sc.physics.ball_ball_friction_curve == kThrowFitTPB3);
 
-  // The legacy physics: the scenario every game played before.
-  const Rules legacy(GameConfig{});
+  // The legacy physics: the scenario every game of breakshot 0.1 played.
+  GameConfig old;
+  old.physics = kLegacyGamePhysics;
+  const Rules legacy(old);
   const Scenario ls = legacy.shot_scenario(legacy.start(1, 0), CueStrike{});
   EXPECT_EQ(ls.table.cushion.model, CushionModel::han_2005_v0);
   EXPECT_EQ(ls.table.cushion.nose_height, CushionParams{}.nose_height);
-  for (const BallSpec& b : ls.balls) EXPECT_EQ(b.wall_restitution, CushionParams{}.restitution);
+  for (const BallSpec& b : ls.balls) EXPECT_EQ(b.wall_restitution, 0.75);
   EXPECT_TRUE(ls.physics.ball_ball_friction_curve == kThrowFitTPA28);
+  EXPECT_FALSE(ls.physics.airborne);
+  // The default: han_2005 at 0.84, TP B-3, balls that may leave the cloth.
+  const Rules now(GameConfig{});
+  const Scenario ns = now.shot_scenario(now.start(1, 0), CueStrike{});
+  EXPECT_EQ(ns.table.cushion.model, CushionModel::han_2005);
+  for (const BallSpec& b : ns.balls) EXPECT_EQ(b.wall_restitution, 0.84);
+  EXPECT_TRUE(ns.physics.ball_ball_friction_curve == kThrowFitTPB3);
+  EXPECT_TRUE(ns.physics.airborne);
 
   GameConfig bad;
   bad.physics.ball_ball_friction_curve = {0.5, 0.9, 1.0};  // mu(0) = 1.4
@@ -386,8 +402,8 @@ TEST(RecordVersions, SummaryShowsThePhysicsOnlyWhenNotTheDefault) {
   // The default physics is never written, so it is not read either.
   ojson doc = ojson::parse(text);
   doc["physics"] = ojson::parse(
-      "{\"cushion_model\":\"han_2005_v0\",\"ball_ball_model\":\"friction\","
-      "\"ball_ball_friction\":{\"a\":0.009951,\"b\":0.108,\"c\":1.088}}");
+      "{\"cushion_model\":\"han_2005\",\"ball_ball_model\":\"friction\","
+      "\"ball_ball_friction\":{\"a\":0.016,\"b\":0.219,\"c\":0.691},\"airborne\":true}");
   EXPECT_THROW((void)read_match_summary(doc.dump(2)), std::invalid_argument);
 }
 

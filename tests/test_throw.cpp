@@ -117,21 +117,21 @@ TEST(Throw, TheTpB3FitReproducesColensosMeasurements) {
   }
 }
 
-TEST(Throw, TodaysDefaultIsTwoToThreeAndAHalfTimesBelowTheMeasurements) {
-  // The default curve (TP A-28, clean balls, kThrowFitTPA28) at the same
-  // shots: 3.9, 3.2, 2.4, 1.7, 1.6, 1.0 deg against the measured 7.6, 8.8,
-  // 5.6, 4.8, 4.8, 3.7 (ratios 1.9 to 3.5). The default changes in a later
-  // step of issue 22; until then this pins today's behaviour.
+TEST(Throw, CleanBallCurveIsTwoToThreeAndAHalfTimesBelowTheMeasurements) {
+  // The clean-ball curve set explicitly (TP A-28, kThrowFitTPA28; breakshot
+  // 0.1's default) at the same shots: 3.9, 3.2, 2.4, 1.7, 1.6, 1.0 deg
+  // against the measured 7.6, 8.8, 5.6, 4.8, 4.8, 3.7 (ratios 1.9 to 3.5).
   const double expected[] = {3.945, 3.199, 2.416, 1.689, 1.579, 1.046};
   int k = 0;
   for (const Measured& m : kTpB3) {
-    const double sim = simulated_throw(m.kmh / 3.6, m.cut, "");
+    const double sim = simulated_throw(m.kmh / 3.6, m.cut, curve_json(kThrowFitTPA28));
     EXPECT_NEAR(sim, expected[k++], 0.005) << m.kmh << " km/h, " << m.cut << " deg";
     const double ratio = measured_deg(m) / sim;
     EXPECT_GT(ratio, 1.9) << m.kmh << " km/h, " << m.cut << " deg";
     EXPECT_LT(ratio, 3.6) << m.kmh << " km/h, " << m.cut << " deg";
-    // Giving the default curve explicitly is the same physics, bit for bit.
-    EXPECT_EQ(simulated_throw(m.kmh / 3.6, m.cut, curve_json(kThrowFitTPA28)), sim);
+    // The default is the measured table's curve (TP B-3), bit for bit.
+    EXPECT_EQ(simulated_throw(m.kmh / 3.6, m.cut, ""),
+              simulated_throw(m.kmh / 3.6, m.cut, curve_json(kThrowFitTPB3)));
   }
 }
 

@@ -535,19 +535,19 @@ int main(int argc, char** argv) {
       ->type_name("N");
   match->add_option("--cushion-model", match_args.cushion_model,
                     "Cushion law: " + cushion_model_list() +
-                        " (the first is the default, the legacy law; docs/physics.md)")
+                        " (default han_2005; han_2005_v0 is the legacy law; docs/physics.md)")
       ->type_name("NAME");
   match->add_option("--ball-ball-model", match_args.ball_ball_model,
                     "Ball-ball impact law: friction (default) or mathavan_2014")
       ->type_name("NAME");
   match->add_option("--ball-ball-friction", match_args.ball_ball_friction,
-                    "Ball-ball friction: tpa28 (default, Alciatore TP A-28's curve), tpb3 (the "
-                    "refit to the measured throw, TP B-3), a curve A,B,C (mu = a + b exp(-c v)) "
-                    "or a constant")
+                    "Ball-ball friction: tpb3 (default: Alciatore's refit to the measured throw, "
+                    "TP B-3), tpa28 (TP A-28's curve, the legacy one), a curve A,B,C "
+                    "(mu = a + b exp(-c v)) or a constant")
       ->type_name("SPEC");
   match->add_option("--airborne", match_args.airborne,
-                    "on: balls may leave the cloth (jumps, hops, balls off the table); off "
-                    "(default): they stay on it, the legacy physics")
+                    "on (default): balls may leave the cloth (jumps, hops, balls off the "
+                    "table); off: they stay on it, as in the legacy physics")
       ->type_name("on|off");
   match->add_flag("--timing", match_args.timing,
                   "Add each player's decision times (median, p90, max seconds) to the summary; "

@@ -44,24 +44,25 @@ std::vector<std::string> game_type_names();
 /// The physics a game is played with: the choices of the pool model that
 /// a game may make (docs/rules.md, "Physics"). The rest of the physics is
 /// default_physics(Model::pool) with ball clusters on, as for every game.
-/// The defaults are the engine's defaults: today legacy_game_physics().
+/// The defaults are the engine's defaults (those of a scenario that
+/// names nothing): han_2005 cushions, TP B-3's friction curve, balls that
+/// may leave the cloth. kLegacyGamePhysics is breakshot 0.1's.
 struct GamePhysics {
-  /// The cushion law (`table.cushion_model`). mathavan_2010 brings its own
-  /// constants, as in a scenario: cushion restitution 0.98 and nose height
-  /// 0.7 of the diameter (pool.hpp, kMathavanRestitution and
-  /// kMathavanNoseHeight).
-  CushionModel cushion_model = CushionModel::han_2005_v0;
+  /// The cushion law (`table.cushion_model`), with its own restitution
+  /// (default_cushion_restitution) as in a scenario; mathavan_2010 also
+  /// its own nose height, 0.7 of the diameter (kMathavanNoseHeight).
+  CushionModel cushion_model = CushionModel::han_2005;
   /// The ball-ball impact law (`physics.ball_ball_model`).
   BallBallModel ball_ball_model = BallBallModel::friction;
   /// The ball-ball friction (`physics.ball_ball_friction`): the curve
   /// ball_ball_friction_curve when ball_ball_friction_fit is set, else the
   /// constant ball_ball_friction.
   bool ball_ball_friction_fit = true;
-  FrictionCurve ball_ball_friction_curve = kThrowFitTPA28;
+  FrictionCurve ball_ball_friction_curve = kThrowFitTPB3;
   double ball_ball_friction = 0.0;
   /// Balls may leave the cloth (`physics.airborne`): jump shots, hops,
   /// balls off the table.
-  bool airborne = false;
+  bool airborne = true;
   bool operator==(const GamePhysics&) const = default;
 };
 

@@ -56,13 +56,14 @@ std::optional<FrictionCurveProblem> check_friction_curve(const FrictionCurve& cu
 
 /// Alciatore's fit to Marlow's friction data (TP A-28, "Throw plots for
 /// all types of shots": mu = 0.11, 0.06, 0.01 at v = 0.1, 1, 10 times
-/// sin(45 deg) m/s). pooltool's default; breakshot's default curve (the
-/// throw it gives is 2-3 times below the measured, docs/physics.md).
+/// sin(45 deg) m/s). pooltool's default and breakshot 0.1's (the throw it
+/// gives is 2-3 times below the measured, docs/physics.md).
 inline constexpr FrictionCurve kThrowFitTPA28{0.009951, 0.108, 1.088};
 
 /// Alciatore's refit of the same curve to Colin Colenso's measured throw
 /// (TP B-3, "Throw calibration and contour plots": 30 and 45 degree cuts at
-/// 4, 8 and 12 km/h), a = 0.016, b = 0.219, c = 0.691.
+/// 4, 8 and 12 km/h), a = 0.016, b = 0.219, c = 0.691. The pool model's
+/// default: the measured table wins over the clean-ball theory.
 inline constexpr FrictionCurve kThrowFitTPB3{0.016, 0.219, 0.691};
 
 /// Every physics parameter, with the defaults documented in
@@ -107,7 +108,7 @@ struct PhysicsParams {
   /// the cue is raised enough); balls fly, land and bounce, meet other
   /// balls in three dimensions, hop off a cushion nose and can leave the
   /// table. Off, the vertical parts of every impulse are dropped, as in
-  /// breakshot 0.1.
+  /// breakshot 0.1. On in the pool model's defaults (default_physics).
   bool airborne = false;
   /// Restitution of a ball landing on the slate (through the cloth):
   /// Alciatore's "ball-table coefficient of restitution", 0.5. In [0, 1).
@@ -133,7 +134,8 @@ inline constexpr double kPoolBallBallRestitution = 0.95;
 /// AI's estimates, the benchmarks and, through the web facade
 /// (bs_defaults), the page. PhysicsParams{} is default_physics(ideal).
 /// The pool model: restitution 0.95, the measured speed-dependent
-/// ball-ball friction (ball_ball_friction_fit), kPoolCollapseSpeed; the
+/// ball-ball friction (ball_ball_friction_fit, kThrowFitTPB3),
+/// kPoolCollapseSpeed, balls that may leave the cloth (airborne); the
 /// games also turn ball_clusters on.
 constexpr PhysicsParams default_physics(Model model) {
   PhysicsParams p;
@@ -143,7 +145,9 @@ constexpr PhysicsParams default_physics(Model model) {
   if (model == Model::pool) {
     p.ball_ball_restitution = kPoolBallBallRestitution;
     p.ball_ball_friction_fit = true;
+    p.ball_ball_friction_curve = kThrowFitTPB3;
     p.collapse_speed = kPoolCollapseSpeed;
+    p.airborne = true;
   }
   return p;
 }

@@ -164,9 +164,31 @@ std::string_view cushion_model_name(CushionModel m);
 /// The model of a scenario name; false for an unknown name.
 bool parse_cushion_model(std::string_view name, CushionModel& out);
 
+/// Each cushion law's default restitution (`table.cushion_restitution`
+/// when not given; docs/physics.md, "Cushions"): han_2005_v0 keeps
+/// breakshot 0.1's 0.75; han_2005's 0.84 and impulse_frictional's 0.914
+/// make a rolling ball driven straight in come back at 0.914 of its
+/// speed, as Mathavan et al. 2010's model does with its own fitted
+/// constants; mathavan_2010 takes those constants, e = 0.98.
+constexpr double default_cushion_restitution(CushionModel m) {
+  switch (m) {
+    case CushionModel::han_2005_v0:
+      return 0.75;
+    case CushionModel::han_2005:
+      return 0.84;
+    case CushionModel::mathavan_2010:
+      return 0.98;
+    case CushionModel::impulse_frictional:
+      return 0.914;
+  }
+  return 0.75;
+}
+
 struct CushionParams {
-  /// The cushion law (see CushionModel).
-  CushionModel model = CushionModel::han_2005_v0;
+  /// The cushion law (see CushionModel). The default, han_2005, is Han's
+  /// law with the slate's reaction at the restitution that matches
+  /// Mathavan et al. 2010's measurement-fitted model (docs/physics.md).
+  CushionModel model = CushionModel::han_2005;
   /// Height of the nose contact above the cloth as a fraction of the
   /// ball's diameter (WPA: about 63.5 %). The contact normal is tilted
   /// t = asin(2 nose_height - 1) above the horizontal (15.7 degrees here).
@@ -181,10 +203,11 @@ struct CushionParams {
   /// Newton restitution along the tilted contact normal, in [0, 1]. It is
   /// not the ratio of rebound to incident speed: with the nose above the
   /// centre and friction, a rolling ball hitting straight on comes back at
-  /// (1 + e) cos t (cos t + mu sin t) - 1 of its speed under han_2005_v0:
-  /// 0.686 with these defaults. Mathavan's fitted 0.98 belongs to his own
-  /// model (mathavan_2010, whose default it is).
-  double restitution = 0.75;
+  /// 0.914 of its speed under han_2005 at 0.84, and at (1 + e) cos t
+  /// (cos t + mu sin t) - 1 (0.686 at 0.75) under han_2005_v0. Mathavan's
+  /// fitted 0.98 belongs to his own model (mathavan_2010, whose default
+  /// it is). Each law's default: default_cushion_restitution.
+  double restitution = default_cushion_restitution(CushionModel::han_2005);
   /// Ball-rail sliding friction, >= 0: Mathavan et al. 2010 (Proc. IMechE
   /// C 224) fitted 0.14 together with e = 0.98 in their own model.
   double friction = 0.14;

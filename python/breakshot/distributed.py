@@ -551,11 +551,12 @@ def _pot_map_json(pm) -> dict:
 def _physics_args(args) -> Optional[dict]:
     """The physics options of `match` as breakshot.physics_of's dict (None
     when none is given)."""
-    if not (args.cushion_model or args.ball_ball_model or args.ball_ball_friction):
+    airborne = getattr(args, "airborne", None)
+    if not (args.cushion_model or args.ball_ball_model or args.ball_ball_friction or airborne):
         return None
     from .game import physics_of
 
-    friction: Any = args.ball_ball_friction or "tpa28"
+    friction: Any = args.ball_ball_friction or "tpb3"
     if friction not in ("tpa28", "tpb3"):
         parts = friction.split(",")
         try:
@@ -570,8 +571,10 @@ def _physics_args(args) -> Optional[dict]:
         else:
             raise ValueError(f"--ball-ball-friction: expected tpa28, tpb3, A,B,C or MU, "
                              f"not {friction!r}")
-    return physics_of(args.cushion_model or "han_2005_v0", args.ball_ball_model or "friction",
-                      friction)
+    if airborne not in (None, "on", "off"):
+        raise ValueError(f"--airborne: expected on or off, not {airborne!r}")
+    return physics_of(args.cushion_model or "han_2005", args.ball_ball_model or "friction",
+                      friction, airborne != "off")
 
 
 def _client_for(args):
@@ -617,7 +620,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     m.add_argument("--cushion-model", help="as breakshot match --cushion-model")
     m.add_argument("--ball-ball-model", help="as breakshot match --ball-ball-model")
     m.add_argument("--ball-ball-friction",
-                   help="as breakshot match --ball-ball-friction: tpa28, tpb3, A,B,C or MU")
+                   help="as breakshot match --ball-ball-friction: tpb3, tpa28, A,B,C or MU")
+    m.add_argument("--airborne", help="as breakshot match --airborne: on (default) or off")
     common(m)
 
     lad = sub.add_parser("ladder", help="every adjacent pair of levels")

@@ -715,13 +715,15 @@ def _physics(physics: Optional[dict]) -> Optional[str]:
     return json.dumps(physics)
 
 
-def physics_of(cushion_model: str = "han_2005_v0", ball_ball_model: str = "friction",
-               ball_ball_friction: Union[float, dict, str] = "tpa28") -> dict:
+def physics_of(cushion_model: str = "han_2005", ball_ball_model: str = "friction",
+               ball_ball_friction: Union[float, dict, str] = "tpb3",
+               airborne: bool = True) -> dict:
     """A physics dict for Game, match and match_json. ``ball_ball_friction``
-    may also be ``"tpa28"`` (Alciatore's TP A-28 curve, the default) or
-    ``"tpb3"`` (his refit to the measured throw, TP B-3), as ``breakshot
-    match --ball-ball-friction`` takes them. The defaults are the legacy
-    physics every game was played with before issue 22."""
+    may also be ``"tpb3"`` (Alciatore's refit to the measured throw, TP
+    B-3, the default) or ``"tpa28"`` (his TP A-28 curve), as ``breakshot
+    match --ball-ball-friction`` takes them. The defaults are the engine's;
+    ``physics_of("han_2005_v0", "friction", "tpa28", airborne=False)`` is
+    breakshot 0.1's legacy physics."""
     curves = {"tpa28": {"a": 0.009951, "b": 0.108, "c": 1.088},
               "tpb3": {"a": 0.016, "b": 0.219, "c": 0.691}}
     if isinstance(ball_ball_friction, str):
@@ -729,8 +731,11 @@ def physics_of(cushion_model: str = "han_2005_v0", ball_ball_model: str = "frict
             raise ValueError(f"ball_ball_friction: expected tpa28, tpb3, a number or "
                              f"{{'a', 'b', 'c'}}, not {ball_ball_friction!r}")
         ball_ball_friction = dict(curves[ball_ball_friction])
-    return {"cushion_model": cushion_model, "ball_ball_model": ball_ball_model,
-            "ball_ball_friction": ball_ball_friction}
+    out = {"cushion_model": cushion_model, "ball_ball_model": ball_ball_model,
+           "ball_ball_friction": ball_ball_friction}
+    if airborne:
+        out["airborne"] = True
+    return out
 
 
 def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,

@@ -169,11 +169,10 @@ Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_rule
   // The cushion law as a scenario's table.cushion_model sets it:
   // mathavan_2010 with Mathavan et al.'s own restitution and contact
   // height (the restitution is each ball's wall_restitution).
-  double e = CushionParams{}.restitution;
+  const double e = default_cushion_restitution(gp.cushion_model);
   table_.cushion.model = gp.cushion_model;
+  table_.cushion.restitution = e;
   if (gp.cushion_model == CushionModel::mathavan_2010) {
-    e = kMathavanRestitution;
-    table_.cushion.restitution = kMathavanRestitution;
     table_.cushion.nose_height = kMathavanNoseHeight;
   }
   base_.table = table_;

@@ -428,12 +428,10 @@ bool ScenarioReader::read_cushion(const json& t, Scenario& s) {
                   unknown("cushion model", name, json_io::cushion_model_names()));
     }
   }
-  // Mathavan et al. 2010's own constants are that model's defaults.
-  const bool mathavan = cp.model == CushionModel::mathavan_2010;
-  if (mathavan) {
-    cp.restitution = kMathavanRestitution;
-    cp.nose_height = kMathavanNoseHeight;
-  }
+  // Each law's own restitution (default_cushion_restitution); Mathavan
+  // et al. 2010's contact height is that model's.
+  cp.restitution = default_cushion_restitution(cp.model);
+  if (cp.model == CushionModel::mathavan_2010) cp.nose_height = kMathavanNoseHeight;
   default_wall_restitution_ =
       s.physics.model == Model::pool ? cp.restitution : 1.0;
   if (const json* v = find(t, "cushion_restitution")) {
