@@ -1,4 +1,4 @@
-"""Games and matches with the physics to choose (issue 22): the keywords
+"""Games and matches with the physics to choose: the keywords
 give the command's bytes (``breakshot match --cushion-model ...``), the
 records carry the physics and replay with the command, and bad values are
 ValueErrors naming the field."""
@@ -15,16 +15,27 @@ MATHAVAN = {"cushion_model": "mathavan_2010",
             "ball_ball_friction": {"a": 0.016, "b": 0.219, "c": 0.691}}
 
 
-def test_default_physics_is_the_legacy_one_and_not_in_the_summary(run_cli):
+def test_default_physics_is_the_engines_and_not_in_the_summary(run_cli):
     g = bs.Game("nine_ball", seed=3)
     assert g.physics == bs.physics_of()
-    assert g.physics == {"cushion_model": "han_2005_v0", "ball_ball_model": "friction",
-                         "ball_ball_friction": {"a": 0.009951, "b": 0.108, "c": 1.088}}
+    assert g.physics == {"cushion_model": "han_2005", "ball_ball_model": "friction",
+                         "ball_ball_friction": {"a": 0.016, "b": 0.219, "c": 0.691},
+                         "airborne": True}
     text = bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament")
     assert "physics" not in text
-    # The legacy physics by its names: the same bytes.
+    # The default physics by its names: the same bytes.
     assert bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament",
                          physics=bs.physics_of()) == text
+    # The legacy physics is named, and it equals the command's.
+    legacy = bs.physics_of("han_2005_v0", "friction", "tpa28", airborne=False)
+    old = bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament",
+                        physics=legacy)
+    assert json.loads(old)["physics"] == legacy
+    cli = run_cli("match", "--game", "nine_ball", "--players", "baseline,baseline",
+                  "--games", "1", "--seed", "3", "--noise", "tournament",
+                  "--cushion-model", "han_2005_v0", "--ball-ball-friction", "tpa28",
+                  "--airborne", "off", check=True)
+    assert old == cli.stdout
 
 
 def test_match_with_other_physics_equals_the_cli_and_replays(tmp_path, run_cli):
@@ -52,11 +63,11 @@ def test_game_with_other_physics_records_it():
                                                "ball_ball_model": "mathavan_2014",
                                                "ball_ball_friction": 0.06})
     assert g.physics == {"cushion_model": "han_2005", "ball_ball_model": "mathavan_2014",
-                         "ball_ball_friction": 0.06}
+                         "ball_ball_friction": 0.06, "airborne": True}
     # Fields left out keep their defaults.
     h = bs.Game("eight_ball", seed=5, physics={"cushion_model": "mathavan_2010"})
     assert h.physics["ball_ball_model"] == "friction"
-    assert h.physics["ball_ball_friction"] == {"a": 0.009951, "b": 0.108, "c": 1.088}
+    assert h.physics["ball_ball_friction"] == {"a": 0.016, "b": 0.219, "c": 0.691}
 
 
 @pytest.mark.parametrize("physics, message", [
