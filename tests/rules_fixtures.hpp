@@ -134,6 +134,36 @@ inline Combination combination(const Rules& rules, int pocket, Vec2 toward, doub
   return {c + u * d_obj, c + u * carrier, c + u * (carrier + d_cue)};
 }
 
+/// An event of a hand-made event list (ball fields are ball numbers).
+inline Event ev(double t, EventType type, int ball, int other = -1, int wall = -1,
+                int pocket = -1) {
+  Event e;
+  e.time = t;
+  e.type = type;
+  e.ball = ball;
+  e.other = other;
+  e.wall = wall;
+  e.pocket = pocket;
+  return e;
+}
+
+/// A ball in flight landing on the slate (EventType::ball_slate), `to`
+/// the state after the landing.
+inline Event slate(double t, int ball, MotionState to) {
+  Event e = ev(t, EventType::ball_slate, ball);
+  e.from = MotionState::airborne;
+  e.to = to;
+  return e;
+}
+
+/// The rules of `game` with balls that may leave the cloth.
+inline Rules airborne_rules(GameType game) {
+  GameConfig c;
+  c.game = game;
+  c.physics.airborne = true;
+  return Rules(c);
+}
+
 inline bool has_foul(const Ruling& r, Foul f) {
   return std::find(r.fouls.begin(), r.fouls.end(), f) != r.fouls.end();
 }

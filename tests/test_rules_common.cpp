@@ -2,12 +2,17 @@
 // validation, determinism, the facts read from events, the stalemate.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "breakshot/match.hpp"
+#include "breakshot/match_io.hpp"
+#include "breakshot/record_io.hpp"
+#include "breakshot/session.hpp"
 #include "rules_fixtures.hpp"
 
 using namespace breakshot;
@@ -283,21 +288,6 @@ TEST(RulesCommonDeterminism, TheSameStateAndActionGiveTheSameOutcome) {
 // ---------------------------------------------------------------------------
 // Facts from hand-made event lists
 
-namespace {
-
-Event ev(double t, EventType type, int ball, int other = -1, int wall = -1, int pocket = -1) {
-  Event e;
-  e.time = t;
-  e.type = type;
-  e.ball = ball;
-  e.other = other;
-  e.wall = wall;
-  e.pocket = pocket;
-  return e;
-}
-
-}  // namespace
-
 TEST(RulesCommonFacts, EmptyEventsGiveNoFacts) {
   const Rules rules = eight_ball_rules();
   const ShotFacts f = rules.facts({});
@@ -427,4 +417,130 @@ TEST(RulesCommonStalemate, NoLimitWithMaxShotsZero) {
   const Rules rules = eight_ball_rules(0);
   const Outcome o = break_rack(rules, 1, kBreakSpeed);
   EXPECT_EQ(o.state.phase, Phase::shot);
+}
+
+// ---------------------------------------------------------------------------
+// Balls that leave the table (airborne physics)
+
+TEST(RulesCommonFacts, BallsOffTheTableInOrderTheCueBallIncluded) {
+  const Rules rules = airborne_rules(GameType::eight_ball);
+  const std::vector<Event> events = {
+      ev(0.0, EventType::cue_strike, 0),
+      slate(0.1, 0, MotionState::airborne),  // a bounce is no fact of the rules
+      ev(0.2, EventType::ball_ball, 0, 3),
+      ev(0.3, EventType::ball_off_table, 3, -1, 1),  // over a rail
+      ev(0.4, EventType::ball_pocket, 5, -1, -1, 2),
+      ev(0.5, EventType::ball_off_table, 0),  // landed outside the table
+  };
+  const ShotFacts f = rules.facts(events);
+  EXPECT_EQ(f.first_hit, 3);
+  EXPECT_EQ(f.off_table, (std::vector<int>{3, 0}));
+  EXPECT_EQ(f.pocketed, std::vector<int>{5});
+  EXPECT_FALSE(f.cushion_after_contact);  // flying over a rail is no cushion contact
+}
+
+TEST(RulesCommonFouls, BallOffTableIsAFoulKindOnlyWithAirbornePhysics) {
+  // Summaries list every foul kind of the game: the kind that cannot
+  // happen on the cloth is not listed there, so their bytes stay.
+  const std::vector<Foul> cloth = eight_ball_rules().foul_kinds();
+  EXPECT_EQ(std::count(cloth.begin(), cloth.end(), Foul::ball_off_table), 0);
+  EXPECT_EQ(cloth, nine_ball_rules().foul_kinds());
+  for (const GameType g : {GameType::eight_ball, GameType::nine_ball}) {
+    std::vector<Foul> air = airborne_rules(g).foul_kinds();
+    ASSERT_EQ(air.size(), cloth.size() + 1);
+    EXPECT_EQ(air.back(), Foul::ball_off_table);
+    air.pop_back();
+    EXPECT_EQ(air, cloth);
+  }
+  EXPECT_EQ(to_string(Foul::ball_off_table), "ball_off_table");
+  EXPECT_EQ(parse_foul("ball_off_table"), Foul::ball_off_table);
+}
+
+TEST(RulesCommonEvents, ApplyEventsRulesAsApplyDoes) {
+  // apply() is apply_events() with the simulated events and the balls'
+  // resting places.
+  const Rules rules = eight_ball_rules();
+  const GameState s = rules.start(4, 0);
+  const Shoot shot = shot_at(s.position[0], rules.table().foot_spot, kBreakSpeed);
+  const Outcome o = rules.apply(s, shot);
+  const Outcome e = rules.apply_events(s, shot, o.events, o.state.position, o.facts.miscue);
+  EXPECT_EQ(e.facts, o.facts);
+  EXPECT_EQ(e.ruling, o.ruling);
+  EXPECT_EQ(e.state, o.state);
+}
+
+TEST(RulesCommonEvents, ApplyEventsRefusesWhatCannotBe) {
+  const Rules rules = nine_ball_rules();
+  GameState s = bare_table(rules, {0.8, 0.5});
+  put(s, 1, {1.5, 0.5});
+  const Shoot shot = shot_at(s.position[0], s.position[1], 2.0);
+  const std::vector<Event> events = {ev(0.0, EventType::cue_strike, 0),
+                                     ev(0.2, EventType::ball_ball, 0, 1)};
+  EXPECT_THROW((void)rules.apply_events(s, shot, events, std::vector<Vec2>(3)),
+               std::invalid_argument);
+  EXPECT_THROW(
+      (void)rules.apply_events(s, shot, {ev(0.2, EventType::ball_ball, 0, 12)}, s.position),
+      std::invalid_argument);
+  std::vector<Vec2> bad = s.position;
+  bad[1].x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW((void)rules.apply_events(s, shot, events, bad), std::invalid_argument);
+  GameState over = s;
+  over.phase = Phase::game_over;
+  EXPECT_THROW((void)rules.apply_events(over, shot, events, s.position), std::invalid_argument);
+}
+
+TEST(RulesCommonEvents, AGameWithABallOffTheTableRecordsAndReplays) {
+  // A real 9-ball game on airborne physics: the break, then hard elevated
+  // strokes at the nearer long rail until a ball leaves the table. The
+  // record names the foul, reads back to the same bytes and replays
+  // identically.
+  GameConfig config;
+  config.game = GameType::nine_ball;
+  config.physics.airborne = true;
+  GameSession game(config, Seats{{"a", "b"}, {}}, 11, 0);
+  const GameState& s0 = game.state();
+  (void)game.play(shot_at(s0.position[0], game.rules().table().foot_spot, kBreakSpeed));
+  bool off = false;
+  for (int shot = 0; shot < 6 && !off && !game.over(); ++shot) {
+    const GameState& s = game.state();
+    if (!s.on_table[0]) {
+      (void)game.play(PlaceCueBall{{0.8, 0.635}});
+      continue;
+    }
+    if (s.phase != Phase::shot) {
+      (void)game.play(Decide{Choice::shoot});
+      continue;
+    }
+    const Vec2 c = s.position[0];
+    Shoot sh = strike(5.0, c.y < 0.635 ? -90.0 : 90.0, 30.0);
+    const Outcome o = game.play(sh);
+    off = !o.facts.off_table.empty();
+    if (off) {
+      EXPECT_TRUE(has_foul(o.ruling, Foul::ball_off_table));
+      for (int b : o.facts.off_table) {
+        EXPECT_EQ(on(o.state, b), b == 9) << "ball " << b;  // only the 9 comes back
+      }
+    }
+  }
+  ASSERT_TRUE(off) << "no ball left the table";
+  const std::string text = write_record(game.record());
+  EXPECT_NE(text.find("\"ball_off_table\""), std::string::npos);
+  const auto read = read_record(text);
+  ASSERT_TRUE(std::holds_alternative<GameRecord>(read)) << std::get<RecordError>(read).reason;
+  EXPECT_EQ(write_record(std::get<GameRecord>(read)), text);
+  const ReplayReport report = replay(std::get<GameRecord>(read));
+  EXPECT_TRUE(report.identical) << report.message;
+}
+
+TEST(RulesCommonEvents, SummariesListBallOffTableOnlyWithAirbornePhysics) {
+  MatchOptions options;
+  options.game = GameType::nine_ball;
+  options.players = {"baseline", "baseline"};
+  const std::string cloth = match_summary_json(empty_summary(options, {}));
+  EXPECT_EQ(cloth.find("ball_off_table"), std::string::npos);
+  options.physics.airborne = true;
+  const std::string air = match_summary_json(empty_summary(options, {}));
+  EXPECT_NE(air.find("\"ball_off_table\": 0"), std::string::npos) << air;
+  // The reader expects the kinds of the summary's own physics.
+  EXPECT_EQ(match_summary_json(read_match_summary(air)), air);
 }

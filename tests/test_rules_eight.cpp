@@ -762,3 +762,192 @@ TEST(RulesEightKitchen, ABallBehindTheHeadStringIsFairOnceTheCueBallCrossedIt) {
   EXPECT_EQ(o.state.player, 0);  // nothing pocketed: the turn passes
   EXPECT_EQ(o.state.ball_in_hand, BallInHand::none);
 }
+
+// ---------------------------------------------------------------------------
+// Balls driven off the table (airborne physics; WPA 6.1, 6.5, 8-ball 3.3,
+// 3.6, 3.8). The shots are hand-made event lists (Rules::apply_events),
+// but for the last test, which the physics plays.
+
+TEST(RulesEightOffTable, AnObjectBallOffTheTableIsAFoulAndStaysOff) {
+  const Rules rules = airborne_rules(GameType::eight_ball);
+  GameState s = bare_table(rules, {0.8, 0.5});
+  put(s, 3, {1.5, 0.5});
+  put(s, 12, {1.9, 0.9});
+  const Shoot shot = shot_at(s.position[0], s.position[3], 6.0);
+  const std::vector<Event> events = {
+      ev(0.0, EventType::cue_strike, 0),
+      ev(0.15, EventType::ball_ball, 0, 3),
+      ev(0.34, EventType::ball_cushion, 3, -1, 1),  // on the nose, then over the rail
+      ev(0.35, EventType::ball_off_table, 3, -1, 1),
+  };
+  const Outcome o = rules.apply_events(s, shot, events, s.position);
+  SCOPED_TRACE(describe(o));
+  EXPECT_EQ(o.facts.off_table, std::vector<int>{3});
+  EXPECT_EQ(o.ruling.fouls, std::vector<Foul>{Foul::ball_off_table});
+  EXPECT_FALSE(on(o.state, 3));  // no object ball but the 8 is ever spotted
+  EXPECT_TRUE(o.ruling.spotted.empty());
+  EXPECT_TRUE(on(o.state, 0));
+  EXPECT_EQ(o.state.phase, Phase::shot);
+  EXPECT_EQ(o.state.player, 1);
+  EXPECT_EQ(o.state.ball_in_hand, BallInHand::anywhere);
+  EXPECT_FALSE(o.ruling.turn_continues);
+  EXPECT_EQ(o.ruling.text,
+            "Player 1 pockets nothing. The 3 leaves the table. Foul (ball_off_table): Player 2 "
+            "has the cue ball in hand.");
+}
+
+TEST(RulesEightOffTable, ABallOffTheTableSpoilsALegalPot) {
+  // The called ball falls in the called pocket, but another ball leaves
+  // the table: a foul, the pot stays down, no group is assigned.
+  const Rules rules = airborne_rules(GameType::eight_ball);
+  GameState s = bare_table(rules, {0.8, 0.5});
+  put(s, 3, {1.5, 0.5});
+  put(s, 12, {1.9, 0.9});
+  const int br = pocket_index(rules, "bottom_right");
+  const Shoot shot = with_call(shot_at(s.position[0], s.position[3], 6.0), 3, br);
+  const std::vector<Event> events = {
+      ev(0.0, EventType::cue_strike, 0),
+      ev(0.15, EventType::ball_ball, 0, 3),
+      ev(0.2, EventType::ball_ball, 0, 12),
+      ev(0.4, EventType::ball_off_table, 12),
+      ev(0.6, EventType::ball_pocket, 3, -1, -1, br),
+  };
+  const Outcome o = rules.apply_events(s, shot, events, s.position);
+  SCOPED_TRACE(describe(o));
+  EXPECT_EQ(o.ruling.fouls, std::vector<Foul>{Foul::ball_off_table});
+  EXPECT_FALSE(o.ruling.call_made);
+  EXPECT_EQ(o.ruling.assigned, Group::none);
+  EXPECT_EQ(o.state.group[0], Group::none);
+  EXPECT_FALSE(on(o.state, 3));
+  EXPECT_FALSE(on(o.state, 12));
+  EXPECT_EQ(o.state.player, 1);
+  EXPECT_EQ(o.state.ball_in_hand, BallInHand::anywhere);
+}
+
+TEST(RulesEightOffTable, TheCueBallOffTheTableGivesBallInHand) {
+  const Rules rules = airborne_rules(GameType::eight_ball);
+  GameState s = bare_table(rules, {0.8, 0.5});
+  put(s, 3, {1.5, 0.5});
+  const Shoot shot = shot_at(s.position[0], s.position[3], 6.0);
+  const std::vector<Event> events = {
+      ev(0.0, EventType::cue_strike, 0),
+      ev(0.15, EventType::ball_ball, 0, 3),
+      ev(0.3, EventType::ball_cushion, 3, -1, 3),
+      ev(0.35, EventType::ball_off_table, 0, -1, 0),
+  };
+  const Outcome o = rules.apply_events(s, shot, events, s.position);
+  SCOPED_TRACE(describe(o));
+  EXPECT_EQ(o.ruling.fouls, std::vector<Foul>{Foul::ball_off_table});
+  EXPECT_FALSE(on(o.state, 0));
+  EXPECT_TRUE(on(o.state, 3));
+  EXPECT_EQ(o.state.player, 1);
+  EXPECT_EQ(o.state.ball_in_hand, BallInHand::anywhere);
+  const LegalActions la = rules.legal_actions(o.state);
+  EXPECT_TRUE(la.must_place);
+  EXPECT_FALSE(la.shoot);
+  EXPECT_EQ(la.place, BallInHand::anywhere);
+  EXPECT_NE(o.ruling.text.find("The cue ball leaves the table."), std::string::npos)
+      << o.ruling.text;
+}
+
+TEST(RulesEightOffTable, TheEightOffTheTableLosesTheRack) {
+  const Rules rules = airborne_rules(GameType::eight_ball);
+  GameState s = bare_table(rules, {0.8, 0.5});
+  s.group = {Group::solids, Group::stripes};
+  put(s, 3, {1.5, 0.5});
+  put(s, 8, {1.6, 0.62});
+  const Shoot shot = shot_at(s.position[0], s.position[3], 6.0);
+  const std::vector<Event> events = {
+      ev(0.0, EventType::cue_strike, 0),
+      ev(0.15, EventType::ball_ball, 0, 3),  // a legal first contact
+      ev(0.2, EventType::ball_ball, 3, 8),
+      ev(0.39, EventType::ball_cushion, 8, -1, 1),
+      ev(0.4, EventType::ball_off_table, 8, -1, 1),
+  };
+  const Outcome o = rules.apply_events(s, shot, events, s.position);
+  SCOPED_TRACE(describe(o));
+  EXPECT_EQ(o.ruling.fouls, std::vector<Foul>{Foul::ball_off_table});
+  EXPECT_EQ(o.state.phase, Phase::game_over);
+  EXPECT_EQ(o.state.winner, 1);
+  EXPECT_EQ(o.ruling.winner, 1);
+  EXPECT_EQ(o.state.result, "Player 1 drove the 8 off the table");
+  EXPECT_FALSE(on(o.state, 8));
+}
+
+TEST(RulesEightOffTable, TheEightOffTheTableOnTheBreakIsSpottedOrReracked) {
+  // WPA 3.6: the 8 driven off the table on the break is spotted or the
+  // balls are re-racked; leaving the table is a foul (6.5), so the
+  // incoming player chooses and shoots from the kitchen.
+  const Rules rules = airborne_rules(GameType::eight_ball);
+  const GameState s = rules.start(1, 0);
+  const Shoot shot = shot_at(s.position[0], rules.table().foot_spot, kBreakSpeed);
+  std::vector<Event> events = {ev(0.0, EventType::cue_strike, 0),
+                               ev(0.2, EventType::ball_ball, 0, 1)};
+  for (int b : {2, 3, 9, 10}) events.push_back(ev(0.4, EventType::ball_cushion, b, -1, 1));
+  events.push_back(ev(0.5, EventType::ball_off_table, 8, -1, 3));
+  const Outcome o = rules.apply_events(s, shot, events, s.position);
+  SCOPED_TRACE(describe(o));
+  EXPECT_EQ(o.ruling.fouls, std::vector<Foul>{Foul::ball_off_table});
+  EXPECT_EQ(o.state.phase, Phase::eight_on_break_choice);
+  EXPECT_EQ(o.state.player, 1);
+  EXPECT_TRUE(o.state.scratch_on_break);
+  EXPECT_FALSE(on(o.state, 8));
+  EXPECT_FALSE(on(o.state, 0));  // the incoming player has it in hand
+  const Outcome d = rules.apply(o.state, Decide{Choice::respot_eight});
+  EXPECT_TRUE(on(d.state, 8));
+  EXPECT_EQ(d.ruling.spotted, std::vector<int>{8});
+  EXPECT_EQ(d.state.position[8], rules.spot_position(o.state, 8));
+  EXPECT_EQ(d.state.ball_in_hand, BallInHand::kitchen);
+  EXPECT_TRUE(rules.legal_actions(d.state).must_place);
+}
+
+TEST(RulesEightOffTable, AnObjectBallOffTheTableOnALegalBreakGivesKitchenBallInHand) {
+  const Rules rules = airborne_rules(GameType::eight_ball);
+  const GameState s = rules.start(1, 0);
+  const Shoot shot = shot_at(s.position[0], rules.table().foot_spot, kBreakSpeed);
+  const int tl = pocket_index(rules, "top_left");
+  const std::vector<Event> events = {ev(0.0, EventType::cue_strike, 0),
+                                     ev(0.2, EventType::ball_ball, 0, 1),
+                                     ev(0.5, EventType::ball_pocket, 2, -1, -1, tl),
+                                     ev(0.6, EventType::ball_off_table, 11, -1, 1)};
+  const Outcome o = rules.apply_events(s, shot, events, s.position);
+  SCOPED_TRACE(describe(o));
+  EXPECT_TRUE(o.ruling.legal_break);
+  EXPECT_EQ(o.ruling.fouls, std::vector<Foul>{Foul::ball_off_table});
+  EXPECT_EQ(o.state.phase, Phase::shot);
+  EXPECT_EQ(o.state.player, 1);
+  EXPECT_EQ(o.state.ball_in_hand, BallInHand::kitchen);
+  EXPECT_TRUE(rules.legal_actions(o.state).must_place);
+  EXPECT_FALSE(on(o.state, 2));
+  EXPECT_FALSE(on(o.state, 11));
+  EXPECT_TRUE(o.ruling.spotted.empty());
+  EXPECT_EQ(o.ruling.text.find("Player 1 pockets 2. The 11 leaves the table. Foul (ball_off_table "
+                               "on the break)"),
+            0u)
+      << o.ruling.text;
+}
+
+TEST(RulesEightOffTable, ALegalJumpShotOverABlockerIsNoFoul) {
+  // The cue ball leaves the cloth over a blocking ball and meets its own
+  // group's ball first: a legal shot (WPA definitions: jump shot).
+  const Rules rules = airborne_rules(GameType::eight_ball);
+  GameState s = bare_table(rules, {0.8, 0.5});
+  s.group = {Group::solids, Group::stripes};
+  put(s, 12, {1.0, 0.5});  // the blocker, a stripe
+  put(s, 3, {1.5, 0.5});
+  const int br = pocket_index(rules, "bottom_right");
+  Shoot shot = with_call(shot_at(s.position[0], s.position[3], 4.0), 3, br);
+  shot.strike.theta = 45.0;
+  const std::vector<Event> events = {
+      ev(0.0, EventType::cue_strike, 0),
+      slate(0.25, 0, MotionState::airborne),
+      ev(0.3, EventType::ball_ball, 0, 3),
+      ev(0.8, EventType::ball_pocket, 3, -1, -1, br),
+  };
+  const Outcome o = rules.apply_events(s, shot, events, s.position);
+  SCOPED_TRACE(describe(o));
+  EXPECT_TRUE(o.ruling.fouls.empty());
+  EXPECT_TRUE(o.ruling.call_made);
+  EXPECT_TRUE(o.ruling.turn_continues);
+  EXPECT_EQ(o.state.player, 0);
+}

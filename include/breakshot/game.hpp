@@ -135,6 +135,9 @@ enum class Foul : std::uint8_t {
   no_rail,           ///< after contact, nothing pocketed and no ball reached a cushion
   illegal_break,     ///< nothing pocketed and fewer than four object balls reached a cushion
   behind_head_string,  ///< from the kitchen, first contact with a ball behind the head string
+  /// a ball left the table: it flew over a rail or landed outside the
+  /// table (EventType::ball_off_table; only with GamePhysics::airborne)
+  ball_off_table,
 };
 std::string_view to_string(Foul f);
 std::optional<Foul> parse_foul(std::string_view s);
@@ -216,6 +219,9 @@ struct ShotFacts {
   std::vector<int> pocket_of;      ///< pocket index for each entry of `pocketed`
   bool cushion_after_contact = false;  ///< any ball touched a cushion after the first contact
   int object_balls_to_cushion = 0;     ///< distinct object balls that touched a cushion
+  /// Balls that left the table (EventType::ball_off_table), in order, the
+  /// cue ball (0) included.
+  std::vector<int> off_table;
   bool operator==(const ShotFacts&) const = default;
 };
 
@@ -262,7 +268,9 @@ class Rules {
   LegalActions legal_actions(const GameState& state) const;
   /// Balls the player to act may legally hit first.
   std::vector<int> targets(const GameState& state) const;
-  /// The foul kinds of this game, in the order match summaries list them.
+  /// The foul kinds of this game, in the order match summaries list them:
+  /// ball_off_table only when the physics is airborne (no ball can leave
+  /// the table otherwise).
   std::vector<Foul> foul_kinds() const;
   /// Why `action` is not allowed now, or nullopt if it is.
   std::optional<std::string> check(const GameState& state, const Action& action) const;
@@ -271,6 +279,17 @@ class Rules {
   /// Plays `action`. Throws std::invalid_argument with check()'s reason if
   /// it is not allowed.
   Outcome apply(const GameState& state, const Action& action) const;
+  /// Rules `shot` from `state` as if the physics had played it with these
+  /// `events` (ball fields as ball numbers): balls with a ball_pocket or
+  /// ball_off_table event leave the table, every other ball on the table
+  /// comes to rest at `rest[ball number]`. `miscue` as the cue strike
+  /// reported it. For rulings from hand-made event lists; apply() is this
+  /// with the events the engine simulated. Throws std::invalid_argument
+  /// with check()'s reason if the shot is not allowed, if `rest` does not
+  /// have ball_count() entries or a ball on the table a finite position
+  /// there, or if an event names no ball of the game.
+  Outcome apply_events(const GameState& state, const Shoot& shot, std::vector<Event> events,
+                       const std::vector<Vec2>& rest, bool miscue = false) const;
 
   /// The physics of a shot from `state` (balls on the table only, the cue
   /// ball first), and each scenario ball's number.
@@ -288,6 +307,9 @@ class Rules {
   std::shared_ptr<const detail::Ruleset> ruleset_;  // the game's own rulings (src/game/ruleset.hpp)
   Table table_;
   Scenario base_;  // physics, table and ball specs of a full rack
+
+  // The ruling of a shot whose events, facts and resting balls are in `out`.
+  void rule_shot(const GameState& state, const Shoot& shot, Outcome& out) const;
 };
 
 }  // namespace breakshot

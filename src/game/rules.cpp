@@ -90,7 +90,7 @@ void ShotRuling::pass_turn() {
 void ShotRuling::ball_in_hand_for_opponent(BallInHand where) {
   s.phase = Phase::shot;
   s.ball_in_hand = where;
-  if (cue_in) s.on_table[0] = 0;
+  if (cue_gone()) s.on_table[0] = 0;
   pass_turn();
 }
 
@@ -187,7 +187,13 @@ Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_rule
 
 int Rules::ball_count() const { return ruleset_->ball_count(); }
 
-std::vector<Foul> Rules::foul_kinds() const { return ruleset_->foul_kinds(); }
+std::vector<Foul> Rules::foul_kinds() const {
+  std::vector<Foul> kinds = ruleset_->foul_kinds();
+  // Only balls in flight leave the table: without airborne physics the
+  // kind cannot occur, and summaries keep the list they always had.
+  if (config_.physics.airborne) kinds.push_back(Foul::ball_off_table);
+  return kinds;
+}
 
 double Rules::head_string() const { return table_.head_spot.x; }
 
@@ -340,10 +346,12 @@ ShotFacts Rules::facts(const std::vector<Event>& events) const {
         f.pocketed.push_back(e.ball);
         f.pocket_of.push_back(e.pocket);
         break;
+      case EventType::ball_off_table:
+        f.off_table.push_back(e.ball);
+        break;
       case EventType::cue_strike:
       case EventType::state_change:
       case EventType::ball_slate:
-      case EventType::ball_off_table:
         break;
     }
   }
@@ -420,27 +428,76 @@ Outcome Rules::apply(const GameState& state, const Action& action) const {
     if (e.other >= 0) e.other = numbers[static_cast<std::size_t>(e.other)];
   }
   out.facts = facts(out.events);
-  ShotFacts& f = out.facts;
-  f.miscue = sim.cue_result() && sim.cue_result()->miscue;
+  out.facts.miscue = sim.cue_result() && sim.cue_result()->miscue;
   for (std::size_t k = 0; k < numbers.size(); ++k) {
     const auto b = static_cast<std::size_t>(numbers[k]);
     const BallState st = sim.ball(k);
-    if (st.state == MotionState::pocketed) {
+    if (st.state == MotionState::pocketed || st.state == MotionState::off_table) {
       s.on_table[b] = 0;
     } else {
       s.position[b] = st.position;
     }
   }
+  rule_shot(state, shot, out);
+  return out;
+}
+
+Outcome Rules::apply_events(const GameState& state, const Shoot& shot, std::vector<Event> events,
+                            const std::vector<Vec2>& rest, bool miscue) const {
+  if (auto why = check(state, Action{shot})) throw std::invalid_argument(*why);
+  const int n = ball_count();
+  if (rest.size() != static_cast<std::size_t>(n)) {
+    throw std::invalid_argument("rest: " + std::to_string(n) +
+                                " positions (one per ball) needed, not " +
+                                std::to_string(rest.size()));
+  }
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const Event& e = events[i];
+    if (e.ball < -1 || e.ball >= n || e.other < -1 || e.other >= n) {
+      throw std::invalid_argument("events[" + std::to_string(i) +
+                                  "]: names no ball of the game (0-" + std::to_string(n - 1) + ")");
+    }
+  }
+  Outcome out;
+  out.state = state;
+  GameState& s = out.state;
+  out.events = std::move(events);
+  out.facts = facts(out.events);
+  out.facts.miscue = miscue;
+  for (std::size_t b = 0; b < s.on_table.size(); ++b) {
+    if (!s.on_table[b]) continue;
+    if (!std::isfinite(rest[b].x) || !std::isfinite(rest[b].y)) {
+      throw std::invalid_argument("rest[" + std::to_string(b) + "]: not a finite position");
+    }
+    s.position[b] = rest[b];
+  }
+  for (int b : out.facts.pocketed) s.on_table[static_cast<std::size_t>(b)] = 0;
+  for (int b : out.facts.off_table) s.on_table[static_cast<std::size_t>(b)] = 0;
+  rule_shot(state, shot, out);
+  return out;
+}
+
+void Rules::rule_shot(const GameState& state, const Shoot& shot, Outcome& out) const {
+  GameState& s = out.state;
+  Ruling& r = out.ruling;
+  const ShotFacts& f = out.facts;
+  const int shooter = state.player;
+  const int opp = 1 - shooter;
+  const std::string who = player_name(shooter);
   s.shots += 1;
   s.kitchen_shot = false;
   s.after_push_out = false;
 
-  detail::ShotRuling ruling{*this, state, shot, out.events, f,     s,  r, shooter,
-                            opp,   who,   {},   false,      false, {}, {}};
+  detail::ShotRuling ruling{*this, state, shot,  out.events, f,  s,  r,     shooter, opp,
+                            who,   {},    false, false,      {}, {}, false, {}};
   ruling.is_break = state.phase == Phase::break_shot;
   ruling.cue_in = has(f.pocketed, 0);
+  ruling.cue_off = has(f.off_table, 0);
   for (int b : f.pocketed) {
     if (b != 0) ruling.objects.push_back(b);
+  }
+  for (int b : f.off_table) {
+    if (b != 0) ruling.objects_off.push_back(b);
   }
   ruling.targets = ruleset_->targets(state);
   std::string& what = ruling.what;
@@ -448,9 +505,16 @@ Outcome Rules::apply(const GameState& state, const Action& action) const {
                                        : " pockets " + detail::join_balls(ruling.objects));
   if (ruling.cue_in) what += ruling.objects.empty() ? " but scratches" : " and scratches";
   what += ". ";
+  if (!f.off_table.empty()) {
+    // "The 3 leaves the table." / "The cue ball and the 3 leave the table."
+    const std::string balls = detail::join_balls(f.off_table);
+    what += (f.off_table.front() == 0 ? "T" + balls.substr(1) : "The " + balls) +
+            (f.off_table.size() == 1 ? " leaves" : " leave") + " the table. ";
+  }
 
-  // A foul common to every game on a pool table.
+  // Fouls common to every game on a pool table.
   if (ruling.cue_in) ruling.foul(Foul::scratch);
+  if (!f.off_table.empty()) ruling.foul(Foul::ball_off_table);
 
   ruleset_->rule_shot(ruling);
 
@@ -460,7 +524,6 @@ Outcome Rules::apply(const GameState& state, const Action& action) const {
     ruling.game_over(-1, "stalemate: no result after " + std::to_string(s.shots) + " shots");
     r.text += " The game is drawn (" + s.result + ").";
   }
-  return out;
 }
 
 }  // namespace breakshot

@@ -163,16 +163,25 @@ class EightBall final : public Ruleset {
     const std::string& who = x.who;
     const std::string& what = x.what;
     const bool eight_in = has(f.pocketed, 8);
+    const bool eight_off = has(x.objects_off, 8);
+    // The fouls so far (a scratch, a ball off the table): the incoming
+    // player has the cue ball in hand behind the head string.
+    const bool fouled = !r.fouls.empty();
+    if (fouled) s.on_table[0] = 0;
     r.legal_break = !x.objects.empty() || f.object_balls_to_cushion >= 4;
-    if (eight_in) {
-      // The 8 on the break (WPA 8-ball): no loss; a choice.
+    if (eight_in || eight_off) {
+      // The 8 pocketed or driven off the table on the break (WPA 8-ball
+      // 3.3, 3.6): no loss; a choice.
       s.phase = Phase::eight_on_break_choice;
-      s.scratch_on_break = x.cue_in;
+      s.scratch_on_break = fouled;
       s.ball_in_hand = BallInHand::none;
-      if (x.cue_in) {
-        s.on_table[0] = 0;
+      if (fouled) {
         x.pass_turn();
-        r.text = what + "The 8 fell on the break with a scratch: " + player_name(x.opp) +
+        const bool only_scratch = r.fouls.size() == 1 && r.fouls.front() == Foul::scratch;
+        r.text = what +
+                 (eight_off ? "The 8 left the table on the break" : "The 8 fell on the break") +
+                 (only_scratch ? " with a scratch" : " with a foul (" + join_fouls(r.fouls) + ")") +
+                 ": " + player_name(x.opp) +
                  " chooses to spot the 8 and shoot from the kitchen, or to "
                  "re-rack and break.";
       } else {
@@ -184,17 +193,16 @@ class EightBall final : public Ruleset {
     } else if (!r.legal_break) {
       x.foul(Foul::illegal_break);
       s.phase = Phase::illegal_break_choice;
-      s.scratch_on_break = x.cue_in;
+      s.scratch_on_break = fouled;
       s.ball_in_hand = BallInHand::none;
-      if (x.cue_in) s.on_table[0] = 0;
       x.pass_turn();
       r.text = what + "Illegal break (nothing pocketed, " +
                std::to_string(f.object_balls_to_cushion) +
                " object balls to a cushion): " + player_name(x.opp) +
                " accepts the table or has the balls re-racked.";
-    } else if (x.cue_in) {
+    } else if (fouled) {
       x.ball_in_hand_for_opponent(BallInHand::kitchen);
-      r.text = what + "Foul (scratch on the break): " + player_name(x.opp) +
+      r.text = what + "Foul (" + join_fouls(r.fouls) + " on the break): " + player_name(x.opp) +
                " has the cue ball in hand behind the head string; the table is "
                "open.";
     } else if (!x.objects.empty()) {
@@ -233,7 +241,12 @@ class EightBall final : public Ruleset {
     }
     if (f.first_hit >= 0 && x.objects.empty() && !f.cushion_after_contact) x.foul(Foul::no_rail);
     const bool was_on_eight = has(x.targets, 8);
-    if (eight_in) {
+    if (has(x.objects_off, 8)) {
+      // The 8 driven off the table loses the rack (WPA 8-ball 3.8).
+      x.game_over(opp, who + " drove the 8 off the table");
+      r.text = what + "Foul (" + join_fouls(fouls) + "). " + s.result + ": " +
+               player_name(s.winner) + " wins.";
+    } else if (eight_in) {
       const bool called_eight = shot.call && shot.call->ball == 8;
       const bool right_pocket = called_eight && x.pocket_of(8) == shot.call->pocket;
       if (!fouls.empty()) {

@@ -27,9 +27,9 @@ constexpr std::array<std::string_view, 3> kBallInHandNames{"none", "kitchen", "a
 constexpr std::array<std::string_view, 6> kChoiceNames{
     "shoot", "pass_back", "accept_table", "rerack_and_break", "rerack_opponent_breaks",
     "respot_eight"};
-constexpr std::array<std::string_view, 6> kFoulNames{
-    "scratch", "no_contact", "wrong_ball_first", "no_rail", "illegal_break",
-    "behind_head_string"};
+constexpr std::array<std::string_view, 7> kFoulNames{
+    "scratch",       "no_contact",         "wrong_ball_first", "no_rail",
+    "illegal_break", "behind_head_string", "ball_off_table"};
 
 }  // namespace
 

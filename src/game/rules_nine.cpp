@@ -87,6 +87,10 @@ class NineBall final : public Ruleset {
     const std::vector<Foul>& fouls = r.fouls;
     const bool is_break = x.is_break;
     const bool nine_in = has(f.pocketed, 9);
+    // The 9 driven off the table is spotted (WPA 9-ball 2.6); no other
+    // object ball is. Leaving the table is a foul, so only a foul can
+    // send the 9 there.
+    const bool nine_off = has(x.objects_off, 9);
     const int lowest = x.targets.empty() ? -1 : x.targets.front();
     if (is_break) {
       r.legal_break = !x.objects.empty() || f.object_balls_to_cushion >= 4;
@@ -109,7 +113,7 @@ class NineBall final : public Ruleset {
     auto& streak = s.fouls_in_a_row[static_cast<std::size_t>(x.shooter)];
     s.push_out_allowed = is_break;  // the shot after the break may be a push-out
     if (!fouls.empty()) {
-      if (nine_in) x.spot(9);
+      if (nine_in || nine_off) x.spot(9);
       streak += 1;
       if (streak >= 3) {
         x.game_over(x.opp, who + " fouled three times in a row");
@@ -118,7 +122,7 @@ class NineBall final : public Ruleset {
       } else {
         x.ball_in_hand_for_opponent(BallInHand::anywhere);
         r.text = what + "Foul (" + join_fouls(fouls) + "): " + player_name(x.opp) +
-                 " has the cue ball in hand" + (nine_in ? "; the 9 is spotted" : "") +
+                 " has the cue ball in hand" + (nine_in || nine_off ? "; the 9 is spotted" : "") +
                  (streak == 2 ? "; " + who + " is on two fouls" : "") + ".";
       }
     } else if (shot.push_out) {

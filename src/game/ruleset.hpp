@@ -57,9 +57,15 @@ struct ShotRuling {
   std::string who;   ///< "Player N" of the shooter
   std::string what;  ///< "Player N pockets ... ." and a space
   bool is_break = false;
-  bool cue_in = false;       ///< the cue ball fell
-  std::vector<int> objects;  ///< object balls pocketed, in order
-  std::vector<int> targets;  ///< the legal first targets before the shot
+  bool cue_in = false;           ///< the cue ball fell
+  std::vector<int> objects;      ///< object balls pocketed, in order
+  std::vector<int> targets;      ///< the legal first targets before the shot
+  bool cue_off = false;          ///< the cue ball left the table
+  std::vector<int> objects_off;  ///< object balls that left the table, in order
+
+  /// The cue ball is off the cloth for good (pocketed or off the table):
+  /// the next player has it in hand.
+  bool cue_gone() const { return cue_in || cue_off; }
 
   /// Adds a foul once.
   void foul(Foul x);
@@ -99,7 +105,8 @@ class Ruleset {
 std::optional<std::string> check_called_pocket(const Rules& rules, const Call& call);
 
 /// The foul kinds of the games on a pool table, in the order summaries
-/// list them (8-ball and 9-ball both list them all).
+/// list them (8-ball and 9-ball both list them all), but ball_off_table,
+/// which Rules::foul_kinds adds when the physics is airborne.
 std::vector<Foul> pool_foul_kinds();
 
 std::shared_ptr<const Ruleset> make_eight_ball_ruleset();

@@ -25,8 +25,9 @@ constexpr Choice kChoices[] = {Choice::shoot,
                                Choice::rerack_and_break,
                                Choice::rerack_opponent_breaks,
                                Choice::respot_eight};
-constexpr Foul kFouls[] = {Foul::scratch,      Foul::no_contact,    Foul::wrong_ball_first,
-                           Foul::no_rail,      Foul::illegal_break, Foul::behind_head_string};
+constexpr Foul kFouls[] = {Foul::scratch,       Foul::no_contact,    Foul::wrong_ball_first,
+                           Foul::no_rail,       Foul::illegal_break, Foul::behind_head_string,
+                           Foul::ball_off_table};
 }  // namespace
 
 // ---------------------------------------------------------------------------

@@ -184,6 +184,7 @@ class SummaryReader : public json_io::GameReader {
       GameConfig config;
       config.game = s.game;
       config.table_size = s.table_size;
+      config.physics = s.physics;  // airborne physics adds ball_off_table
       kinds = Rules(config).foul_kinds();
     } catch (const std::invalid_argument& e) {
       return fail("table_size", e.what());
