@@ -496,6 +496,7 @@ TEST(RulesCommonEvents, AGameWithABallOffTheTableRecordsAndReplays) {
   // identically.
   GameConfig config;
   config.game = GameType::nine_ball;
+  config.physics = kLegacyGamePhysics;
   config.physics.airborne = true;
   GameSession game(config, Seats{{"a", "b"}, {}}, 11, 0);
   const GameState& s0 = game.state();
@@ -536,6 +537,7 @@ TEST(RulesCommonEvents, SummariesListBallOffTableOnlyWithAirbornePhysics) {
   MatchOptions options;
   options.game = GameType::nine_ball;
   options.players = {"baseline", "baseline"};
+  options.physics.airborne = false;
   const std::string cloth = match_summary_json(empty_summary(options, {}));
   EXPECT_EQ(cloth.find("ball_off_table"), std::string::npos);
   options.physics.airborne = true;
