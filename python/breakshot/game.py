@@ -399,10 +399,11 @@ class Game:
     the rules' 400) ends a game still going after that many shots as a
     draw; 0 means no limit. ``physics`` (None: the defaults) chooses the
     pool model's laws, as ``breakshot match`` does: a dict with any of
-    ``"cushion_model"`` (``"han_2005_v0"``, the default, ``"han_2005"``,
-    ``"mathavan_2010"`` or ``"impulse_frictional"``), ``"ball_ball_model"`` (``"friction"`` or
-    ``"mathavan_2014"``) and ``"ball_ball_friction"`` (a number, or a curve
-    ``{"a": .., "b": .., "c": ..}``); see :func:`physics_of`.
+    ``"cushion_model"`` (``"han_2005"``, the default, ``"han_2005_v0"``,
+    the legacy law, ``"mathavan_2010"`` or ``"impulse_frictional"``),
+    ``"ball_ball_model"`` (``"friction"`` or ``"mathavan_2014"``),
+    ``"ball_ball_friction"`` (a number, or a curve ``{"a": .., "b": ..,
+    "c": ..}``) and ``"airborne"`` (true by default); see :func:`physics_of`.
 
     Game g of ``breakshot match --seed S`` is ``Game(game, seed=mix_seed(S,
     g), breaker=g % 2, players=(p0, p1), noise=...)`` with
@@ -474,10 +475,12 @@ class Game:
 
     @property
     def physics(self) -> dict:
-        """The physics the game is played with, as its record writes it:
-        cushion_model, ball_ball_model and ball_ball_friction (a number or
-        {"a", "b", "c"})."""
-        return json.loads(self._g.physics_json())
+        """The physics the game is played with: cushion_model,
+        ball_ball_model, ball_ball_friction (a number or {"a", "b", "c"})
+        and airborne (a bool; a record writes it only when true)."""
+        p = json.loads(self._g.physics_json())
+        p.setdefault("airborne", False)
+        return p
 
     @property
     def table(self) -> dict:
@@ -731,11 +734,8 @@ def physics_of(cushion_model: str = "han_2005", ball_ball_model: str = "friction
             raise ValueError(f"ball_ball_friction: expected tpa28, tpb3, a number or "
                              f"{{'a', 'b', 'c'}}, not {ball_ball_friction!r}")
         ball_ball_friction = dict(curves[ball_ball_friction])
-    out = {"cushion_model": cushion_model, "ball_ball_model": ball_ball_model,
-           "ball_ball_friction": ball_ball_friction}
-    if airborne:
-        out["airborne"] = True
-    return out
+    return {"cushion_model": cushion_model, "ball_ball_model": ball_ball_model,
+            "ball_ball_friction": ball_ball_friction, "airborne": bool(airborne)}
 
 
 def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,

@@ -268,10 +268,11 @@ void Engine::collide_airborne_wall(std::int32_t i, std::int32_t w) {
     across = wall.normal;
     d = dot(wall.normal, A.p0 - wall.a);
   } else {
+    // The post's top is met from the point on its axis at the nose's
+    // height (predict_wall_airborne), so the normal comes from there.
     const Vec2 q = A.p0 - wall.a;
     d = norm(q);
     across = d > 0.0 ? q / d : Vec2{1.0, 0.0};
-    if (wall.kind == WallKind::arc) d -= wall.radius;
   }
   Vec3 n{across.x, across.y, 0.0};
   if (e > 0.0) {
@@ -285,6 +286,17 @@ void Engine::collide_airborne_wall(std::int32_t i, std::int32_t w) {
   const Motion3 out =
       fixed_contact_impact({v3, A.w0}, n, r, restitution, scenario_.table.cushion.friction);
   set_motion3(i, flat(out.velocity), out.velocity.z, out.spin);
+  // Resting on a nose, gravity presses the ball into it: it leaves at
+  // collapse_speed (the pressed rule), else it would bounce on it forever
+  // in shrinking hops.
+  {
+    const Vec3 now = lift(A.v0, A.state == MotionState::airborne ? A.vz0 : 0.0);
+    const double away = dot3(now, n);
+    if (n.z > 0.0 && away < vc) {
+      const Vec3 v = now + n * (vc - away);
+      set_motion3(i, flat(v), v.z, A.w0);
+    }
+  }
   // Leave the contact in the predictor's arithmetic (as on the cloth).
   double extra = 4.0 * std::numeric_limits<double>::epsilon() * std::max(norm(A.v0), vc);
   for (int k = 0; k < kPartingSteps; ++k, extra *= 2.0) {
@@ -351,18 +363,44 @@ void Engine::collide_airborne_balls(std::int32_t i, std::int32_t j) {
   if (B.state != MotionState::airborne && b.velocity.z < 0.0) b.velocity.z = 0.0;
   set_motion3(i, flat(a.velocity), a.velocity.z, a.spin);
   set_motion3(j, flat(b.velocity), b.velocity.z, b.spin);
-  // Part in the predictor's arithmetic: push apart along the cloth.
+  // A pair that leaves slower than collapse_speed while gravity (or the
+  // cloth's friction) presses it together, as a ball resting on another
+  // does, leaves at collapse_speed (the pressed-pair rule of the cloth,
+  // docs/physics-core.md): else it would meet again at once, forever. The
+  // extra impulse acts along the line of centres; a ball on the cloth
+  // takes only its level part (the slate holds it), and then the parting
+  // nudges of a few ulps make the pair part in the predictor's arithmetic.
   const Vec2 dp = B.p0 - A.p0;
-  const double dpl = norm(dp);
-  if (!(dpl > 0.0)) return;
-  const Vec2 n = dp / dpl;
   const double dz = (rb + height(B)) - (ra + height(A));
+  const double dist = std::sqrt(norm2(dp) + dz * dz);
+  if (!(dist > 0.0)) return;
+  const Vec3 n3{dp.x / dist, dp.y / dist, dz / dist};
+  const bool a_flies = A.state == MotionState::airborne;
+  const bool b_flies = B.state == MotionState::airborne;
+  const double ma_inv = 1.0 / scenario_.balls[ui].mass;
+  const double mb_inv = 1.0 / scenario_.balls[uj].mass;
+  const double level2 = n3.x * n3.x + n3.y * n3.y;
+  // Relative normal velocity change per unit impulse.
+  const double per_impulse =
+      (a_flies ? ma_inv : ma_inv * level2) + (b_flies ? mb_inv : mb_inv * level2);
+  const auto separation = [&] { return dot3(lift(B.v0, rise(B)) - lift(A.v0, rise(A)), n3); };
+  const auto push = [&](double impulse) {
+    const Vec3 pa = n3 * (-impulse * ma_inv);
+    const Vec3 pb = n3 * (impulse * mb_inv);
+    set_motion3(i, A.v0 + flat(pa), rise(A) + (a_flies ? pa.z : 0.0), A.w0);
+    set_motion3(j, B.v0 + flat(pb), rise(B) + (b_flies ? pb.z : 0.0), B.w0);
+  };
+  const Vec3 acc_a{A.acc.x, A.acc.y, a_flies ? -A.gravity : 0.0};
+  const Vec3 acc_b{B.acc.x, B.acc.y, b_flies ? -B.gravity : 0.0};
+  const double out = separation();
+  if (per_impulse > 0.0 && out < ph.collapse_speed && dot3(acc_b - acc_a, n3) < 0.0) {
+    push((ph.collapse_speed - out) / per_impulse);
+  }
   double extra = 4.0 * std::numeric_limits<double>::epsilon() *
                  std::max({norm(A.v0), norm(B.v0), ph.collapse_speed});
-  for (int k = 0; k < kPartingSteps; ++k, extra *= 2.0) {
+  for (int k = 0; k < kPartingSteps && per_impulse > 0.0; ++k, extra *= 2.0) {
     if (dot(dp, B.v0 - A.v0) + dz * (rise(B) - rise(A)) > 0.0) break;
-    set_motion3(i, A.v0 - n * extra, rise(A), A.w0);
-    set_motion3(j, B.v0 + n * extra, rise(B), B.w0);
+    push(extra / per_impulse);
   }
 }
 

@@ -4,11 +4,12 @@
 // quadratic in time (neither accelerates) or a quartic (roots.cpp). The
 // ideal model's quadratic and the choice of partners are inline, in
 // predict_balls.hpp.
+#include "physics/predict_balls.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 #include "breakshot/roots.hpp"
-#include "physics/predict_balls.hpp"
 
 namespace breakshot::detail {
 
@@ -37,10 +38,13 @@ void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
     // In three dimensions: the heights of the centres differ by
     // dz(s) = dz + dvz s + daz s^2 / 2 (each ball's radius plus its
     // height; gravity pulls only the one in flight).
-    const double window =
-        within_best(best, t, std::max(0.0, std::min(ki.t_end, B.t_end) - t));
+    const double window = within_best(best, t, std::max(0.0, std::min(ki.t_end, B.t_end) - t));
+    // A phase of B that ends right now (a slip that stops at once) still
+    // moves B: its velocity at the end is the one to compare with, or a
+    // pair in contact would be seen approaching when it parts.
+    const Vec2 dv3 = velocity_at(B, t) - ki.v;
     const double gap = std::sqrt(dist2) - sigma;
-    if (gap > 0.0 && window < kInf && norm(dv) * window + 0.5 * norm(da) * window * window < gap) {
+    if (gap > 0.0 && window < kInf && norm(dv3) * window + 0.5 * norm(da) * window * window < gap) {
       return;  // even the distance along the cloth stays too large
     }
     const double rb = radius_[static_cast<std::size_t>(j)];
@@ -48,9 +52,9 @@ void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
     const double dz = (rb + (b_flies ? z_at(B, t) : 0.0)) - (ki.radius + ki.z);
     const double dvz = (b_flies ? vz_at(B, t) : 0.0) - ki.vz;
     const double daz = (b_flies ? -B.gravity : 0.0) + ki.g;
-    const double c[5] = {dist2 + dz * dz - sigma * sigma, 2.0 * (dot(dp, dv) + dz * dvz),
-                         norm2(dv) + dot(dp, da) + dvz * dvz + dz * daz,
-                         dot(dv, da) + dvz * daz, 0.25 * (norm2(da) + daz * daz)};
+    const double c[5] = {dist2 + dz * dz - sigma * sigma, 2.0 * (dot(dp, dv3) + dz * dvz),
+                         norm2(dv3) + dot(dp, da) + dvz * dvz + dz * daz, dot(dv3, da) + dvz * daz,
+                         0.25 * (norm2(da) + daz * daz)};
     tau = first_contact(c, 4, window);
     if (!(tau < kInf)) return;
   } else if (da.x == 0.0 && da.y == 0.0) {
@@ -59,8 +63,7 @@ void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
     tau = first_contact_quadratic(dist2 - sigma * sigma, b, norm2(dv));
     if (!(tau <= std::min(ki.t_end, B.t_end) - t)) return;
   } else {
-    const double window =
-        within_best(best, t, std::max(0.0, std::min(ki.t_end, B.t_end) - t));
+    const double window = within_best(best, t, std::max(0.0, std::min(ki.t_end, B.t_end) - t));
     // Cheap rejection: the gap can close by at most |dv| w + |da| w^2 / 2.
     const double gap = std::sqrt(dist2) - sigma;
     const double w = window;
@@ -75,9 +78,8 @@ void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
 }
 
 // The balls of cells [x0, x1] x [y0, y1] (clamped to the grid).
-void Engine::predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0,
-                           std::int32_t x1, std::int32_t y0, std::int32_t y1,
-                           Prediction& best) const {
+void Engine::predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0, std::int32_t x1,
+                           std::int32_t y0, std::int32_t y1, Prediction& best) const {
   x0 = std::max(0, x0);
   y0 = std::max(0, y0);
   x1 = std::min(grid_.nx() - 1, x1);
