@@ -155,7 +155,8 @@ async function scratchBreak(page) {
 test('with "balls may leave the cloth" a high-elevation shot jumps the cue ball, drawn in flight', async ({ browser, url }) => {
   const { page, context, problems } = await openPage(browser, url);
   // The box starts as the engine's default (GamePhysics: on the cloth).
-  check(!(await page.isChecked('#airborne')), 'the airborne box is ticked on a new page');
+  // The box starts at the engine's default, on (GamePhysics::airborne).
+  check(await page.isChecked('#airborne'), 'the airborne box is not ticked on a new page');
   await page.click('#new-game');
   await page.check('#airborne');
   await newGame(page, { game: 'eight_ball', opponent: 'friend' });
