@@ -294,6 +294,8 @@ bool ScenarioReader::read_physics(const json& doc, Scenario& s) {
       return fail(apath, "true needs a positive physics.gravity (a ball would never land)");
     }
   }
+  // Without gravity nothing lands: the default is then balls on the cloth.
+  if (find(*p, "airborne") == nullptr && !(ph.gravity > 0.0)) ph.airborne = false;
   for (const char* key : {"slate_restitution", "min_bounce_height"}) {
     if (find(*p, key) != nullptr && !ph.airborne) {
       return fail(member_path(path, key), "needs physics.airborne true");
@@ -614,6 +616,11 @@ bool ScenarioReader::read_ball(const json& v, const std::string& path, Scenario&
   if (!vec2(*pos, member_path(path, "position"), state.position)) return false;
   if (const json* vel = find(v, "velocity")) {
     const std::string vpath = member_path(path, "velocity");
+    if (vel->is_array() && vel->size() != 2 && vel->size() != 3 &&
+        s.physics.model == Model::pool) {
+      return fail(vpath, "expected an array of 2 numbers, or 3 with a vertical component, not an "
+                         "array of " + std::to_string(vel->size()));
+    }
     if (vel->is_array() && vel->size() == 3) {
       // Pool model: a vertical component (up positive).
       Vec3 v3;
