@@ -273,6 +273,18 @@ TEST(Airborne, ScenarioChecksAndResultFields) {
             table + R"(, "balls": [{"id": "a", "position": [1, 0.6]}]})"),
       "physics.min_bounce_height: needs physics.airborne true");
 
+  EXPECT_EQ(error(R"({"physics": {"model": "pool"}, )" + table +
+                  R"(, "balls": [{"id": "a", "position": [1, 0.6], "velocity": [1, 0, 2, 3]}]})"),
+            "balls[0].velocity: expected an array of 2 numbers, or 3 with a vertical "
+            "component, not an array of 4");
+  // Without gravity nothing would land: the default is then the cloth.
+  EXPECT_TRUE(scenario(R"({"physics": {"model": "pool"}, )" + table +
+                       R"(, "balls": [{"id": "a", "position": [1, 0.6]}]})")
+                  .physics.airborne);
+  EXPECT_FALSE(scenario(R"({"physics": {"model": "pool", "gravity": 0}, )" + table +
+                        R"(, "balls": [{"id": "a", "position": [1, 0.6]}], "until": {"time": 1}})")
+                   .physics.airborne);
+
   Scenario level =
       scenario(R"({"physics": {"model": "pool", "airborne": true}, )" + table +
                R"(, "balls": [{"id": "a", "position": [1, 0.6], "velocity": [1, 0]}]})");
