@@ -217,6 +217,13 @@ struct CushionParams {
   double cloth_friction = 0.212;
 };
 
+/// The nose's height above the cloth (m) for a ball of `radius`: the
+/// cushion height when given, else nose_height times the diameter. The
+/// height a ball in flight must clear (docs/physics.md, "Airborne balls").
+constexpr double cushion_nose_height(const CushionParams& c, double radius) {
+  return c.height > 0.0 ? c.height : 2.0 * radius * c.nose_height;
+}
+
 /// Mathavan et al. 2010's contact height, h = 7R/5 ("cushion height in
 /// both snooker and pool"), as a fraction of the diameter: the default
 /// nose_height of the mathavan_2010 model.

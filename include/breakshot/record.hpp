@@ -44,7 +44,7 @@ struct RecordedAction {
 
 struct GameRecord {
   static constexpr std::string_view kFormat = "breakshot-game-record";
-  /// Version 2 (breakshot 0.1.0 after issue 22) adds the engine and the
+  /// Version 2 adds the engine and the
   /// physics (GameConfig::physics) to the header; version 1 records have
   /// neither and were played with kLegacyGamePhysics.
   static constexpr int kVersion = 2;

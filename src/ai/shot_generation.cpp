@@ -854,21 +854,33 @@ class Generator {
       if (!r || !r->sim || !r->probe.reached || r->slope == 0.0) continue;
       const Judged j = judge(*r->sim);
       if (!pot_made(j, l)) continue;
-      CandidateShot c;
-      c.kind = l.kind;
-      c.first = l.first;
-      c.target = l.target;
-      c.pocket = l.pocket;
-      c.shot.strike.speed = speed;
-      c.shot.strike.phi = r->phi;
-      c.shot.strike.theta = l.theta;
-      c.shot.call = Call{l.target, l.pocket};
-      if (!la_.call && rules_.check(state_, Action{c.shot})) c.shot.call.reset();
-      c.prior = std::clamp(l.prior_scale * prior_from(l.room, r->slope), 0.0, 1.0);
-      if (rules_.check(state_, Action{c.shot})) continue;
-      c.leave = leave(j, l);
-      out.push_back(c);
+      CueStrike strike;
+      strike.speed = speed;
+      strike.phi = r->phi;
+      strike.theta = l.theta;
+      add_pot(l, j, strike, std::clamp(l.prior_scale * prior_from(l.room, r->slope), 0.0, 1.0),
+              out);
     }
+  }
+
+  /// A pot of line l that its noiseless play `j` made, as a candidate: the
+  /// call (8-ball: the one the rules need; 9-ball: the same call, which
+  /// the rules ignore but the match counts as a pot attempt; dropped if
+  /// the rules refuse it), kept when the rules allow the shot.
+  void add_pot(const Line& l, const Judged& j, const CueStrike& strike, double prior,
+               std::vector<CandidateShot>& out) const {
+    CandidateShot c;
+    c.kind = l.kind;
+    c.first = l.first;
+    c.target = l.target;
+    c.pocket = l.pocket;
+    c.shot.strike = strike;
+    c.shot.call = Call{l.target, l.pocket};
+    if (!la_.call && rules_.check(state_, Action{c.shot})) c.shot.call.reset();
+    c.prior = prior;
+    if (rules_.check(state_, Action{c.shot})) return;
+    c.leave = leave(j, l);
+    out.push_back(c);
   }
 
   void play_line(const Line& l, std::vector<CandidateShot>& out) const {
@@ -925,26 +937,16 @@ class Generator {
         if (!r || !r->sim) continue;
         const Judged j = judge(*r->sim);
         if (!pot_made(j, l)) continue;
-        CandidateShot c;
-        c.kind = l.kind;
-        c.first = l.first;
-        c.target = l.target;
-        c.pocket = l.pocket;
-        c.shot.strike.speed = factor == 1.0 && b == 0.0 && a == 0.0 ? speed : v;
-        c.shot.strike.phi = r->phi;
-        c.shot.strike.b = b;
-        c.shot.strike.a = a;
-        // 8-ball: the call the rules need. 9-ball: the same call, which
-        // the rules ignore but the match counts as a pot attempt (dropped
-        // if the rules refuse it).
-        c.shot.call = Call{l.target, l.pocket};
-        if (!la_.call && rules_.check(state_, Action{c.shot})) c.shot.call.reset();
+        CueStrike strike;
+        strike.speed = factor == 1.0 && b == 0.0 && a == 0.0 ? speed : v;
+        strike.phi = r->phi;
+        strike.b = b;
+        strike.a = a;
         // A little less for the harder strokes, so that ties go to the
         // simpler one.
-        c.prior = prior * (1.0 - 0.03 * (std::abs(b) + std::abs(a))) * (factor > 2.0 ? 0.97 : 1.0);
-        if (rules_.check(state_, Action{c.shot})) continue;
-        c.leave = leave(j, l);
-        out.push_back(c);
+        add_pot(l, j, strike,
+                prior * (1.0 - 0.03 * (std::abs(b) + std::abs(a))) * (factor > 2.0 ? 0.97 : 1.0),
+                out);
       }
     }
   }

@@ -1075,7 +1075,7 @@ std::string height_svg(const Scenario& scenario, const std::vector<Sample>& fram
   }
   const CushionParams& cp = scenario.table.cushion;
   const double r = scenario.balls.empty() ? kPoolBallRadius : scenario.balls[0].radius;
-  const double nose = cp.height > 0.0 ? cp.height : 2.0 * r * cp.nose_height;
+  const double nose = cushion_nose_height(cp, r);
   Panel p;
   p.ax = time_axis(c.t0, c.t1);
   p.ay = value_axis(0.0, std::max(hi, nose) * 1.05, 1e-3, true);

@@ -62,14 +62,11 @@ Vec3 lift(Vec2 v, double z) { return {v.x, v.y, z}; }
 Vec2 flat(Vec3 v) { return {v.x, v.y}; }
 double dot3(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-double nose_height(const CushionParams& c, double radius) {
-  return c.height > 0.0 ? c.height : 2.0 * radius * c.nose_height;
-}
 
 }  // namespace
 
 double Engine::rail_height(std::int32_t i) const {
-  return nose_height(scenario_.table.cushion, radius_[static_cast<std::size_t>(i)]);
+  return cushion_nose_height(scenario_.table.cushion, radius_[static_cast<std::size_t>(i)]);
 }
 
 void Engine::set_motion3(std::int32_t i, Vec2 v, double vz, Vec3 w) {
@@ -164,7 +161,7 @@ void Engine::predict_wall_airborne(const Kinematics& ki, std::size_t w, double w
     return;
   }
   // Height of the centre above the nose: e(s) = e0 + e1 s + e2 s^2.
-  const double h = nose_height(scenario_.table.cushion, r);
+  const double h = cushion_nose_height(scenario_.table.cushion, r);
   const double e0 = r + ki.z - h;
   const double e1 = ki.vz;
   const double e2 = -0.5 * ki.g;

@@ -11,10 +11,6 @@ namespace breakshot::detail {
 
 void Engine::predict_pockets(const Kinematics& ki, Prediction& best) const {
   if (ki.still) return;
-  const auto rail_top = [&](double radius) {
-    const CushionParams& c = scenario_.table.cushion;
-    return c.height > 0.0 ? c.height : 2.0 * radius * c.nose_height;
-  };
   const double t = origin_;
   const double window = within_best(best, t, std::max(0.0, ki.t_end - t));
   const auto& pockets = scenario_.table.pockets;
@@ -40,7 +36,7 @@ void Engine::predict_pockets(const Kinematics& ki, Prediction& best) const {
     if (!(tau <= window)) continue;
     // In flight, a ball whose bottom is above the rail's top passes over
     // the hole (engine_airborne.cpp).
-    if (ki.airborne && ki.z + ki.vz * tau - 0.5 * ki.g * tau * tau >= rail_top(ki.radius)) continue;
+    if (ki.airborne && ki.z + ki.vz * tau - 0.5 * ki.g * tau * tau >= cushion_nose_height(scenario_.table.cushion, ki.radius)) continue;
     consider(best, t + tau, EventKind::pocket, static_cast<std::int32_t>(k), 0);
   }
 }
