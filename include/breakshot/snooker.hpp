@@ -15,10 +15,6 @@ inline constexpr double kSnookerBallRadius = 0.02625;  ///< m
 /// 2014 (Sports Eng. 17), the ball-ball experiments this engine checks
 /// its Mathavan impact against.
 inline constexpr double kSnookerBallMass = 0.1406;  ///< kg
-/// The nose of a snooker cushion above the cloth as a fraction of the
-/// ball's diameter: Mathavan, Jackson and Parkin 2010 give h = 7R/5 as
-/// "the cushion height in both snooker and pool" (36.75 mm for this ball).
-inline constexpr double kSnookerNoseHeight = 0.7;
 /// The gap left between the pink and the apex red of the triangle (the
 /// rules say only "as close as possible without touching"), and the gap
 /// between neighbouring reds before the rack's tiny random offsets: the
@@ -38,7 +34,9 @@ struct SnookerMarks {
 };
 
 /// The WPBSA 12 ft table: playing area 3569 x 1778 mm, six pockets with
-/// round jaws, the cushions' nose at kSnookerNoseHeight. Shape "snooker";
+/// round jaws, the pool table's cushion defaults (CushionParams{}: the
+/// default law and its nose height, 0.635 of the diameter, fitted together
+/// to Mathavan et al. 2010's snooker-cushion model). Shape "snooker";
 /// head_spot is the brown spot, foot_spot the pink (pyramid) spot. Names
 /// of pockets and cushions as on the pool table (docs/physics.md).
 Table make_snooker_table();

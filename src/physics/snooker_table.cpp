@@ -28,7 +28,14 @@
 //   angles 137 and 92 degrees), so that the throat narrows slightly behind
 //   the mouth as a template-cut jaw does, and the capture circle meets the
 //   facings at a clean angle;
-// - shelves (mouth line to the fall): corner 32 mm, middle 16 mm.
+// - shelves (mouth line to the fall): corner 32 mm, middle 16 mm;
+// - the cushions: the pool table's defaults (CushionParams{}), nose height
+//   0.635 of the diameter included (33.3 mm here): the default law's
+//   restitution and nose height were fitted together so that a rolling ball
+//   driven straight in comes back as in Mathavan et al. 2010's model of a
+//   snooker cushion (0.914 of its speed); at the paper's own nose height,
+//   7R/5 (36.75 mm), the default law would return 0.940. The mathavan_2010
+//   law takes 7R/5 itself.
 #include "breakshot/snooker.hpp"
 #include "physics/pocket_table.hpp"
 
@@ -74,7 +81,6 @@ Table make_snooker_table() {
   const SnookerMarks m = snooker_marks();
   t.head_spot = m.brown;
   t.foot_spot = m.pink;
-  t.cushion.nose_height = kSnookerNoseHeight;
   return t;
 }
 
