@@ -206,8 +206,8 @@ TEST_F(Cli, NotJsonExitsTwo) {
 
 TEST_F(Cli, UnsupportedFeatureExitsOne) {
   json doc = good_scenario();
-  doc["table"] = {{"shape", "snooker"}};
-  const Run r = run("simulate " + quote(write("snooker.json", doc.dump())));
+  doc["table"] = {{"shape", "carom"}};
+  const Run r = run("simulate " + quote(write("carom.json", doc.dump())));
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("not supported yet: table.shape"), std::string::npos) << r.err;
 }

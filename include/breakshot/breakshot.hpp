@@ -14,6 +14,7 @@
 #include "breakshot/roots.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/simulation.hpp"
+#include "breakshot/snooker.hpp"
 #include "breakshot/table.hpp"
 #include "breakshot/vec.hpp"
 #include "breakshot/version.hpp"

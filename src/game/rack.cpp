@@ -16,6 +16,11 @@
 // (8-ball: the solid, the stripe and the corner that takes the solid, then
 // a Fisher-Yates shuffle of the rest; 9-ball: the shuffle), then the
 // displacement of each ball but the apex, in lattice order.
+//
+// Snooker: the same lattice and offsets for the 15 reds (all of one kind,
+// so no assignment draws), the apex red on the pyramid spot just behind
+// the pink (SnookerMarks::pyramid_apex) instead of the foot spot, rows
+// toward the top cushion; the colours stand exactly on their spots.
 #include "breakshot/rack.hpp"
 
 #include <algorithm>
@@ -24,6 +29,9 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "breakshot/detmath.hpp"
+#include "breakshot/snooker.hpp"
 
 namespace breakshot {
 
@@ -87,6 +95,37 @@ std::vector<Vec2> lattice(Vec2 apex, double spacing, const std::vector<int>& cou
   return spots;
 }
 
+/// The snooker rack: 15 reds in rows of 1-2-3-4-5 from the pyramid apex
+/// (just behind the pink spot) toward the top cushion, red1 at the apex and
+/// the rest row by row toward +y, each but the apex moved by the rack's
+/// tiny random offset; then the six colours on their spots.
+std::vector<RackedBall> snooker_rack(const Table& table, double radius, Draws& draws) {
+  static_assert(kSnookerPyramidGap == kLatticeGap, "the apex gap is the lattice gap");
+  const SnookerMarks m = snooker_marks();
+  // The apex stands 2 kSnookerBallRadius + gap behind the pink; a ball of
+  // another size keeps the same gap to the pink.
+  const Vec2 apex{m.pink.x + 2.0 * radius + kSnookerPyramidGap, m.pink.y};
+  std::vector<Vec2> spots = lattice(apex, 2.0 * radius + kLatticeGap, {1, 2, 3, 4, 5});
+  for (std::size_t i = 1; i < spots.size(); ++i) spots[i] += draws.in_disk() * kJitter;
+  std::vector<RackedBall> rack;
+  for (std::size_t i = 0; i < spots.size(); ++i) {
+    rack.push_back({"red" + std::to_string(i + 1), spots[i]});
+  }
+  rack.push_back({"yellow", m.yellow});
+  rack.push_back({"green", m.green});
+  rack.push_back({"brown", m.brown});
+  rack.push_back({"blue", m.blue});
+  rack.push_back({"pink", m.pink});
+  rack.push_back({"black", m.black});
+  for (const RackedBall& b : rack) {
+    const Vec2 p = b.position;
+    if (p.x < radius || p.x > table.length - radius || p.y < radius || p.y > table.width - radius) {
+      throw std::invalid_argument("the rack does not fit on the table");
+    }
+  }
+  return rack;
+}
+
 }  // namespace
 
 std::vector<RackedBall> make_rack(const std::string& game, const Table& table, double radius,
@@ -103,6 +142,9 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
   // balls[i] is the number of the ball on lattice spot i.
   std::vector<Vec2> spots;
   std::vector<int> balls;
+  if ((game == "eight_ball" || game == "nine_ball") && table.shape == "snooker") {
+    throw std::invalid_argument("the " + game + " rack needs a pool table");
+  }
   if (game == "eight_ball") {
     // Rows of 1-2-3-4-5. Spot 4 is the middle of the third row, spots 10
     // and 14 the back corners.
@@ -136,9 +178,14 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
     for (int& b : balls) {
       if (b == 0) b = rest[next++];
     }
+  } else if (game == "snooker") {
+    if (table.shape != "snooker") {
+      throw std::invalid_argument("the snooker rack needs a snooker table");
+    }
+    return snooker_rack(table, radius, draws);
   } else {
     throw std::invalid_argument("unknown game \"" + game +
-                                "\" (expected \"eight_ball\" or \"nine_ball\")");
+                                "\" (expected \"eight_ball\", \"nine_ball\" or \"snooker\")");
   }
 
   for (std::size_t i = 1; i < spots.size(); ++i) spots[i] += draws.in_disk() * kJitter;
@@ -158,8 +205,62 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
   return rack;
 }
 
+Vec2 snooker_break_off_spot() {
+  const SnookerMarks m = snooker_marks();
+  return {m.baulk_x, 0.5 * (m.brown.y + m.yellow.y)};
+}
+
+namespace {
+
+/// The snooker break-off: the cue ball on its spot in the D, a level
+/// centre-ball strike at `cue_speed` m/s that takes a quarter of the red at
+/// the yellow-side end of the back row (red11) on its outer side.
+Scenario snooker_break_scenario(const std::string& size, std::uint64_t seed, double cue_speed) {
+  if (size != "12ft") {
+    throw std::invalid_argument("unknown snooker table size \"" + size + "\" (expected \"12ft\")");
+  }
+  constexpr double kRadius = kSnookerBallRadius;
+  constexpr double kMass = kSnookerBallMass;
+  Scenario s;
+  s.physics = default_physics(Model::pool);
+  s.physics.ball_clusters = true;  // the break spreads the pack
+  s.table = make_snooker_table();
+  const double e = CushionParams{}.restitution;
+  BallState cue;
+  cue.position = snooker_break_off_spot();
+  s.balls.push_back({"cue", kRadius, kMass, e});
+  s.start.push_back(cue);
+  Vec2 target;
+  for (const RackedBall& b : make_rack("snooker", s.table, kRadius, seed)) {
+    BallState st;
+    st.position = b.position;
+    if (b.id == "red11") target = b.position;
+    s.balls.push_back({b.id, kRadius, kMass, e});
+    s.start.push_back(st);
+  }
+  // Aim so that the cue ball's path passes 1.5 R from the red's centre on
+  // its outer (smaller y) side: a quarter-ball hit.
+  const Vec2 d = target - cue.position;
+  const double dist = norm(d);
+  const Vec2 u = d / dist;
+  const double sin_b = 1.5 * kRadius / dist;
+  const double cos_b = std::sqrt(1.0 - sin_b * sin_b);
+  const Vec2 left{-u.y, u.x};
+  const Vec2 aim = u * cos_b - left * sin_b;
+  CueSpec strike_spec;
+  strike_spec.ball = 0;
+  strike_spec.strike.speed = cue_speed;
+  strike_spec.strike.phi = dm::atan2(aim.y, aim.x) * (180.0 / 3.14159265358979323846);
+  s.cue = strike_spec;
+  s.until.rest = true;
+  return s;
+}
+
+}  // namespace
+
 Scenario make_break_scenario(const std::string& game, const std::string& size,
                              std::uint64_t seed, double cue_speed) {
+  if (game == "snooker") return snooker_break_scenario(size, seed, cue_speed);
   constexpr double kRadius = kPoolBallRadius;
   constexpr double kMass = kPoolBallMass;
   Scenario s;

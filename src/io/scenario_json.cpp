@@ -25,6 +25,7 @@
 #include "breakshot/rack.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/scenario_io.hpp"
+#include "breakshot/snooker.hpp"
 #include "io/json_read.hpp"
 #include "io/json_write.hpp"
 
@@ -55,6 +56,17 @@ constexpr double kMaxSamples = 1e7;
 /// How far a given ball may overlap a ball the rack places and still
 /// count as touching: validate()'s tolerance (src/physics/validate.cpp).
 constexpr double kTouchTolerance = 1e-9;
+
+/// The default ball of a table: the snooker ball on the snooker table
+/// (docs/scenario.md, "Defaults"), else the pool ball.
+BallSpec default_ball(const Table& table) {
+  BallSpec spec;
+  if (table.shape == "snooker") {
+    spec.radius = kSnookerBallRadius;
+    spec.mass = kSnookerBallMass;
+  }
+  return spec;
+}
 
 /// Builds a Scenario from a parsed document. Every reading function
 /// returns false after recording the first problem in `error`; the first
@@ -398,7 +410,17 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
     return read_cushion(*t, s);
   }
 
-  if (shape == "snooker" || shape == "carom") {
+  if (shape == "snooker") {
+    if (!known_fields(*t, path,
+                      {"shape", "cushion_restitution", "cushion_friction", "nose_height",
+                       "cushion_model", "cushion_height"})) {
+      return false;
+    }
+    s.table = make_snooker_table();
+    return read_cushion(*t, s);
+  }
+
+  if (shape == "carom") {
     return fail_unsupported(shape_path, "the " + shape + " table is not implemented yet");
   }
   return fail(shape_path, "unknown shape \"" + shape +
@@ -413,12 +435,13 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 /// the physics model is "pool" (the lab's tables); elsewhere they are
 /// errors rather than values silently unused.
 bool ScenarioReader::read_cushion(const json& t, Scenario& s) {
-  const bool pool_cushions = s.table.shape == "pool" || s.physics.model == Model::pool;
+  const bool pool_cushions =
+      s.table.shape == "pool" || s.table.shape == "snooker" || s.physics.model == Model::pool;
   for (const char* key : {"cushion_friction", "nose_height", "cushion_model", "cushion_height"}) {
     if (find(t, key) != nullptr && !pool_cushions) {
       return fail(member_path("table", key),
-                  "only the pool model's cushions have this field (a pool table, or "
-                  "\"physics\": {\"model\": \"pool\"})");
+                  "only the pool model's cushions have this field (a pool or snooker "
+                  "table, or \"physics\": {\"model\": \"pool\"})");
     }
   }
   CushionParams& cp = s.table.cushion;
@@ -493,26 +516,43 @@ bool ScenarioReader::read_balls(const json& doc, Scenario& s) {
 }
 
 /// "rack": the regulation rack on a pool table, and a cue ball "cue" on
-/// the head spot unless one is given. The placed balls come after the
-/// given ones: "cue" (if placed), then "1", "2", ... in numeric order.
+/// the head spot unless one is given; or the snooker rack on the snooker
+/// table, and "cue" on the break-off spot in the D. The placed balls come
+/// after the given ones: "cue" (if placed), then "1", "2", ... in numeric
+/// order, or "red1" ... "red15", "yellow" ... "black".
 bool ScenarioReader::read_rack(const json& v, Scenario& s) {
   const std::string path = "rack";
   if (!require_object(v, path)) return false;
-  if (s.table.shape != "pool") {
-    return fail(path, "a rack needs a pool table (\"table\": {\"shape\": \"pool\", ...})");
+  if (s.table.shape != "pool" && s.table.shape != "snooker") {
+    return fail(path,
+                "a rack needs a pool table (\"table\": {\"shape\": \"pool\", ...}) or "
+                "the snooker table (\"table\": {\"shape\": \"snooker\"})");
   }
   if (!known_fields(v, path, {"game", "seed"})) return false;
 
   const json* game_v = find(v, "game");
   const std::string game_path = "rack.game";
   if (game_v == nullptr) {
-    return fail(game_path, "missing required field (\"eight_ball\" or \"nine_ball\")");
+    return fail(game_path, "missing required field (\"eight_ball\", \"nine_ball\" or \"snooker\")");
   }
   if (!game_v->is_string()) return fail(game_path, expected("a string", *game_v));
   const std::string game = game_v->get<std::string>();
-  if (game != "eight_ball" && game != "nine_ball") {
+  if (game != "eight_ball" && game != "nine_ball" && game != "snooker") {
+    return fail(game_path, "unknown game \"" + game +
+                               "\" (expected \"eight_ball\", \"nine_ball\" or \"snooker\")");
+  }
+  const bool snooker = game == "snooker";
+  if (snooker && s.table.shape != "snooker") {
     return fail(game_path,
-                "unknown game \"" + game + "\" (expected \"eight_ball\" or \"nine_ball\")");
+                "the snooker rack needs the snooker table (\"table\": {\"shape\": "
+                "\"snooker\"}), not a " +
+                    s.table.shape + " table");
+  }
+  if (!snooker && s.table.shape != "pool") {
+    return fail(game_path, "the " + game +
+                               " rack needs a pool table (\"table\": {\"shape\": "
+                               "\"pool\", ...}), not the " +
+                               s.table.shape + " table");
   }
 
   // The seed of the rack's tiny random gaps: a whole number >= 0, so that
@@ -537,15 +577,19 @@ bool ScenarioReader::read_rack(const json& v, Scenario& s) {
 
   std::vector<RackedBall> racked;
   try {
-    racked = make_rack(game, s.table, BallSpec{}.radius, seed);
+    racked = make_rack(game, s.table, default_ball(s.table).radius, seed);
   } catch (const std::exception& e) {
     return fail(path, e.what());
   }
-  // make_rack lists the balls in rack order; the scenario lists them by
-  // number, so a result reads "1", "2", ... whatever the rack.
-  std::sort(racked.begin(), racked.end(), [](const RackedBall& a, const RackedBall& b) {
-    return a.id.size() < b.id.size() || (a.id.size() == b.id.size() && a.id < b.id);
-  });
+  // make_rack lists the pool balls in rack order; the scenario lists them
+  // by number, so a result reads "1", "2", ... whatever the rack. The
+  // snooker rack is already in its order: red1 ... red15, then the colours
+  // from yellow to black.
+  if (!snooker) {
+    std::sort(racked.begin(), racked.end(), [](const RackedBall& a, const RackedBall& b) {
+      return a.id.size() < b.id.size() || (a.id.size() == b.id.size() && a.id < b.id);
+    });
+  }
 
   // A given ball may not take an object ball's id: which of the two would
   // "3" in an event be?
@@ -556,7 +600,10 @@ bool ScenarioReader::read_rack(const json& v, Scenario& s) {
                       "'; give this ball another id");
     }
   }
-  if (index_of_.find("cue") == index_of_.end()) add_placed_ball("cue", s.table.head_spot, s);
+  if (index_of_.find("cue") == index_of_.end()) {
+    // Pool: the head spot; snooker: the break-off spot in the D.
+    add_placed_ball("cue", snooker ? snooker_break_off_spot() : s.table.head_spot, s);
+  }
   for (RackedBall& rb : racked) add_placed_ball(std::move(rb.id), rb.position, s);
 
   // A given ball in the way of a placed one is the given ball's problem:
@@ -577,7 +624,7 @@ bool ScenarioReader::read_rack(const json& v, Scenario& s) {
 /// A ball placed by the rack: default radius, mass and wall restitution,
 /// at rest.
 void ScenarioReader::add_placed_ball(std::string id, Vec2 position, Scenario& s) {
-  BallSpec spec;
+  BallSpec spec = default_ball(s.table);
   spec.id = std::move(id);
   spec.wall_restitution = default_wall_restitution_;
   BallState state;
@@ -595,7 +642,7 @@ bool ScenarioReader::read_ball(const json& v, const std::string& path, Scenario&
                      "wall_restitution"})) {
     return false;
   }
-  BallSpec spec;
+  BallSpec spec = default_ball(s.table);
   spec.wall_restitution = default_wall_restitution_;
   BallState state;
 

@@ -24,6 +24,7 @@
 
 #include "breakshot/lab.hpp"
 #include "breakshot/plot.hpp"
+#include "breakshot/snooker.hpp"
 
 namespace breakshot {
 namespace {
@@ -830,6 +831,23 @@ std::string trajectories_svg(const Scenario& scenario, const std::vector<Sample>
       out += (k == 0 ? "" : " ") + px(p.X(v.x)) + "," + px(p.Y(v.y));
     }
     out += "\"/>\n";
+  }
+
+  // The snooker table's markings: the baulk line, the D and the six spots.
+  if (scenario.table.shape == "snooker") {
+    const SnookerMarks m = snooker_marks();
+    const std::string line = "stroke=\"#2f5d2f\" stroke-width=\"1\" fill=\"none\"";
+    out += "<line x1=\"" + px(p.X(m.baulk_x)) + "\" y1=\"" + px(p.Y(0.0)) + "\" x2=\"" +
+           px(p.X(m.baulk_x)) + "\" y2=\"" + px(p.Y(scenario.table.width)) + "\" " + line + "/>\n";
+    const double r = m.d_radius * scale;
+    out += "<path d=\"M " + px(p.X(m.d_centre.x)) + " " + px(p.Y(m.d_centre.y - m.d_radius)) +
+           " A " + px(r) + " " + px(r) + " 0 0 1 " + px(p.X(m.d_centre.x)) + " " +
+           px(p.Y(m.d_centre.y + m.d_radius)) + "\" " + line + "/>\n";
+    out += "<g fill=\"#2f5d2f\">\n";
+    for (const Vec2 spot : {m.yellow, m.green, m.brown, m.blue, m.pink, m.black}) {
+      out += "<circle cx=\"" + px(p.X(spot.x)) + "\" cy=\"" + px(p.Y(spot.y)) + "\" r=\"1.5\"/>\n";
+    }
+    out += "</g>\n";
   }
 
   // A ball smaller than a pixel would vanish; draw it at least this big.
