@@ -275,7 +275,7 @@ TEST(MatchChunks, ReadingABadSummaryNamesThePath) {
   const std::vector<Case> cases = {
       {[](ojson& j) { j.erase("seed"); }, "seed: missing required field"},
       {[](ojson& j) { j["extra"] = 1; }, "extra: unknown field"},
-      {[](ojson& j) { j["game"] = "snooker"; }, "game: unknown game \"snooker\""},
+      {[](ojson& j) { j["game"] = "bowls"; }, "game: unknown game \"bowls\""},
       {[](ojson& j) { j["table_size"] = "10ft"; }, "table_size: unknown table size"},
       {[](ojson& j) { j["noise"] = "loud"; }, "noise: "},
       {[](ojson& j) { j["noise"] = "custom:phi=0.125,theta=0.1,speed=0.075,a=0.0005,b=0.0005"; },

@@ -356,7 +356,10 @@ TEST(WebApi, LinkErrorsNameTheActionRefused) {
       {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","x"],["d","x"]]})",
        "link.a[0][1]: unknown choice \"x\" (expected \"shoot\", "},
       {R"({"g":"snooker","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
-       "link.g: unknown game \"snooker\" (expected \"eight_ball\" or \"nine_ball\")"},
+       "link.g: game \"snooker\" is not played in the browser yet (expected \"eight_ball\" or "
+       "\"nine_ball\")"},
+      {R"({"g":"bowls","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
+       "link.g: unknown game \"bowls\" (expected \"eight_ball\", \"nine_ball\" or \"snooker\")"},
       {R"({"g":"eight_ball","t":"9ft","s":"x1","b":0,"p":["human","human"],"a":[]})",
        "link.s: expected a seed: a decimal integer in [0, 2^64), not \"x1\""},
   };

@@ -2,8 +2,8 @@
 // play matches between computer players; replay game records.
 //
 //   breakshot simulate FILE|- [-o PATH] [--plot PREFIX]
-//   breakshot match --game eight_ball|nine_ball --players A,B --games N
-//                   --seed S --noise LEVEL [--table 7ft|8ft|9ft] [--records DIR] [--timing]
+//   breakshot match --game eight_ball|nine_ball|snooker --players A,B --games N
+//                   --seed S --noise LEVEL [--table 7ft|8ft|9ft|12ft] [--records DIR] [--timing]
 //                   [--first-game N] [--cushion-model NAME] [--ball-ball-model NAME]
 //                   [--ball-ball-friction tpa28|tpb3|A,B,C|MU] [--airborne on|off]
 //   breakshot match-sum SUMMARY...
@@ -198,7 +198,7 @@ struct MatchArgs {
   std::string games;
   std::string seed;
   std::string noise;
-  std::string table = "9ft";
+  std::string table;  // empty: 9ft, snooker 12ft
   std::string records;
   std::string first_game = "0";
   bool timing = false;
@@ -295,7 +295,9 @@ bs::GamePhysics match_physics(const MatchArgs& a) {
 bs::MatchOptions match_options(const MatchArgs& a) {
   bs::MatchOptions opt;
   const auto game = bs::parse_game_type(a.game);
-  if (!game) throw BadArgument{"--game: unknown game '" + a.game + "' (eight_ball or nine_ball)"};
+  if (!game) {
+    throw BadArgument{"--game: unknown game '" + a.game + "' (eight_ball, nine_ball or snooker)"};
+  }
   opt.game = *game;
 
   const std::size_t comma = a.players.find(',');
@@ -310,6 +312,10 @@ bs::MatchOptions match_options(const MatchArgs& a) {
       (void)bs::make_player(name);
     } catch (const std::invalid_argument& e) {
       throw BadArgument{"--players: " + std::string(e.what())};
+    }
+    if (opt.game == bs::GameType::snooker && name != "baseline") {
+      throw BadArgument{"--players: snooker: level " + name +
+                        " not available yet (the baseline plays snooker)"};
     }
   }
 
@@ -334,10 +340,18 @@ bs::MatchOptions match_options(const MatchArgs& a) {
     if (why.substr(0, 7) == "noise: ") why.remove_prefix(7);
     throw BadArgument{"--noise: " + std::string(why)};
   }
-  if (a.table != "7ft" && a.table != "8ft" && a.table != "9ft") {
-    throw BadArgument{"--table: unknown table size '" + a.table + "' (7ft, 8ft or 9ft)"};
+  if (opt.game == bs::GameType::snooker) {
+    if (!a.table.empty() && a.table != "12ft") {
+      throw BadArgument{"--table: snooker is played on the 12ft table, not '" + a.table + "'"};
+    }
+    opt.table_size = "12ft";
+  } else {
+    const std::string table = a.table.empty() ? "9ft" : a.table;
+    if (table != "7ft" && table != "8ft" && table != "9ft") {
+      throw BadArgument{"--table: unknown table size '" + table + "' (7ft, 8ft or 9ft)"};
+    }
+    opt.table_size = table;
   }
-  opt.table_size = a.table;
   opt.physics = match_physics(a);
   opt.timing = a.timing;
   return opt;
@@ -505,7 +519,7 @@ int main(int argc, char** argv) {
   MatchArgs match_args;
   CLI::App* match = app.add_subcommand(
       "match", "Play games between computer players and print a summary (JSON)");
-  match->add_option("--game", match_args.game, "eight_ball or nine_ball")
+  match->add_option("--game", match_args.game, "eight_ball, nine_ball or snooker")
       ->type_name("GAME")
       ->required();
   match->add_option("--players", match_args.players,
@@ -524,7 +538,8 @@ int main(int argc, char** argv) {
                     "custom:phi=..,theta=..,speed=..,a=..,b=..")
       ->type_name("LEVEL")
       ->required();
-  match->add_option("--table", match_args.table, "Table size: 7ft, 8ft or 9ft (default 9ft)")
+  match->add_option("--table", match_args.table,
+                    "Table size: 7ft, 8ft or 9ft (default 9ft); snooker: 12ft (the default)")
       ->type_name("SIZE");
   match->add_option("--records", match_args.records,
                     "Write each game's record to DIR/game-0001.json, ... (DIR is created)")

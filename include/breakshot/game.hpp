@@ -1,11 +1,14 @@
-// Games: 8-ball and 9-ball by the WPA rules (docs/rules.md).
+// Games: 8-ball and 9-ball by the WPA rules, snooker by the WPBSA rules
+// (docs/rules.md).
 //
 // A game is a plain value (GameState) and the rules are a function of it:
 // Rules::apply(state, action) returns the next state, the shot's events
 // and the ruling. Outcomes are read from the shot's event list (first ball
 // hit, cushion contacts, pockets), so the rules and the physics never
 // disagree. Balls are numbered as on the table: 0 is the cue ball, then
-// 1-15 (8-ball) or 1-9 (9-ball); index = number in every array here.
+// 1-15 (8-ball) or 1-9 (9-ball); in snooker 1-15 are the reds and 16-21
+// the yellow, green, brown, blue, pink and black (values 2-7); index =
+// number in every array here.
 #pragma once
 
 #include <array>
@@ -34,9 +37,9 @@ class Ruleset;
 /// The fastest cue stick a game accepts (m/s); a hard break is about 11.
 inline constexpr double kMaxCueSpeed = 20.0;
 
-enum class GameType : std::uint8_t { eight_ball, nine_ball };
+enum class GameType : std::uint8_t { eight_ball, nine_ball, snooker };
 std::string_view to_string(GameType g);
-/// "eight_ball" or "nine_ball"; nullopt otherwise.
+/// "eight_ball", "nine_ball" or "snooker"; nullopt otherwise.
 std::optional<GameType> parse_game_type(std::string_view s);
 /// The names of every game the library plays, in GameType order.
 std::vector<std::string> game_type_names();
@@ -81,13 +84,16 @@ inline constexpr GamePhysics kLegacyGamePhysics{CushionModel::han_2005_v0, BallB
 std::optional<std::string> check_game_physics(const GamePhysics& physics);
 
 /// Equipment and limits of a game. Everything else is fixed by the rules.
+/// Snooker is played on the "12ft" table with snooker balls
+/// (snooker_config gives them).
 struct GameConfig {
   GameType game = GameType::eight_ball;
-  std::string table_size = "9ft";  ///< "7ft", "8ft" or "9ft"
+  std::string table_size = "9ft";  ///< "7ft", "8ft" or "9ft"; snooker "12ft"
   double ball_radius = kPoolBallRadius;  ///< m (WPA 2.25 in)
   double ball_mass = kPoolBallMass;      ///< kg
   /// A game still going after this many shots is ended as a draw (the
-  /// stalemate clause, docs/rules.md). 0: no limit.
+  /// stalemate clause, docs/rules.md; in snooker a safety limit, not a
+  /// rule). 0: no limit.
   int max_shots = 400;
   /// The physics choices (cushion and ball-ball laws, ball-ball friction).
   GamePhysics physics;
@@ -107,12 +113,21 @@ enum class Phase : std::uint8_t {
   illegal_break_choice,   ///< 8-ball: `player` (incoming) decides after an illegal break
   eight_on_break_choice,  ///< 8-ball: `player` decides after the 8 fell on the break
   game_over,
+  /// snooker: `player` (incoming) decides after the opponent's foul: play
+  /// on, have the offender play again, or (after a miss) have the balls
+  /// replaced and the offender play again
+  foul_choice,
 };
 std::string_view to_string(Phase p);
 std::optional<Phase> parse_phase(std::string_view s);
 
 /// Where the cue ball may be placed before the next shot.
-enum class BallInHand : std::uint8_t { none, kitchen, anywhere };
+enum class BallInHand : std::uint8_t {
+  none,
+  kitchen,
+  anywhere,
+  d,  ///< snooker: within the D (on its lines included)
+};
 std::string_view to_string(BallInHand b);
 std::optional<BallInHand> parse_ball_in_hand(std::string_view s);
 
@@ -124,6 +139,10 @@ enum class Choice : std::uint8_t {
   rerack_and_break,        ///< after an illegal break or the 8 on the break: re-rack, I break
   rerack_opponent_breaks,  ///< after an illegal break: re-rack, the original breaker breaks again
   respot_eight,            ///< after the 8 on the break: spot the 8 and play on
+  play_on,                 ///< snooker, after a foul: play from where the balls lie
+  offender_again,          ///< snooker, after a foul: the offender plays again as the balls lie
+  replace_balls,           ///< snooker, after a miss: balls replaced, the offender plays again
+  concede,                 ///< snooker: the player to act concedes the frame
 };
 std::string_view to_string(Choice c);
 std::optional<Choice> parse_choice(std::string_view s);
@@ -138,9 +157,43 @@ enum class Foul : std::uint8_t {
   /// a ball left the table: it flew over a rail or landed outside the
   /// table (EventType::ball_off_table; only with GamePhysics::airborne)
   ball_off_table,
+  in_off,             ///< snooker: the cue ball entered a pocket
+  wrong_ball_potted,  ///< snooker: a ball not on entered a pocket
+  /// snooker: after a free ball, the cue ball was left snookered by the
+  /// free ball (WPBSA 3.9(c), 3.11(a)(vii))
+  free_ball_snooker,
 };
 std::string_view to_string(Foul f);
 std::optional<Foul> parse_foul(std::string_view s);
+
+/// Snooker's part of the state (GameState::snooker): the score and what
+/// the striker is on. The ball on follows from it and the table
+/// (snooker_balls_on).
+struct SnookerState {
+  std::array<int, 2> score{0, 0};
+  /// Points of the visit in progress (the break of `GameState::player`).
+  int break_points = 0;
+  /// A red was potted this visit: the ball on is a colour the striker
+  /// nominates (Shoot::nominate).
+  bool colour_on = false;
+  /// After a foul the striker is snookered: any ball may be nominated as
+  /// the ball on (WPBSA 3.9).
+  bool free_ball = false;
+  /// The scores were equal after the last black: it was re-spotted and
+  /// the next score or foul ends the frame (WPBSA 3.3(k)).
+  bool respotted_black = false;
+  /// Misses in a row of the player to act (or of the offender, in
+  /// foul_choice) from replaced balls with a full ball on (WPBSA 3.14(c)):
+  /// the third such miss loses the frame.
+  int misses = 0;
+  /// After a miss (phase foul_choice): the table before the missed
+  /// stroke, which replace_balls restores. Empty otherwise.
+  std::vector<Vec2> replace_position;
+  std::vector<std::uint8_t> replace_on_table;
+  bool replace_colour_on = false;
+  bool replace_free_ball = false;
+  bool operator==(const SnookerState&) const = default;
+};
 
 /// The state between shots: every ball at rest.
 struct GameState {
@@ -165,6 +218,8 @@ struct GameState {
   int innings = 0;                ///< turns at the table begun in this game
   std::uint64_t rack_seed = 0;    ///< seed of the current rack's jitter
   int racks = 1;                  ///< racks set up in this game (re-racks add one)
+  /// Snooker's part; empty in the other games.
+  std::optional<SnookerState> snooker;
 
   bool operator==(const GameState&) const = default;
 };
@@ -190,6 +245,11 @@ struct Shoot {
   std::optional<Call> call;
   bool safety = false;    ///< 8-ball: declared safety, the turn ends after it
   bool push_out = false;  ///< 9-ball: declared push-out
+  /// Snooker: the ball nominated as the ball on. Required when the ball
+  /// on is a colour of the striker's choosing (after a red), and to take
+  /// a free ball (any ball not otherwise on); else optional, and then it
+  /// must be a ball on. Never in the other games.
+  std::optional<int> nominate;
   bool operator==(const Shoot&) const = default;
 };
 
@@ -208,7 +268,13 @@ struct LegalActions {
   bool push_out = false;                ///< a shot may be declared a push-out
   bool call = false;                    ///< 8-ball: shots carry calls
   std::vector<int> targets;             ///< balls the cue ball may legally hit first
-  std::vector<Choice> choices;          ///< decisions on offer
+  /// Decisions on offer: a decision phase's; in snooker's shot phases
+  /// also `concede`, beside the shot.
+  std::vector<Choice> choices;
+  /// Snooker: balls a shot may nominate (Shoot::nominate), and whether
+  /// it must.
+  std::vector<int> nominate;
+  bool must_nominate = false;
 };
 
 /// What a shot did, read from its events. Ball numbers, not indices.
@@ -225,6 +291,18 @@ struct ShotFacts {
   bool operator==(const ShotFacts&) const = default;
 };
 
+/// Snooker's part of a ruling (Ruling::snooker).
+struct SnookerRuling {
+  int points = 0;   ///< scored by the shooter with this shot
+  int penalty = 0;  ///< given to the opponent for a foul (0: none)
+  /// The foul was a miss: the ball on could have been hit full in a
+  /// straight line from the cue ball (WPBSA 3.14(c)).
+  bool miss = false;
+  bool free_ball = false;  ///< the shot was played as a free ball
+  int nominated = -1;      ///< the ball on the shot nominated, -1: none
+  bool operator==(const SnookerRuling&) const = default;
+};
+
 struct Ruling {
   std::vector<Foul> fouls;       ///< empty: no foul
   bool legal_break = true;       ///< break shots only
@@ -236,6 +314,8 @@ struct Ruling {
   /// The shot carried a call and the called ball fell in the called
   /// pocket with no foul (a pot attempt that succeeded; match statistics).
   bool call_made = false;
+  /// Snooker's part of a shot's ruling; empty otherwise.
+  std::optional<SnookerRuling> snooker;
   bool operator==(const Ruling&) const = default;
 };
 
@@ -245,6 +325,35 @@ struct Outcome {
   ShotFacts facts;
   Ruling ruling;
 };
+
+/// Snooker: the gap (m) up to which the cue ball at rest counts as
+/// touching a ball (WPBSA 3.7): the simulator leaves balls that came to
+/// rest against each other a hair apart.
+inline constexpr double kSnookerTouching = 1e-4;
+
+/// Snooker: the 12 ft table and snooker balls (breakshot/snooker.hpp);
+/// the other fields GameConfig's defaults.
+GameConfig snooker_config();
+/// Snooker: the value of ball number `ball`: a red 1, the yellow, green,
+/// brown, blue, pink and black 2 to 7, anything else 0.
+int snooker_value(int ball);
+/// Snooker: the balls on for the player to act, a free ball aside: every
+/// red on the table; after a red every colour; once the reds are gone the
+/// lowest-valued colour left; on a re-spotted black the black. Throws
+/// std::invalid_argument for a state without snooker's part.
+std::vector<int> snooker_balls_on(const GameState& state);
+/// Snooker: the most points the player to act can still score from the
+/// table as it stands: each red with a black after it (8), the colour
+/// after a red potted this visit (7), then the colours (27); once the
+/// reds are gone, the colours left. Throws as snooker_balls_on.
+int snooker_points_remaining(const GameState& state);
+/// Snooker: the snookers `player` (0 or 1) needs to be able to draw
+/// level: 0 while the deficit is at most snooker_points_remaining, else
+/// the deficit beyond it divided by the least penalty a snooker can earn
+/// (4 while reds remain, else the higher of 4 and the value of the
+/// lowest colour left), rounded up. Throws as snooker_balls_on, or for a
+/// player that is not 0 or 1.
+int snookers_required(const GameState& state, int player);
 
 /// The rules of one game type on one table. Immutable once built; all
 /// functions are pure functions of their arguments.
@@ -256,7 +365,7 @@ class Rules {
 
   const GameConfig& config() const { return config_; }
   const Table& table() const { return table_; }
-  /// Number of balls including the cue ball: 16 or 10.
+  /// Number of balls including the cue ball: 16, 10 or (snooker) 22.
   int ball_count() const;
   /// x of the head string: the kitchen is x <= head_string().
   double head_string() const;
@@ -299,8 +408,28 @@ class Rules {
   ShotFacts facts(const std::vector<Event>& events) const;
 
   /// Lowest legal spot for `ball` on the long string, from the foot spot
-  /// toward the foot rail, then toward the head (WPA spotting).
+  /// toward the foot rail, then toward the head (WPA spotting). Snooker:
+  /// a colour's own spot, else the highest-valued free spot, else the
+  /// nearest free place from its own spot toward the top cushion, else
+  /// toward the bottom cushion (WPBSA 3.6, docs/rules.md).
   Vec2 spot_position(const GameState& state, int ball) const;
+
+  // Snooker's geometry of the table between shots (docs/rules.md). Each
+  // throws std::invalid_argument for a state that is not snooker's.
+
+  /// Object balls the cue ball touches at rest: centres at most 2R +
+  /// kSnookerTouching apart.
+  std::vector<int> touching(const GameState& state) const;
+  /// The cue ball (on the table) is snookered: no ball on (a free ball
+  /// aside) can be hit at both its extreme edges along a straight path
+  /// that keeps clear of every ball not on (WPBSA Section 2,
+  /// "Snookered"). Only balls obstruct: the cushions' jaws (WPBSA's
+  /// "angled") are not considered.
+  bool snookered(const GameState& state) const;
+  /// Some ball on can be hit full, centre on centre, along a straight
+  /// path clear of every other ball (the computable form of WPBSA 3.14's
+  /// miss).
+  bool full_ball_on(const GameState& state) const;
 
  private:
   GameConfig config_;

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,6 +37,8 @@ GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
 
 struct MatchOptions {
   GameType game = GameType::eight_ball;
+  /// "7ft", "8ft" or "9ft"; snooker "12ft" (with snooker balls:
+  /// snooker_config).
   std::string table_size = "9ft";
   /// The physics the games are played with (GameConfig::physics).
   GamePhysics physics;
@@ -78,6 +81,29 @@ class MatchGameError : public std::runtime_error {
   std::string reason_;
 };
 
+/// A snooker player's figures over a match (PlayerStats::snooker). A
+/// visit is a turn at the table; its break is the points it scored.
+struct SnookerStats {
+  /// Points at the end of the player's frames (the frame scores: pots
+  /// and the opponent's fouls), summed.
+  int points = 0;
+  int highest_break = 0;
+  int breaks_50 = 0;   ///< visits that scored 50 points or more
+  int breaks_100 = 0;  ///< visits that scored 100 points or more
+  /// Visits that scored at least one point, and their points summed.
+  int scoring_visits = 0;
+  int break_points = 0;
+  /// Penalty points the player's fouls gave the opponent.
+  int foul_points_given = 0;
+  /// The player's fouls that were misses (a ball on could have been hit
+  /// full: SnookerRuling::miss).
+  int misses = 0;
+  /// break_points / scoring_visits (0 without such visits): the mean
+  /// break over visits that scored.
+  double mean_break() const;
+  bool operator==(const SnookerStats&) const = default;
+};
+
 /// One player's figures over a match. Everything counts only the
 /// player's own actions.
 struct PlayerStats {
@@ -117,6 +143,8 @@ struct PlayerStats {
   int pots_made = 0;
   /// pots_made / pot_attempts (0 without attempts).
   double pot_rate() const;
+  /// Snooker's figures; empty in the other games.
+  std::optional<SnookerStats> snooker;
 };
 
 /// Games first .. first + count - 1 of a match.

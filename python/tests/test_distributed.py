@@ -127,7 +127,7 @@ def test_bad_arguments_name_what_is_wrong(client):
     with pytest.raises(ValueError, match="games"):
         bd.match(client, "nine_ball", ("baseline", "baseline"), games=0)
     with pytest.raises(ValueError, match="unknown game"):
-        bd.match(client, "snooker", ("baseline", "baseline"), games=1)
+        bd.match(client, "bowls", ("baseline", "baseline"), games=1)
     with pytest.raises(ValueError, match="10ft"):
         bd.match(client, "nine_ball", ("baseline", "baseline"), games=1, table="10ft")
 

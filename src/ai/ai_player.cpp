@@ -229,6 +229,10 @@ class AiPlayer final : public Player {
   std::optional<NoiseModel> noise() const override { return level_.noise; }
 
   Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) override {
+    if (state.game == GameType::snooker) {
+      throw std::invalid_argument("snooker: level " + level_.name +
+                                  " not available yet (the baseline plays snooker)");
+    }
     Budget budget(level_.simulation_budget, level_.time_budget);
     const LegalActions la = rules.legal_actions(state);
     if (!la.choices.empty()) return Decide{choose(rules, state, la, seed, budget)};

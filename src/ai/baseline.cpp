@@ -40,6 +40,13 @@
 // line of one of its open legs (straight in or a slight cut, a few
 // distances back), or failing that to the best point of a 5 cm grid.
 //
+// Snooker: the same planner over the balls on (a free ball is not
+// taken). After a red it pots the easiest colour and nominates it; with
+// no pot on, it plays a safety or a one-rail kick at one ball on at a time
+// (nominating it when the ball on is a colour), tried out on the engine.
+// With the cue ball in hand it places it in the D as for a pot. After a
+// foul it plays on; it concedes the frame when it needs snookers.
+//
 // Everything is deterministic: no randomness is used at all, so the seed
 // is ignored.
 #include <algorithm>
@@ -554,6 +561,7 @@ class BaselinePlayer final : public Player {
 
   Action decide(const Rules& rules, const GameState& state, std::uint64_t /*seed*/) override {
     const LegalActions la = rules.legal_actions(state);
+    if (state.game == GameType::snooker) return snooker(rules, state, la);
     if (!la.choices.empty()) return Decide{choose(rules, state, la)};
     if (state.phase == Phase::break_shot) return break_action(rules, state, la);
     if (la.place != BallInHand::none) {
@@ -773,6 +781,66 @@ class BaselinePlayer final : public Player {
       return false;
     }
     return f.cushion_after_contact || !f.pocketed.empty();
+  }
+
+  /// Snooker: concede when snookers are needed, play on after a foul,
+  /// place the cue ball for a pot, then pot or play safe.
+  static Action snooker(const Rules& rules, const GameState& state, const LegalActions& la) {
+    const auto offered = [&](Choice c) {
+      return std::find(la.choices.begin(), la.choices.end(), c) != la.choices.end();
+    };
+    if (offered(Choice::concede) && snookers_required(state, state.player) > 0) {
+      return Decide{Choice::concede};
+    }
+    if (state.phase == Phase::foul_choice) {
+      return Decide{offered(Choice::play_on) ? Choice::play_on : la.choices.front()};
+    }
+    if (la.place != BallInHand::none && state.phase != Phase::break_shot) {
+      if (const std::optional<Vec2> p = placement(rules, state, la)) return PlaceCueBall{*p};
+    }
+    return snooker_shot(rules, state, la);
+  }
+
+  static Action snooker_shot(const Rules& rules, const GameState& state, const LegalActions& la) {
+    const Planner planner(rules, state);
+    const std::vector<int> on = snooker_balls_on(state);  // a free ball is not taken
+    const Options o = options(planner, on, false);
+    const Vec2 cue = planner.pos(0);
+    const auto nominate = [&](Shoot s, int ball) {
+      if (la.must_nominate) s.nominate = ball;
+      return s;
+    };
+    if (const std::optional<Plan> p = planner.best_pot(cue, o.targets, o.legs)) {
+      return nominate(make_shoot(p->phi, p->speed), p->ball);
+    }
+    // No pot: a safety, then a kick, at one ball on at a time, nearest
+    // first (so that a colour's nomination is the ball the trial hit).
+    std::vector<int> targets = o.targets;
+    std::stable_sort(targets.begin(), targets.end(), [&](int x, int y) {
+      return norm(planner.pos(x) - cue) < norm(planner.pos(y) - cue);
+    });
+    constexpr std::size_t kMaxTargets = 4;
+    for (std::size_t i = 0; i < targets.size() && i < kMaxTargets; ++i) {
+      const std::vector<int> one{targets[i]};
+      const std::vector<Plan> safe = planner.safeties(cue, one);
+      if (const std::optional<Shoot> tried = first_legal(rules, state, safe, one)) {
+        return nominate(*tried, targets[i]);
+      }
+    }
+    for (std::size_t i = 0; i < targets.size() && i < kMaxTargets; ++i) {
+      const std::vector<int> one{targets[i]};
+      if (const std::optional<Shoot> k = kick(rules, state, planner, cue, one)) {
+        return nominate(*k, targets[i]);
+      }
+    }
+    if (!targets.empty()) {
+      // Every way is blocked: straight at the nearest ball on anyway.
+      const Vec2 to = planner.pos(targets.front()) - cue;
+      return nominate(make_shoot(dm::atan2(to.y, to.x) / kDeg, 3.0), targets.front());
+    }
+    Shoot s = make_shoot(0.0, 3.0);
+    if (la.must_nominate && !la.nominate.empty()) s.nominate = la.nominate.front();
+    return s;
   }
 
   static Action shot(const Rules& rules, const GameState& state, const LegalActions& la) {

@@ -250,6 +250,8 @@ double position_value(const Rules& rules, const GameState& after, int me, double
       return mine(after.player, 0.2);
     case Phase::eight_on_break_choice:
       return mine(after.player, 0.3);
+    case Phase::foul_choice:
+      return 0.0;  // snooker: the AI levels do not play it yet
   }
   return 0.0;
 }

@@ -67,6 +67,43 @@ int pocketed_by_shot(const GameState& before, const RecordedAction& ra) {
   return n;
 }
 
+/// Snooker's figures of a finished frame (PlayerStats::snooker): the
+/// frame's scores, the breaks of its visits (a visit ends with a shot
+/// after which the turn does not continue, or with the frame), the
+/// penalties and misses.
+void add_snooker(MatchSummary& summary, const GameRecord& record, const GameState& end) {
+  std::array<SnookerStats*, 2> st{&*summary.players[0].snooker, &*summary.players[1].snooker};
+  if (end.snooker) {
+    for (std::size_t p = 0; p < 2; ++p) st[p]->points += end.snooker->score[p];
+  }
+  int visit = 0;
+  int visitor = -1;
+  const auto close = [&] {
+    if (visitor >= 0 && visit > 0) {
+      SnookerStats& v = *st[static_cast<std::size_t>(visitor)];
+      v.scoring_visits += 1;
+      v.break_points += visit;
+      v.highest_break = std::max(v.highest_break, visit);
+      if (visit >= 50) v.breaks_50 += 1;
+      if (visit >= 100) v.breaks_100 += 1;
+    }
+    visit = 0;
+    visitor = -1;
+  };
+  for (const RecordedAction& ra : record.actions) {
+    if (!std::holds_alternative<Shoot>(ra.action) || !ra.ruling.snooker) continue;
+    const SnookerRuling& k = *ra.ruling.snooker;
+    SnookerStats& me = *st[static_cast<std::size_t>(ra.player)];
+    me.foul_points_given += k.penalty;
+    if (k.miss) me.misses += 1;
+    if (visitor != ra.player) close();
+    visitor = ra.player;
+    visit += k.points;
+    if (!ra.ruling.turn_continues || ra.after.phase == Phase::game_over) close();
+  }
+  close();
+}
+
 /// The noise `p`'s shots are played with: its own, else the match's.
 NoiseModel effective_noise(const Player& p, const NoiseModel& match_noise) {
   return p.noise().value_or(match_noise);
@@ -87,12 +124,13 @@ MatchSummary empty_summary_with(const MatchOptions& options,
     s.players[p].noise = to_string(noise[p]);
     // Every foul kind of the game, so that a summary lists them all, 0 included.
     for (const Foul f : fouls) s.players[p].fouls[std::string(to_string(f))] = 0;
+    if (options.game == GameType::snooker) s.players[p].snooker = SnookerStats{};
   }
   return s;
 }
 
 GameConfig config_of(const MatchOptions& options) {
-  GameConfig config;
+  GameConfig config = options.game == GameType::snooker ? snooker_config() : GameConfig{};
   config.game = options.game;
   config.table_size = options.table_size;
   config.physics = options.physics;
@@ -164,6 +202,12 @@ double PlayerStats::pot_rate() const {
                           : 0.0;
 }
 
+double SnookerStats::mean_break() const {
+  return scoring_visits > 0
+             ? static_cast<double>(break_points) / static_cast<double>(scoring_visits)
+             : 0.0;
+}
+
 double PlayerStats::balls_per_inning() const {
   return innings > 0 ? static_cast<double>(balls_pocketed) / static_cast<double>(innings) : 0.0;
 }
@@ -214,6 +258,8 @@ void add_game(MatchSummary& summary, const GameRecord& record) {
     }
     for (const Foul f : ra.ruling.fouls) me.fouls[std::string(to_string(f))] += 1;
   }
+
+  if (summary.players[0].snooker && summary.players[1].snooker) add_snooker(summary, record, end);
 
   if (end.winner >= 0 && any_break && record.actions[last_break].player == end.winner) {
     bool opponent_shot = false;
@@ -327,6 +373,18 @@ void add_summary(MatchSummary& into, const MatchSummary& part) {
     add(to.pot_attempts, from.pot_attempts, "pot_attempts");
     add(to.pots_made, from.pots_made, "pots_made");
     for (const auto& [kind, count] : from.fouls) add(to.fouls[kind], count, "fouls");
+    if (to.snooker && from.snooker) {
+      SnookerStats& a = *to.snooker;
+      const SnookerStats& b = *from.snooker;
+      add(a.points, b.points, "snooker.points");
+      a.highest_break = std::max(a.highest_break, b.highest_break);
+      add(a.breaks_50, b.breaks_50, "snooker.breaks_50");
+      add(a.breaks_100, b.breaks_100, "snooker.breaks_100");
+      add(a.scoring_visits, b.scoring_visits, "snooker.scoring_visits");
+      add(a.break_points, b.break_points, "snooker.break_points");
+      add(a.foul_points_given, b.foul_points_given, "snooker.foul_points_given");
+      add(a.misses, b.misses, "snooker.misses");
+    }
     to.decision_seconds.insert(to.decision_seconds.end(), from.decision_seconds.begin(),
                                from.decision_seconds.end());
   }

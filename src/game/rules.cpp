@@ -120,6 +120,8 @@ std::shared_ptr<const detail::Ruleset> make_ruleset(GameType game) {
       return detail::make_eight_ball_ruleset();
     case GameType::nine_ball:
       return detail::make_nine_ball_ruleset();
+    case GameType::snooker:
+      return detail::make_snooker_ruleset();
   }
   throw std::invalid_argument("unknown game type");
 }
@@ -152,9 +154,12 @@ Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_rule
     throw std::invalid_argument("ball_mass must be a positive number of kilograms");
   }
   if (config_.max_shots < 0) throw std::invalid_argument("max_shots must be 0 or more");
-  // make_pool_table names the table size in its error.
-  base_ = make_break_scenario(config_.game == GameType::eight_ball ? "eight_ball" : "nine_ball",
-                              config_.table_size, 0, 1.0);
+  // make_break_scenario names the table size in its error.
+  if (config_.game == GameType::snooker && config_.table_size != "12ft") {
+    throw std::invalid_argument("snooker is played on the \"12ft\" table, not \"" +
+                                config_.table_size + "\"");
+  }
+  base_ = make_break_scenario(std::string(to_string(config_.game)), config_.table_size, 0, 1.0);
   table_ = base_.table;
   if (4.0 * config_.ball_radius >= table_.width) {
     throw std::invalid_argument("ball_radius is too large for a " + config_.table_size + " table");
@@ -203,6 +208,7 @@ GameState Rules::start(std::uint64_t rack_seed, int breaker) const {
   s.game = config_.game;
   s.position.assign(static_cast<std::size_t>(ball_count()), Vec2{});
   s.on_table.assign(static_cast<std::size_t>(ball_count()), 0);
+  if (ruleset_->start(*this, rack_seed, breaker, s)) return s;
   const std::string game = config_.game == GameType::eight_ball ? "eight_ball" : "nine_ball";
   for (const RackedBall& b : make_rack(game, table_, config_.ball_radius, rack_seed)) {
     const auto n = static_cast<std::size_t>(std::stoi(b.id));
@@ -229,7 +235,7 @@ LegalActions Rules::legal_actions(const GameState& s) const {
   LegalActions la;
   if (s.phase == Phase::game_over) return la;
   if (s.phase != Phase::break_shot && s.phase != Phase::shot) {
-    la.choices = ruleset_->choices(s.phase);
+    la.choices = ruleset_->state_choices(s);
     return la;
   }
   la.place = s.ball_in_hand;
@@ -258,6 +264,7 @@ std::optional<std::string> Rules::check_placement(const GameState& s, Vec2 p) co
     return "the cue ball must be placed behind the head string (x <= " +
            std::to_string(head_string()) + " m)";
   }
+  if (auto why = ruleset_->check_place(*this, s, p)) return why;
   for (std::size_t b = 1; b < s.on_table.size(); ++b) {
     if (s.on_table[b] && norm(s.position[b] - p) < 2.0 * R) {
       return "the cue ball would overlap ball " + std::to_string(b);
@@ -360,6 +367,7 @@ ShotFacts Rules::facts(const std::vector<Event>& events) const {
 }
 
 Vec2 Rules::spot_position(const GameState& s, int ball) const {
+  if (const std::optional<Vec2> p = ruleset_->spot_position(*this, s, ball)) return *p;
   const double R = config_.ball_radius;
   const auto free = [&](Vec2 p) {
     if (wall_clearance(table_, p, R) < 0.0) return false;

@@ -141,8 +141,7 @@ class EightBall final : public Ruleset {
         s.scratch_on_break = false;
         r.text = who + " has the 8 spotted and plays on.";
         break;
-      case Choice::shoot:
-      case Choice::pass_back:
+      default:
         break;  // not on offer in 8-ball: check() refuses them
     }
   }

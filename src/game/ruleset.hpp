@@ -5,10 +5,12 @@
 // ruling read from them. What is common to the games on a pool table
 // (placing the cue ball, simulating a shot, reading its facts, spotting,
 // the stalemate limit) is written once in rules.cpp; what one game decides
-// is a Ruleset, one file a game (rules_eight.cpp, rules_nine.cpp). A new
-// game is a new Ruleset and an entry in make_ruleset.
+// is a Ruleset, one file a game (rules_eight.cpp, rules_nine.cpp,
+// rules_snooker.cpp). A new game is a new Ruleset and an entry in
+// make_ruleset.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -99,6 +101,31 @@ class Ruleset {
   virtual void decide(DecisionRuling& d, Choice choice) const = 0;
   /// Rules a shot: fouls, whose turn, the next phase, the ruling's text.
   virtual void rule_shot(ShotRuling& shot) const = 0;
+
+  // What a game on another table than the pool table's changes (snooker);
+  // the defaults are the pool games'.
+
+  /// The decisions on offer in `s` (a decision phase, or the shot phase
+  /// when the game offers one there): choices(s.phase) unless the game
+  /// says otherwise.
+  virtual std::vector<Choice> state_choices(const GameState& s) const { return choices(s.phase); }
+  /// Sets up a new game's balls, phase and game state (Rules::start);
+  /// false: the pool games' rack and start.
+  virtual bool start(const Rules& /*rules*/, std::uint64_t /*rack_seed*/, int /*breaker*/,
+                     GameState& /*s*/) const {
+    return false;
+  }
+  /// Why the cue ball may not be placed at p for the game's own kind of
+  /// ball in hand (BallInHand::d), or nullopt.
+  virtual std::optional<std::string> check_place(const Rules& /*rules*/, const GameState& /*s*/,
+                                                 Vec2 /*p*/) const {
+    return std::nullopt;
+  }
+  /// Where `ball` is spotted; nullopt: the pool games' long string.
+  virtual std::optional<Vec2> spot_position(const Rules& /*rules*/, const GameState& /*s*/,
+                                            int /*ball*/) const {
+    return std::nullopt;
+  }
 };
 
 /// Why a call's pocket does not exist on the rules' table, or nullopt.
@@ -111,5 +138,6 @@ std::vector<Foul> pool_foul_kinds();
 
 std::shared_ptr<const Ruleset> make_eight_ball_ruleset();
 std::shared_ptr<const Ruleset> make_nine_ball_ruleset();
+std::shared_ptr<const Ruleset> make_snooker_ruleset();
 
 }  // namespace breakshot::detail

@@ -12,22 +12,34 @@ namespace breakshot::json_io {
 namespace {
 
 // Every value of each enum, for the messages that list them.
-constexpr GameType kGameTypes[] = {GameType::eight_ball, GameType::nine_ball};
+constexpr GameType kGameTypes[] = {GameType::eight_ball, GameType::nine_ball, GameType::snooker};
 constexpr Phase kPhases[] = {Phase::break_shot,           Phase::shot,
                              Phase::push_out_choice,      Phase::illegal_break_choice,
-                             Phase::eight_on_break_choice, Phase::game_over};
+                             Phase::eight_on_break_choice, Phase::game_over,
+                             Phase::foul_choice};
 constexpr BallInHand kBallInHand[] = {BallInHand::none, BallInHand::kitchen,
-                                      BallInHand::anywhere};
+                                      BallInHand::anywhere, BallInHand::d};
 constexpr Group kGroups[] = {Group::none, Group::solids, Group::stripes};
 constexpr Choice kChoices[] = {Choice::shoot,
                                Choice::pass_back,
                                Choice::accept_table,
                                Choice::rerack_and_break,
                                Choice::rerack_opponent_breaks,
-                               Choice::respot_eight};
+                               Choice::respot_eight,
+                               Choice::play_on,
+                               Choice::offender_again,
+                               Choice::replace_balls,
+                               Choice::concede};
 constexpr Foul kFouls[] = {Foul::scratch,       Foul::no_contact,    Foul::wrong_ball_first,
                            Foul::no_rail,       Foul::illegal_break, Foul::behind_head_string,
-                           Foul::ball_off_table};
+                           Foul::ball_off_table, Foul::in_off,       Foul::wrong_ball_potted,
+                           Foul::free_ball_snooker};
+
+/// The highest ball number of a game (a bound for the numbers a record names).
+int last_ball(GameType g) { return g == GameType::snooker ? 21 : 15; }
+
+ojson positions_json(const std::vector<Vec2>& position);
+ojson flags_json(const std::vector<std::uint8_t>& on_table);
 }  // namespace
 
 // ---------------------------------------------------------------------------
@@ -93,12 +105,53 @@ ojson noise_json(const NoiseModel& n) {
   return j;
 }
 
+namespace {
+
+ojson positions_json(const std::vector<Vec2>& position) {
+  ojson pos = ojson::array();
+  for (const Vec2& p : position) pos.push_back(vec2_json(p));
+  return pos;
+}
+
+ojson flags_json(const std::vector<std::uint8_t>& on_table) {
+  ojson on = ojson::array();
+  for (const std::uint8_t b : on_table) on.push_back(static_cast<int>(b));
+  return on;
+}
+
+ojson snooker_state_json(const SnookerState& k) {
+  const auto& [score, break_points, colour_on, free_ball, respotted_black, misses,
+               replace_position, replace_on_table, replace_colour_on, replace_free_ball] = k;
+  ojson j = ojson::object();
+  j["score"] = ojson::array({score[0], score[1]});
+  j["break"] = break_points;
+  j["colour_on"] = colour_on;
+  j["free_ball"] = free_ball;
+  j["respotted_black"] = respotted_black;
+  j["misses"] = misses;
+  // The table a miss's replace_balls restores: null unless a miss was
+  // just called.
+  if (replace_position.empty()) {
+    j["replace"] = nullptr;
+  } else {
+    ojson r = ojson::object();
+    r["position"] = positions_json(replace_position);
+    r["on_table"] = flags_json(replace_on_table);
+    r["colour_on"] = replace_colour_on;
+    r["free_ball"] = replace_free_ball;
+    j["replace"] = std::move(r);
+  }
+  return j;
+}
+
+}  // namespace
+
 ojson state_json(const GameState& s) {
   // Structured bindings name every member: when GameState gains or loses
   // one, this stops compiling instead of writing records that miss it.
   const auto& [game, position, on_table, phase, player, breaker, ball_in_hand, kitchen_shot,
                group, fouls_in_a_row, push_out_allowed, after_push_out, scratch_on_break,
-               winner, result, shots, innings, rack_seed, racks] = s;
+               winner, result, shots, innings, rack_seed, racks, snooker] = s;
   ojson j = ojson::object();
   j["game"] = to_string(game);
   j["phase"] = to_string(phase);
@@ -117,17 +170,16 @@ ojson state_json(const GameState& s) {
   j["innings"] = innings;
   j["rack_seed"] = seed_json(rack_seed);
   j["racks"] = racks;
-  ojson pos = ojson::array();
-  for (const Vec2& p : position) pos.push_back(vec2_json(p));
-  j["position"] = std::move(pos);
-  ojson on = ojson::array();
-  for (const std::uint8_t b : on_table) on.push_back(static_cast<int>(b));
-  j["on_table"] = std::move(on);
+  j["position"] = positions_json(position);
+  j["on_table"] = flags_json(on_table);
+  // Snooker's part, only in snooker: the other games' states keep their bytes.
+  if (snooker) j["snooker"] = snooker_state_json(*snooker);
   return j;
 }
 
 ojson ruling_json(const Ruling& r) {
-  const auto& [fouls, legal_break, turn_continues, assigned, spotted, winner, text, call_made] = r;
+  const auto& [fouls, legal_break, turn_continues, assigned, spotted, winner, text, call_made,
+               snooker] = r;
   ojson j = ojson::object();
   ojson names = ojson::array();
   for (const Foul f : fouls) names.push_back(to_string(f));
@@ -139,6 +191,17 @@ ojson ruling_json(const Ruling& r) {
   j["winner"] = winner;
   j["text"] = text;
   j["call_made"] = call_made;
+  if (snooker) {
+    // Snooker's part, only in snooker rulings.
+    const auto& [points, penalty, miss, free_ball, nominated] = *snooker;
+    ojson k = ojson::object();
+    k["points"] = points;
+    k["penalty"] = penalty;
+    k["miss"] = miss;
+    k["free_ball"] = free_ball;
+    k["nominated"] = nominated;
+    j["snooker"] = std::move(k);
+  }
   return j;
 }
 
@@ -148,7 +211,7 @@ ojson action_json(const Action& a) {
     j["type"] = "place_cue_ball";
     j["position"] = vec2_json(place->position);
   } else if (const auto* shoot = std::get_if<Shoot>(&a)) {
-    const auto& [strike, call, safety, push_out] = *shoot;
+    const auto& [strike, call, safety, push_out, nominate] = *shoot;
     j["type"] = "shoot";
     j["strike"] = strike_json(strike);
     if (call) {
@@ -161,6 +224,7 @@ ojson action_json(const Action& a) {
     }
     j["safety"] = safety;
     j["push_out"] = push_out;
+    if (nominate) j["nominate"] = *nominate;  // snooker only
   } else {
     j["type"] = "decide";
     j["choice"] = to_string(std::get<Decide>(a).choice);
@@ -177,8 +241,9 @@ bool GameReader::config(const json& v, const std::string& path, GameConfig& c) {
     return false;
   }
   const auto at = [&](std::string_view key) { return member_path(path, key); };
-  return game_type(v["game"], at("game"), c.game) &&
-         table_size(v["table_size"], at("table_size"), c.table_size) &&
+  if (!game_type(v["game"], at("game"), c.game)) return false;
+  game_context = c.game;
+  return table_size(v["table_size"], at("table_size"), c.table_size) &&
          number(v["ball_radius"], at("ball_radius"), c.ball_radius) &&
          positive(c.ball_radius, at("ball_radius")) &&
          number(v["ball_mass"], at("ball_mass"), c.ball_mass) &&
@@ -255,11 +320,20 @@ bool GameReader::strike(const json& v, const std::string& path, CueStrike& s) {
 }
 
 bool GameReader::state(const json& v, const std::string& path, GameState& s) {
-  if (!exact_object(v, path,
-              {"game", "phase", "player", "breaker", "ball_in_hand", "kitchen_shot", "group",
-               "fouls_in_a_row",
-               "push_out_allowed", "after_push_out", "scratch_on_break", "winner", "result",
-               "shots", "innings", "rack_seed", "racks", "position", "on_table"})) {
+  // Snooker's states have a "snooker" object, the other games' none.
+  const json* game_field = v.is_object() ? find(v, "game") : nullptr;
+  const bool snooker =
+      game_field != nullptr && game_field->is_string() && game_field->get<std::string>() == "snooker";
+  if (snooker ? !exact_object(v, path,
+                              {"game", "phase", "player", "breaker", "ball_in_hand",
+                               "kitchen_shot", "group", "fouls_in_a_row", "push_out_allowed",
+                               "after_push_out", "scratch_on_break", "winner", "result", "shots",
+                               "innings", "rack_seed", "racks", "position", "on_table", "snooker"})
+              : !exact_object(v, path,
+                              {"game", "phase", "player", "breaker", "ball_in_hand",
+                               "kitchen_shot", "group", "fouls_in_a_row", "push_out_allowed",
+                               "after_push_out", "scratch_on_break", "winner", "result", "shots",
+                               "innings", "rack_seed", "racks", "position", "on_table"})) {
     return false;
   }
   const auto at = [&](std::string_view key) { return member_path(path, key); };
@@ -312,13 +386,84 @@ bool GameReader::state(const json& v, const std::string& path, GameState& s) {
     if (!integer(on_table[i], index_path(at("on_table"), i), 0, 1, flag)) return false;
     s.on_table[i] = static_cast<std::uint8_t>(flag);
   }
+  s.snooker.reset();
+  if (snooker) {
+    SnookerState k;
+    if (!snooker_state(v["snooker"], at("snooker"), k)) return false;
+    s.snooker = std::move(k);
+  }
   return true;
 }
 
-bool GameReader::ruling(const json& v, const std::string& path, Ruling& r) {
+bool GameReader::positions(const json& v, const std::string& path, std::vector<Vec2>& out) {
+  if (!array(v, path)) return false;
+  out.resize(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!vec2(v[i], index_path(path, i), out[i])) return false;
+  }
+  return true;
+}
+
+bool GameReader::flags(const json& v, const std::string& path, std::size_t n,
+                       std::vector<std::uint8_t>& out) {
+  if (!array(v, path)) return false;
+  if (v.size() != n) {
+    return fail(path, "has " + std::to_string(v.size()) + " entries but position has " +
+                          std::to_string(n) + " (one per ball)");
+  }
+  out.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    int flag = 0;
+    if (!integer(v[i], index_path(path, i), 0, 1, flag)) return false;
+    out[i] = static_cast<std::uint8_t>(flag);
+  }
+  return true;
+}
+
+bool GameReader::snooker_state(const json& v, const std::string& path, SnookerState& k) {
   if (!exact_object(v, path,
-              {"fouls", "legal_break", "turn_continues", "assigned", "spotted", "winner",
-               "text", "call_made"})) {
+                    {"score", "break", "colour_on", "free_ball", "respotted_black", "misses",
+                     "replace"})) {
+    return false;
+  }
+  const auto at = [&](std::string_view key) { return member_path(path, key); };
+  const json& score = v["score"];
+  if (!array(score, at("score"), 2)) return false;
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (!integer(score[i], index_path(at("score"), i), 0, INT_MAX, k.score[i])) return false;
+  }
+  if (!integer(v["break"], at("break"), 0, INT_MAX, k.break_points) ||
+      !boolean(v["colour_on"], at("colour_on"), k.colour_on) ||
+      !boolean(v["free_ball"], at("free_ball"), k.free_ball) ||
+      !boolean(v["respotted_black"], at("respotted_black"), k.respotted_black) ||
+      !integer(v["misses"], at("misses"), 0, 3, k.misses)) {
+    return false;
+  }
+  const json& r = v["replace"];
+  if (r.is_null()) return true;
+  const std::string rp = at("replace");
+  if (!exact_object(r, rp, {"position", "on_table", "colour_on", "free_ball"})) return false;
+  if (!positions(r["position"], member_path(rp, "position"), k.replace_position)) return false;
+  if (k.replace_position.empty()) return fail(member_path(rp, "position"), "expected the balls' positions, not []");
+  return flags(r["on_table"], member_path(rp, "on_table"), k.replace_position.size(),
+               k.replace_on_table) &&
+         boolean(r["colour_on"], member_path(rp, "colour_on"), k.replace_colour_on) &&
+         boolean(r["free_ball"], member_path(rp, "free_ball"), k.replace_free_ball);
+}
+
+bool GameReader::ruling(const json& v, const std::string& path, Ruling& r) {
+  // A snooker shot's ruling has a "snooker" object; a decision's and the
+  // other games' have none.
+  const bool snooker = v.is_object() && find(v, "snooker") != nullptr;
+  if (snooker && game_context && *game_context != GameType::snooker) {
+    return fail(member_path(path, "snooker"), "only snooker rulings have this field");
+  }
+  if (snooker ? !exact_object(v, path,
+                              {"fouls", "legal_break", "turn_continues", "assigned", "spotted",
+                               "winner", "text", "call_made", "snooker"})
+              : !exact_object(v, path,
+                              {"fouls", "legal_break", "turn_continues", "assigned", "spotted",
+                               "winner", "text", "call_made"})) {
     return false;
   }
   const auto at = [&](std::string_view key) { return member_path(path, key); };
@@ -339,11 +484,31 @@ bool GameReader::ruling(const json& v, const std::string& path, Ruling& r) {
   if (!array(spotted, at("spotted"))) return false;
   r.spotted.resize(spotted.size());
   for (std::size_t i = 0; i < spotted.size(); ++i) {
-    if (!integer(spotted[i], index_path(at("spotted"), i), 0, 15, r.spotted[i])) return false;
+    if (!integer(spotted[i], index_path(at("spotted"), i), 0,
+                 last_ball(game_context.value_or(GameType::eight_ball)), r.spotted[i])) {
+      return false;
+    }
   }
-  return integer(v["winner"], at("winner"), -1, 1, r.winner) &&
-         text(v["text"], at("text"), r.text) &&
-         boolean(v["call_made"], at("call_made"), r.call_made);
+  if (!integer(v["winner"], at("winner"), -1, 1, r.winner) ||
+      !text(v["text"], at("text"), r.text) ||
+      !boolean(v["call_made"], at("call_made"), r.call_made)) {
+    return false;
+  }
+  r.snooker.reset();
+  if (!snooker) return true;
+  const json& k = v["snooker"];
+  const std::string kp = at("snooker");
+  SnookerRuling sr;
+  if (!exact_object(k, kp, {"points", "penalty", "miss", "free_ball", "nominated"}) ||
+      !integer(k["points"], member_path(kp, "points"), 0, INT_MAX, sr.points) ||
+      !integer(k["penalty"], member_path(kp, "penalty"), 0, INT_MAX, sr.penalty) ||
+      !boolean(k["miss"], member_path(kp, "miss"), sr.miss) ||
+      !boolean(k["free_ball"], member_path(kp, "free_ball"), sr.free_ball) ||
+      !integer(k["nominated"], member_path(kp, "nominated"), -1, 21, sr.nominated)) {
+    return false;
+  }
+  r.snooker = sr;
+  return true;
 }
 
 bool GameReader::action(const json& v, const std::string& path, Action& a) {
@@ -364,9 +529,17 @@ bool GameReader::action(const json& v, const std::string& path, Action& a) {
   }
   if (t == "shoot") {
     Shoot shoot;
-    if (!exact_object(v, path, {"type", "strike", "call", "safety", "push_out"}) ||
+    const bool nominates = find(v, "nominate") != nullptr;
+    if (!(nominates ? exact_object(v, path, {"type", "strike", "call", "safety", "push_out",
+                                             "nominate"})
+                    : exact_object(v, path, {"type", "strike", "call", "safety", "push_out"})) ||
         !strike(v["strike"], member_path(path, "strike"), shoot.strike)) {
       return false;
+    }
+    if (nominates) {
+      int ball = 0;
+      if (!integer(v["nominate"], member_path(path, "nominate"), 1, 21, ball)) return false;
+      shoot.nominate = ball;
     }
     const json& call = v["call"];
     const std::string call_path = member_path(path, "call");
@@ -403,6 +576,8 @@ bool GameReader::game_type(const json& v, const std::string& path, GameType& out
 }
 
 bool GameReader::table_size(const json& v, const std::string& path, std::string& out) {
+  // Snooker's table is the 12 ft one; the pool games' are the others.
+  if (game_context == GameType::snooker) return text_of(v, path, "table size", {"12ft"}, out);
   return text_of(v, path, "table size", {"7ft", "8ft", "9ft"}, out);
 }
 

@@ -12,16 +12,25 @@
 //                "group": [2], "fouls_in_a_row": [2], "push_out_allowed",
 //                "after_push_out", "scratch_on_break", "winner", "result", "shots",
 //                "innings", "rack_seed": "DECIMAL", "racks",
-//                "position": [[x, y] by ball number], "on_table": [0 or 1 by ball number]}
+//                "position": [[x, y] by ball number], "on_table": [0 or 1 by ball number],
+//                snooker only: "snooker": SNOOKER}
+//   SNOOKER     {"score": [2], "break", "colour_on", "free_ball", "respotted_black",
+//                "misses", "replace": null | {"position", "on_table", "colour_on",
+//                "free_ball"}}
 //   Ruling      {"fouls": [names], "legal_break", "turn_continues", "assigned",
-//                "spotted": [ball numbers], "winner", "text", "call_made"}
+//                "spotted": [ball numbers], "winner", "text", "call_made",
+//                a snooker shot's only: "snooker": {"points", "penalty", "miss",
+//                "free_ball", "nominated"}}
 //   Action      {"type": "place_cue_ball", "position": [x, y]}
 //               {"type": "shoot", "strike": CueStrike, "call": null | {"ball", "pocket"},
-//                "safety", "push_out"}
+//                "safety", "push_out", snooker only and when given: "nominate"}
 //               {"type": "decide", "choice"}
 //
 // Every field is always written (null for an empty optional) and always
-// required on reading. Enum values are the names of game.hpp's
+// required on reading, but snooker's, which the other games never have
+// (so that their records keep their bytes): "snooker" in a snooker state
+// is required, in a shot's ruling written, "nominate" written when the
+// shot nominates. Enum values are the names of game.hpp's
 // to_string. Seeds are decimal strings (64-bit integers do not survive
 // readers that keep numbers in doubles). The encoders give
 // nlohmann::ordered_json trees, which keep their keys in the order
@@ -32,7 +41,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -72,12 +83,23 @@ class GameReader : public Reader {
   bool ruling(const json& v, const std::string& path, Ruling& r);
   bool action(const json& v, const std::string& path, Action& a);
 
-  /// A game name: "eight_ball" or "nine_ball".
+  /// A game name: "eight_ball", "nine_ball" or "snooker".
   bool game_type(const json& v, const std::string& path, GameType& out);
-  /// A pool table size: "7ft", "8ft" or "9ft".
+  /// A table size: "7ft", "8ft" or "9ft"; "12ft" when game_context is
+  /// snooker.
   bool table_size(const json& v, const std::string& path, std::string& out);
   /// A choice name (Decide).
   bool choice(const json& v, const std::string& path, Choice& out);
+
+  /// The game of the document being read, once config() has read it:
+  /// bounds the ball numbers of rulings and admits snooker's fields.
+  std::optional<GameType> game_context;
+
+ private:
+  bool snooker_state(const json& v, const std::string& path, SnookerState& k);
+  bool positions(const json& v, const std::string& path, std::vector<Vec2>& out);
+  bool flags(const json& v, const std::string& path, std::size_t n,
+             std::vector<std::uint8_t>& out);
 };
 
 }  // namespace breakshot::json_io

@@ -121,6 +121,21 @@ std::string match_summary_json(const MatchSummary& s) {
     ojson fouls = ojson::object();
     for (const auto& [kind, count] : p.fouls) fouls[kind] = count;
     o["fouls"] = std::move(fouls);
+    if (p.snooker) {
+      // Snooker's figures, only in snooker summaries.
+      const SnookerStats& k = *p.snooker;
+      ojson sk = ojson::object();
+      sk["points"] = k.points;
+      sk["highest_break"] = k.highest_break;
+      sk["breaks_50"] = k.breaks_50;
+      sk["breaks_100"] = k.breaks_100;
+      sk["scoring_visits"] = k.scoring_visits;
+      sk["break_points"] = k.break_points;
+      sk["mean_break"] = k.mean_break();
+      sk["foul_points_given"] = k.foul_points_given;
+      sk["misses"] = k.misses;
+      o["snooker"] = std::move(sk);
+    }
     players.push_back(std::move(o));
   }
   j["players"] = std::move(players);
@@ -157,7 +172,9 @@ class SummaryReader : public json_io::GameReader {
     }
     game_ = s.game;
     if (!required(doc, top, "table_size", v) ||
-        !text_of(*v, "table_size", "table size", {"7ft", "8ft", "9ft"}, s.table_size)) {
+        !(s.game == GameType::snooker
+              ? text_of(*v, "table_size", "table size", {"12ft"}, s.table_size)
+              : text_of(*v, "table_size", "table size", {"7ft", "8ft", "9ft"}, s.table_size))) {
       return false;
     }
     if (const json* ph = find(doc, "physics")) {
@@ -181,7 +198,7 @@ class SummaryReader : public json_io::GameReader {
 
     std::vector<Foul> kinds;
     try {
-      GameConfig config;
+      GameConfig config = s.game == GameType::snooker ? snooker_config() : GameConfig{};
       config.game = s.game;
       config.table_size = s.table_size;
       config.physics = s.physics;  // airborne physics adds ball_off_table
@@ -292,11 +309,18 @@ class SummaryReader : public json_io::GameReader {
                   "a summary with decision times (--timing) cannot be read: it keeps only "
                   "their quantiles, which do not add up");
     }
-    if (!exact_object(v, path, {"name", "noise", "games_won", "breaks", "break_and_runs",
-                                "innings", "shots", "balls_pocketed", "balls_per_inning",
-                                "pot_attempts", "pots_made", "pot_rate", "fouls"})) {
+    const bool snooker = game_ == GameType::snooker;
+    if (snooker ? !exact_object(v, path,
+                                {"name", "noise", "games_won", "breaks", "break_and_runs",
+                                 "innings", "shots", "balls_pocketed", "balls_per_inning",
+                                 "pot_attempts", "pots_made", "pot_rate", "fouls", "snooker"})
+                : !exact_object(v, path,
+                                {"name", "noise", "games_won", "breaks", "break_and_runs",
+                                 "innings", "shots", "balls_pocketed", "balls_per_inning",
+                                 "pot_attempts", "pots_made", "pot_rate", "fouls"})) {
       return false;
     }
+    if (snooker && !snooker_stats(v["snooker"], member_path(path, "snooker"), p)) return false;
     if (!text(v["name"], member_path(path, "name"), p.name)) return false;
     if (p.name.empty()) return fail(member_path(path, "name"), "must not be empty");
     if (!noise(v["noise"], member_path(path, "noise"), p.noise)) return false;
@@ -329,6 +353,25 @@ class SummaryReader : public json_io::GameReader {
         }
       }
     }
+    return true;
+  }
+
+  bool snooker_stats(const json& v, const std::string& path, PlayerStats& p) {
+    if (!exact_object(v, path,
+                      {"points", "highest_break", "breaks_50", "breaks_100", "scoring_visits",
+                       "break_points", "mean_break", "foul_points_given", "misses"})) {
+      return false;
+    }
+    SnookerStats k;
+    if (!count(v, path, "points", k.points) || !count(v, path, "highest_break", k.highest_break) ||
+        !count(v, path, "breaks_50", k.breaks_50) || !count(v, path, "breaks_100", k.breaks_100) ||
+        !count(v, path, "scoring_visits", k.scoring_visits) ||
+        !count(v, path, "break_points", k.break_points) ||
+        !count(v, path, "foul_points_given", k.foul_points_given) ||
+        !count(v, path, "misses", k.misses) || !rate(v, path, "mean_break", k.mean_break())) {
+      return false;
+    }
+    p.snooker = k;
     return true;
   }
 

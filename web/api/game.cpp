@@ -140,6 +140,10 @@ bs::GameType game_type(const json& v, const std::string& path) {
   Reader r;
   bs::GameType g{};
   r.must(r.game_type(v, path, g));
+  if (g == bs::GameType::snooker) {
+    bad(path, "game \"snooker\" is not played in the browser yet (expected \"eight_ball\" or "
+              "\"nine_ball\")");
+  }
   return g;
 }
 
