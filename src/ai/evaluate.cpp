@@ -237,8 +237,32 @@ double snooker_visit_points(const Rules& rules, const GameState& s, double sigma
     if (!on.empty()) ball = on.front();
   } else {
     p = best_pot_estimate_from(rules, s, s.position[0], false, sigma, &ball);
+    if (ball < 0 && snookered(rules, s)) return -kSnookeredPoints;
   }
   return ball > 0 ? p * (snooker_value(ball) + kSnookerCarry) : 0.0;
+}
+
+bool snookered(const Rules& rules, const GameState& s) {
+  if (!s.on_table[0]) return false;
+  const double R = rules.config().ball_radius;
+  const ai::Layout lay{s.position, s.on_table};
+  const Vec2 cue = s.position[0];
+  for (const int t : snooker_balls_on(s)) {
+    // A full contact, or a thin one on either side: the cue ball's centre
+    // runs to the ball's centre, or to a point 2R from it across the line.
+    const Vec2 b = s.position[static_cast<std::size_t>(t)];
+    const Vec2 d = b - cue;
+    const double len = norm(d);
+    if (len < 1e-9) return false;
+    const Vec2 side = Vec2{-d.y, d.x} / len * (2.0 * R * 0.98);
+    for (const Vec2 to : {b - d / len * (2.0 * R), b - d / len * (2.0 * R) + side * 0.5,
+                          b - d / len * (2.0 * R) - side * 0.5}) {
+      if (ai::balls_clear(lay, R, cue, to, t) && ai::walls_clear(rules.table(), R, cue, to)) {
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 double snooker_position_value(const Rules& rules, const GameState& after, int me, double sigma,

@@ -49,6 +49,13 @@ inline constexpr double kSnookerCarry = 4.0;
 inline constexpr double kSnookerSpreadPerPoint = 9.0;
 inline constexpr double kSnookerSpreadBase = 16.0;
 inline constexpr double kSnookerHandP = 0.6;
+/// Snooker: what a visit that begins snookered (no ball on can be hit
+/// directly, full or thin) is worth: the escape risks a foul of at least 4.
+inline constexpr double kSnookeredPoints = 3.0;
+
+/// Snooker: the player to act in `s` cannot hit any ball on in a straight
+/// line (full, or half a ball either side of full).
+bool snookered(const Rules& rules, const GameState& s);
 
 /// Snooker: the points the player to act in `s` may expect from the
 /// visit it begins (0 on the break-off).
