@@ -534,8 +534,6 @@ TEST_F(MatchCli, BadArgumentsExitTwoNamingTheProblem) {
   const std::string base = "--noise tournament --seed 1 ";
   const Case cases[] = {
       {"--game bowls --players baseline,baseline --games 1", "--game: unknown game 'bowls'"},
-      {"--game snooker --players baseline,amateur --games 1",
-       "--players: snooker: level amateur not available yet"},
       {"--game snooker --players baseline,baseline --games 1 --table 9ft",
        "--table: snooker is played on the 12ft table"},
       {"--game eight_ball --players baseline --games 1", "--players: "},

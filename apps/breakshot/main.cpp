@@ -313,10 +313,6 @@ bs::MatchOptions match_options(const MatchArgs& a) {
     } catch (const std::invalid_argument& e) {
       throw BadArgument{"--players: " + std::string(e.what())};
     }
-    if (opt.game == bs::GameType::snooker && name != "baseline") {
-      throw BadArgument{"--players: snooker: level " + name +
-                        " not available yet (the baseline plays snooker)"};
-    }
   }
 
   if (!parse_whole(a.games, opt.games) || opt.games < 1) {

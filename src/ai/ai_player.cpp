@@ -67,6 +67,7 @@
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
+#include "breakshot/snooker.hpp"
 #include "evaluate.hpp"
 
 namespace breakshot {
@@ -229,12 +230,9 @@ class AiPlayer final : public Player {
   std::optional<NoiseModel> noise() const override { return level_.noise; }
 
   Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) override {
-    if (state.game == GameType::snooker) {
-      throw std::invalid_argument("snooker: level " + level_.name +
-                                  " not available yet (the baseline plays snooker)");
-    }
     Budget budget(level_.simulation_budget, level_.time_budget);
     const LegalActions la = rules.legal_actions(state);
+    if (state.game == GameType::snooker) return snooker_action(rules, state, la, seed, budget);
     if (!la.choices.empty()) return Decide{choose(rules, state, la, seed, budget)};
     if (state.phase == Phase::break_shot) return break_action(rules, state, la, budget);
     if (la.place != BallInHand::none) return placement_or_shot(rules, state, la, seed, budget);
@@ -243,6 +241,41 @@ class AiPlayer final : public Player {
 
  private:
   bool searches() const { return level_.samples > 0 && level_.candidates > 0; }
+
+  // -------------------------------------------------------------------------
+  // Snooker
+
+  /// Snooker: the decision after the opponent's foul, conceding a frame
+  /// that needs snookers, the break-off and shots from the D (a shot with
+  /// the cue ball in hand), and the shots.
+  Action snooker_action(const Rules& rules, const GameState& state, const LegalActions& la,
+                        std::uint64_t seed, Budget& budget) const {
+    const int me = state.player;
+    const auto offered = [&](Choice c) {
+      return std::find(la.choices.begin(), la.choices.end(), c) != la.choices.end();
+    };
+    if (offered(Choice::concede) && snookers_required(state, me) > 0) {
+      return Decide{Choice::concede};
+    }
+    if (state.phase == Phase::foul_choice) {
+      // The choice whose table is worth most: played on, the offender to
+      // play again, or the balls replaced after a miss.
+      Choice best = Choice::play_on;
+      double best_value = kNoValue;
+      for (const Choice c : {Choice::play_on, Choice::offender_again, Choice::replace_balls}) {
+        if (!offered(c)) continue;
+        const GameState next = rules.apply(state, Decide{c}).state;
+        const double v = position_value(rules, next, me, sigma_);
+        if (v > best_value) {
+          best_value = v;
+          best = c;
+        }
+      }
+      return Decide{best};
+    }
+    if (la.place != BallInHand::none) return placement_or_shot(rules, state, la, seed, budget);
+    return shot_action(rules, state, la, seed, budget);
+  }
 
   // -------------------------------------------------------------------------
   // Shots
@@ -373,7 +406,9 @@ class AiPlayer final : public Player {
     // what the miss's table is worth, a missed pot hands the opponent the
     // table, which the static values read too kindly (risk aversion; the
     // strongest level only).
-    const double risk = level_.lookahead ? kMissPenalty : 0.0;
+    // Snooker's values are frame chances from the score, where a missed
+    // pot already costs what the opponent's visit promises: no charge.
+    const double risk = level_.lookahead && state.game != GameType::snooker ? kMissPenalty : 0.0;
     const auto mean = [&](std::size_t c) {
       if (!count[c]) return kNoValue;
       double m = sum[c] / count[c];
@@ -529,7 +564,9 @@ class AiPlayer final : public Player {
       const double stat = position_value(rules, g, shooter, sigma_);
       // Playing safe: the static value without the pot.
       const double safe =
-          stat - ai_detail::kShooterGain * best_pot_estimate(rules, g, sigma_);
+          g.game == GameType::snooker
+              ? ai_detail::snooker_position_value(rules, g, shooter, sigma_, true)
+              : stat - ai_detail::kShooterGain * best_pot_estimate(rules, g, sigma_);
       // The shooter's best pots there by promise (speed and spin variants
       // ranked by the leave they play for), one variant per line first.
       std::vector<CandidateShot> all = generate_shots(rules, g, gen);
@@ -591,6 +628,7 @@ class AiPlayer final : public Player {
     }
     Shoot s = make_shoot(nearest > 0 ? aim_deg(cue, state.position[static_cast<std::size_t>(nearest)]) : 0.0, 3.0);
     s.safety = la.call;
+    if (la.must_nominate && nearest > 0) s.nominate = nearest;  // snooker: the colour it hits
     if (rules.check(state, s)) s.safety = false;
     return s;
   }
@@ -715,6 +753,18 @@ class AiPlayer final : public Player {
       }
     }
     const Table& table = rules.table();
+    if (la.place == BallInHand::d) {
+      // Snooker's D: a 4 cm grid over it (check_placement keeps what lies
+      // inside).
+      const SnookerMarks m = snooker_marks();
+      for (double x = m.baulk_x - m.d_radius; x <= m.baulk_x + 1e-9; x += 0.04) {
+        for (double y = m.d_centre.y - m.d_radius; y <= m.d_centre.y + m.d_radius + 1e-9; y += 0.04) {
+          add({x, y});
+        }
+      }
+      add({m.baulk_x, m.d_centre.y - 0.5 * m.d_radius});  // the break-off spot
+      return out;
+    }
     for (double x = 0.05; x < table.length; x += 0.1) {
       if (kitchen && x > head) break;
       for (double y = 0.05; y < table.width; y += 0.1) add({x, y});

@@ -173,7 +173,9 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
     int ball;
     int pocket;
     Vec2 ghost;
+    double rank;  // p, or in snooker p times what the pot is worth
   };
+  const bool snooker = state.game == GameType::snooker;
   std::vector<Pot> pots;
   for (const int t : targets) {
     const Vec2 b = state.position[static_cast<std::size_t>(t)];
@@ -202,10 +204,12 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
       const double miss = std::max(e * d1 * d2 / (2.0 * R * cos_cut), 1e-9);
       double p = dm::erf(tol / (std::sqrt(2.0) * miss));
       p /= 1.0 + kDistancePenalty * (d1 + d2);
-      pots.push_back(Pot{p, t, static_cast<int>(k), ghost});
+      const double rank = snooker ? p * (snooker_value(t) + kSnookerCarry) : p;
+      pots.push_back(Pot{p, t, static_cast<int>(k), ghost, rank});
     }
   }
-  std::stable_sort(pots.begin(), pots.end(), [](const Pot& x, const Pot& y) { return x.p > y.p; });
+  std::stable_sort(pots.begin(), pots.end(),
+                   [](const Pot& x, const Pot& y) { return x.rank > y.rank; });
   for (const Pot& pot : pots) {
     const Vec2 b = state.position[static_cast<std::size_t>(pot.ball)];
     if (!ai::walls_clear(table, R, cue, pot.ghost)) continue;
@@ -223,7 +227,70 @@ double best_pot_estimate(const Rules& rules, const GameState& state, double sigm
                                 sigma_phi_deg);
 }
 
+double snooker_visit_points(const Rules& rules, const GameState& s, double sigma) {
+  if (s.phase == Phase::game_over || s.phase == Phase::break_shot) return 0.0;
+  int ball = -1;
+  double p = 0.0;
+  if (!s.on_table[0] || s.ball_in_hand != BallInHand::none) {
+    p = kSnookerHandP;
+    const std::vector<int> on = snooker_balls_on(s);
+    if (!on.empty()) ball = on.front();
+  } else {
+    p = best_pot_estimate_from(rules, s, s.position[0], false, sigma, &ball);
+    if (ball < 0 && snookered(rules, s)) return -kSnookeredPoints;
+  }
+  return ball > 0 ? p * (snooker_value(ball) + kSnookerCarry) : 0.0;
+}
+
+bool snookered(const Rules& rules, const GameState& s) {
+  if (!s.on_table[0]) return false;
+  const double R = rules.config().ball_radius;
+  const ai::Layout lay{s.position, s.on_table};
+  const Vec2 cue = s.position[0];
+  for (const int t : snooker_balls_on(s)) {
+    // A full contact, or a thin one on either side: the cue ball's centre
+    // runs to the ball's centre, or to a point 2R from it across the line.
+    const Vec2 b = s.position[static_cast<std::size_t>(t)];
+    const Vec2 d = b - cue;
+    const double len = norm(d);
+    if (len < 1e-9) return false;
+    const Vec2 side = Vec2{-d.y, d.x} / len * (2.0 * R * 0.98);
+    for (const Vec2 to : {b - d / len * (2.0 * R), b - d / len * (2.0 * R) + side * 0.5,
+                          b - d / len * (2.0 * R) - side * 0.5}) {
+      if (ai::balls_clear(lay, R, cue, to, t) && ai::walls_clear(rules.table(), R, cue, to)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+double snooker_position_value(const Rules& rules, const GameState& after, int me, double sigma,
+                              bool no_pot) {
+  if (after.phase == Phase::game_over) {
+    if (after.winner < 0) return 0.0;
+    return after.winner == me ? 1.0 : -1.0;
+  }
+  const SnookerState& k = *after.snooker;
+  const auto i_me = static_cast<std::size_t>(me);
+  const double lead = static_cast<double>(k.score[i_me] - k.score[1 - i_me]);
+  const double left = static_cast<double>(snooker_points_remaining(after));
+  const double spread = std::sqrt(kSnookerSpreadPerPoint * left + kSnookerSpreadBase);
+  const auto value = [&](double lead_now) { return dm::erf(lead_now / (std::sqrt(2.0) * spread)); };
+  const double e = no_pot ? 0.0 : snooker_visit_points(rules, after, sigma);
+  const int shooter = after.player;
+  if (after.phase == Phase::foul_choice) {
+    // The chooser plays on, or has the offender play again, whichever
+    // is worth more to the chooser.
+    const double play = shooter == me ? value(lead + e) : value(lead - e);
+    const double pass = shooter == me ? value(lead - e) : value(lead + e);
+    return shooter == me ? std::max(play, pass) : std::min(play, pass);
+  }
+  return value(shooter == me ? lead + e : lead - e);
+}
+
 double position_value(const Rules& rules, const GameState& after, int me, double sigma) {
+  if (after.game == GameType::snooker) return snooker_position_value(rules, after, me, sigma, false);
   const auto mine = [&](int who, double v) { return who == me ? v : -v; };
   switch (after.phase) {
     case Phase::game_over:
@@ -251,7 +318,7 @@ double position_value(const Rules& rules, const GameState& after, int me, double
     case Phase::eight_on_break_choice:
       return mine(after.player, 0.3);
     case Phase::foul_choice:
-      return 0.0;  // snooker: the AI levels do not play it yet
+      return 0.0;  // snooker's phase: valued above
   }
   return 0.0;
 }

@@ -38,6 +38,34 @@ inline constexpr double kBallProgress = 0.06;
 /// loss always dominates.
 inline constexpr double kOpenBound = 0.95;
 
+/// Snooker (docs/ai.md, "Snooker"): a table is worth the chance of
+/// winning the frame from its score, read as a normal law: the lead plus
+/// the points the shooter's visit promises (for the side to shoot) over
+/// a spread of sqrt(kSnookerSpreadPerPoint x points left +
+/// kSnookerSpreadBase) points. A visit promises p (value of the ball +
+/// kSnookerCarry) for its best pot p; with the cue ball in hand, p is
+/// kSnookerHandP.
+inline constexpr double kSnookerCarry = 4.0;
+inline constexpr double kSnookerSpreadPerPoint = 9.0;
+inline constexpr double kSnookerSpreadBase = 16.0;
+inline constexpr double kSnookerHandP = 0.6;
+/// Snooker: what a visit that begins snookered (no ball on can be hit
+/// directly, full or thin) is worth: the escape risks a foul of at least 4.
+inline constexpr double kSnookeredPoints = 3.0;
+
+/// Snooker: the player to act in `s` cannot hit any ball on in a straight
+/// line (full, or half a ball either side of full).
+bool snookered(const Rules& rules, const GameState& s);
+
+/// Snooker: the points the player to act in `s` may expect from the
+/// visit it begins (0 on the break-off).
+double snooker_visit_points(const Rules& rules, const GameState& s, double sigma_phi_deg);
+
+/// Snooker's position_value; `no_pot` values the table as if the shooter
+/// had no pot (it plays safe).
+double snooker_position_value(const Rules& rules, const GameState& after, int me,
+                              double sigma_phi_deg, bool no_pot);
+
 /// The shooter's value for a best pot p (above).
 inline double shooter_value(double p) { return kShooterBase + kShooterGain * p; }
 

@@ -42,14 +42,6 @@ MatchSummary play_match(const MatchOptions& options, const RecordSink& sink) {
     throw std::invalid_argument("the number of games must be at least 1, not " +
                                 std::to_string(options.games));
   }
-  if (options.game == GameType::snooker) {
-    for (const std::string& name : options.players) {
-      if (name != "baseline") {
-        throw std::invalid_argument("snooker: level " + name +
-                                    " not available yet (the baseline plays snooker)");
-      }
-    }
-  }
   const std::unique_ptr<Player> p0 = make_player(options.players[0]);
   const std::unique_ptr<Player> p1 = make_player(options.players[1]);
   return play_match(options, *p0, *p1, sink);

@@ -158,11 +158,16 @@ class Generator {
         table_(rules.table()),
         R_(rules.config().ball_radius),
         m_(rules.config().ball_mass),
-        eight_(state.game == GameType::eight_ball) {
+        eight_(state.game == GameType::eight_ball),
+        snooker_(state.game == GameType::snooker),
+        colour_on_(snooker_ && state.snooker && state.snooker->colour_on) {
     layout_.pos = state.position;
     layout_.on = state.on_table;
     la_ = rules.legal_actions(state);
-    for (int t : la_.targets) {
+    // Snooker: the balls on; a free ball (any ball nominated as the ball
+    // on after a foul) is not planned.
+    const std::vector<int> planned = snooker_ ? snooker_balls_on(state) : la_.targets;
+    for (int t : planned) {
       if (t <= 0 || t >= static_cast<int>(state.on_table.size()) || !on(t)) continue;
       // From the kitchen, a ball behind the head string is fair only once
       // the cue ball has crossed it; such shots are not planned.
@@ -196,7 +201,9 @@ class Generator {
       }
     }
     // Jumps over the balls that block a direct pot (physics.airborne).
-    if (opt_.jumps && base_.physics.airborne) {
+    // Snooker has no jump shots: the cue ball jumping over a ball is a
+    // foul (docs/rules.md).
+    if (opt_.jumps && base_.physics.airborne && !snooker_) {
       for (int t : targets_) {
         for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
           if (direct_ok[static_cast<std::size_t>(t)][k]) continue;
@@ -591,6 +598,15 @@ class Generator {
       }
       return out;
     }
+    if (snooker_) {
+      // Snooker: a red off a red. A colour must be both hit first and
+      // potted (the nominated ball), so colours have no combinations.
+      if (colour_on_) return out;
+      for (int t : targets_) {
+        if (t != f && snooker_value(t) == 1) out.push_back(t);
+      }
+      return out;
+    }
     for (std::size_t n = 1; n < state_.on_table.size(); ++n) {
       if (state_.on_table[n] && static_cast<int>(n) != f) out.push_back(static_cast<int>(n));
     }
@@ -756,9 +772,25 @@ class Generator {
     const bool legal_first =
         std::find(targets_.begin(), targets_.end(), f.first_hit) != targets_.end();
     const bool scratch = std::find(f.pocketed.begin(), f.pocketed.end(), 0) != f.pocketed.end();
-    const bool rail = f.cushion_after_contact || !f.pocketed.empty();
+    // Snooker asks for no cushion after the contact.
+    const bool rail = snooker_ || f.cushion_after_contact || !f.pocketed.empty();
     j.legal = !miscue && legal_first && !scratch && rail && !j.off_table;
     return j;
+  }
+
+  /// Snooker: every object ball the shot potted was on, with `nominated`
+  /// the ball on after a red (so no foul for a ball wrongly potted), and
+  /// with a colour on the cue ball hit the nominated ball first.
+  bool snooker_pots_ok(const Judged& j, int nominated) const {
+    if (colour_on_ && j.first_hit != nominated) return false;
+    for (int b : j.pocketed) {
+      if (b <= 0) continue;
+      if (colour_on_ ? b != nominated
+                     : std::find(targets_.begin(), targets_.end(), b) == targets_.end()) {
+        return false;
+      }
+    }
+    return true;
   }
 
   static int pocket_of(const Judged& j, int ball) {
@@ -771,6 +803,7 @@ class Generator {
   bool pot_made(const Judged& j, const Line& l) const {
     if (!j.legal || j.first_hit != l.first || pocket_of(j, l.target) != l.pocket) return false;
     if (eight_ && l.target != 8 && pocket_of(j, 8) >= 0) return false;
+    if (snooker_ && !snooker_pots_ok(j, l.target)) return false;
     return true;
   }
 
@@ -875,6 +908,7 @@ class Generator {
     c.target = l.target;
     c.pocket = l.pocket;
     c.shot.strike = strike;
+    if (la_.must_nominate) c.shot.nominate = l.target;  // snooker: the colour after a red
     c.shot.call = Call{l.target, l.pocket};
     if (!la_.call && rules_.check(state_, Action{c.shot})) c.shot.call.reset();
     c.prior = prior;
@@ -954,7 +988,7 @@ class Generator {
   /// The shooter's best next pot on the table a pot's noiseless play
   /// left (CandidateShot::leave): 1 when the pot wins the game.
   double leave(const Judged& j, const Line& l) const {
-    const bool wins = eight_ ? l.target == 8 : pocket_of(j, 9) >= 0;
+    const bool wins = snooker_ ? false : eight_ ? l.target == 8 : pocket_of(j, 9) >= 0;
     if (wins) return 1.0;
     GameState next = state_;
     next.position = j.after.pos;
@@ -968,6 +1002,20 @@ class Generator {
       next.group[me] = g;
       next.group[1 - me] = g == Group::solids ? Group::stripes : Group::solids;
     }
+    if (snooker_ && next.snooker) {
+      // After a red a colour is on; after a colour a red (the colour back
+      // on its spot while reds remain), or the next colour.
+      SnookerState& k = *next.snooker;
+      k.free_ball = false;
+      const bool red = snooker_value(l.target) == 1;
+      k.colour_on = red;
+      bool reds_left = false;
+      for (int b = 1; b <= 15; ++b) reds_left = reds_left || next.on_table[static_cast<std::size_t>(b)];
+      if (!red && (reds_left || colour_on_)) {
+        next.position[static_cast<std::size_t>(l.target)] = rules_.spot_position(next, l.target);
+        next.on_table[static_cast<std::size_t>(l.target)] = 1;
+      }
+    }
     return ai_detail::best_pot_estimate(rules_, next, opt_.leave_sigma_deg);
   }
 
@@ -978,6 +1026,16 @@ class Generator {
   std::vector<int> opponent_targets(const Layout& lay) const {
     std::vector<int> out;
     const auto n = static_cast<int>(lay.on.size());
+    if (snooker_) {
+      // The opponent is on a red while one is left, else the lowest colour.
+      for (int b = 1; b <= 15 && b < n; ++b) {
+        if (lay.on[static_cast<std::size_t>(b)]) out.push_back(b);
+      }
+      for (int b = 16; out.empty() && b < n; ++b) {
+        if (lay.on[static_cast<std::size_t>(b)]) out.push_back(b);
+      }
+      return out;
+    }
     if (!eight_) {
       for (int b = 1; b < n; ++b) {
         if (lay.on[static_cast<std::size_t>(b)]) return {b};
@@ -1022,11 +1080,13 @@ class Generator {
     const Judged j = judge(sim);
     if (!j.legal) return;
     if (eight_ && pocket_of(j, 8) >= 0) return;
+    if (snooker_ && !snooker_pots_ok(j, first)) return;
     CandidateShot c;
     c.kind = kick ? ShotKind::kick : ShotKind::safety;
     c.first = first;
     c.shot.strike = s;
     c.shot.safety = la_.call;  // 8-ball: a declared safety, never called
+    if (la_.must_nominate) c.shot.nominate = first;  // snooker: the colour it hits
     // Worth to the shooter: how little the opponent is left. Scaled below
     // real pots, which the evaluator prefers when they are on.
     c.prior = 0.4 * (1.0 - opponent_chance(j.after));
@@ -1111,6 +1171,8 @@ class Generator {
   double R_;
   double m_;
   bool eight_;
+  bool snooker_;    // snooker (its pots and safeties are ruled as snooker's)
+  bool colour_on_;  // snooker: a colour is on after a red (it must be nominated)
   LegalActions la_;
   std::vector<int> targets_;  // legal first balls that may be aimed at
   Layout layout_;
