@@ -3,8 +3,8 @@
 # must not change behaviour (a refactoring) leaves every output byte for
 # byte as it was. Prints one "sha256  what" line per output:
 #
-#   - `simulate` of every scenario in examples/lab and examples/pool, and
-#     the three plots of two_balls.json (--plot);
+#   - `simulate` of every scenario in examples/lab, examples/pool and
+#     examples/snooker, and the three plots of two_balls.json (--plot);
 #   - match summaries and every game record of short matches (8-ball and
 #     9-ball; the baseline and the AI levels), and `replay` of each record;
 #   - the replies of web_api_probe to web/tests/probe_script.json (the
@@ -36,7 +36,7 @@ fi
 sum() { sha256sum "$1" | awk -v what="$2" '{print $1 "  " what}'; }
 
 mkdir -p "$out/simulate"
-for f in examples/lab/*.json examples/pool/*.json; do
+for f in examples/lab/*.json examples/pool/*.json examples/snooker/*.json; do
   name=$(basename "$(dirname "$f")")-$(basename "$f")
   status=0
   "$cli" simulate "$f" -o "$out/simulate/$name" || status=$?

@@ -20,6 +20,7 @@
 #include "breakshot/players.hpp"
 #include "breakshot/record_io.hpp"
 #include "breakshot/snooker.hpp"
+#include "io/game_json.hpp"
 
 using namespace breakshot;
 
@@ -716,4 +717,44 @@ TEST(Snooker, MatchSummary) {
   MatchOptions ai = opt;
   ai.players = {"baseline", "champion"};
   EXPECT_THROW((void)play_match(ai), std::invalid_argument);
+}
+
+// The JSON of snooker's state and ruling: written in snooker only, read
+// back equal, required in snooker and refused elsewhere.
+TEST(Snooker, JsonOfStateAndRuling) {
+  using json_io::json;
+  GameState s = bare({1.0, 0.5});
+  colours_on_spots(s);
+  put(s, 4, {2.0, 0.5});
+  const Outcome miss = rule(s, shoot(), {hit(0.1, 0, kBlue)}, {{0, {1.7, 0.4}}});
+  ASSERT_FALSE(sk(miss.state).replace_position.empty());
+  const auto read_state = [](const std::string& text, GameState& out) {
+    json_io::GameReader reader;
+    const bool ok = reader.state(json::parse(text), "state", out);
+    return ok ? std::string() : reader.error->path + ": " + reader.error->reason;
+  };
+  GameState back;
+  const std::string text = json_io::state_json(miss.state).dump();
+  EXPECT_EQ(read_state(text, back), "");
+  EXPECT_EQ(back, miss.state);
+  // A snooker state without its part, a pool state with one: refused.
+  json no_part = json::parse(text);
+  no_part.erase("snooker");
+  EXPECT_EQ(read_state(no_part.dump(), back), "state.snooker: missing required field");
+  GameConfig nine;
+  nine.game = GameType::nine_ball;
+  json pool = json::parse(json_io::state_json(Rules(nine).start(1, 0)).dump());
+  EXPECT_EQ(pool.find("snooker"), pool.end());
+  pool["snooker"] = json::parse(text)["snooker"];
+  EXPECT_NE(read_state(pool.dump(), back).find("state.snooker"), std::string::npos);
+  // The ruling and the nominating shot.
+  json_io::GameReader reader;
+  Ruling r;
+  ASSERT_TRUE(reader.ruling(json::parse(json_io::ruling_json(miss.ruling).dump()), "r", r));
+  EXPECT_EQ(r, miss.ruling);
+  Action a;
+  ASSERT_TRUE(
+      reader.action(json::parse(json_io::action_json(Action{shoot(kPink)}).dump()), "a", a));
+  EXPECT_EQ(std::get<Shoot>(a).nominate, kPink);
+  EXPECT_EQ(json_io::action_json(Action{shoot()}).dump().find("nominate"), std::string::npos);
 }

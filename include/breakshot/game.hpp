@@ -268,7 +268,9 @@ struct LegalActions {
   bool push_out = false;                ///< a shot may be declared a push-out
   bool call = false;                    ///< 8-ball: shots carry calls
   std::vector<int> targets;             ///< balls the cue ball may legally hit first
-  std::vector<Choice> choices;          ///< decisions on offer
+  /// Decisions on offer: a decision phase's; in snooker's shot phases
+  /// also `concede`, beside the shot.
+  std::vector<Choice> choices;
   /// Snooker: balls a shot may nominate (Shoot::nominate), and whether
   /// it must.
   std::vector<int> nominate;

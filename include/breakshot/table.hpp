@@ -41,13 +41,15 @@ struct Pocket {
 
 /// A table: its outline (for drawing and containment) and its walls.
 struct Table {
-  std::string shape;          ///< "rectangle" or "polygon"
+  std::string shape;          ///< "rectangle", "polygon", "pool" or "snooker"
   std::vector<Vec2> outline;  ///< counter-clockwise boundary
   std::vector<Wall> walls;
-  std::vector<Pocket> pockets;  ///< pool tables only
+  std::vector<Pocket> pockets;  ///< pool and snooker tables only
   Vec2 min;  ///< bounding box of everything a ball centre can reach
   Vec2 max;
-  // Pool tables: the playing surface is [0, length] x [0, width].
+  // Pool and snooker tables: the playing surface is [0, length] x [0,
+  // width]. The snooker table's head spot is the brown spot (the middle of
+  // the baulk line) and its foot spot the pink (pyramid) spot.
   double length = 0.0;
   double width = 0.0;
   Vec2 head_spot;

@@ -16,6 +16,11 @@
 // (8-ball: the solid, the stripe and the corner that takes the solid, then
 // a Fisher-Yates shuffle of the rest; 9-ball: the shuffle), then the
 // displacement of each ball but the apex, in lattice order.
+//
+// Snooker: the same lattice and offsets for the 15 reds (all of one kind,
+// so no assignment draws), the apex red on the pyramid spot just behind
+// the pink (SnookerMarks::pyramid_apex) instead of the foot spot, rows
+// toward the top cushion; the colours stand exactly on their spots.
 #include "breakshot/rack.hpp"
 
 #include <algorithm>

@@ -515,6 +515,7 @@ class Snooker final : public Ruleset {
     if (free_ball) what = "Free ball (the " + name(nominated) + "): " + what;
     what += x.objects.empty() ? " pots nothing" : " pots " + describe(x.objects);
     if (x.cue_in) what += " and goes in-off";
+    const std::string pots = what;  // for a scoring stroke: "...: 1 point, break 1."
     what += ". ";
     if (!f.off_table.empty()) {
       std::vector<int> objects_off = x.objects_off;
@@ -576,9 +577,10 @@ class Snooker final : public Ruleset {
       x.pass_turn();
       // The incoming player may be snookered: a free ball (3.9).
       k.free_ball = rules.snookered(s);
-      r.text = what + foul_text + score_text(k) + " " + player_name(x.opp) + " plays on" +
-               (k.free_ball ? " with a free ball" : "") + ", has " + x.who + " play again" +
-               (sr.miss ? ", or has the balls replaced" : "") + ".";
+      r.text = what + foul_text + score_text(k) + " " + player_name(x.opp) + " may play on" +
+               (k.free_ball ? " with a free ball" : "") +
+               (sr.miss ? ", have " + x.who + " play again or have the balls replaced."
+                        : " or have " + x.who + " play again.");
       if (sr.miss && k.misses == 2)
         r.text += " A third miss from the same position loses the frame.";
       r.snooker = sr;
@@ -612,7 +614,7 @@ class Snooker final : public Ruleset {
       k.break_points += points;
       k.colour_on = reds_phase;
       const std::string scored =
-          what + points_text(points) + ", break " + std::to_string(k.break_points) + ". ";
+          pots + ": " + points_text(points) + ", break " + std::to_string(k.break_points) + ". ";
       if (last_black) {
         end_frame(x, scored + score_text(k) + " ");
         return;

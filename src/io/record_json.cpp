@@ -35,20 +35,26 @@
 //            "fouls_in_a_row": [2], "push_out_allowed", "after_push_out",
 //            "scratch_on_break", "winner", "result", "shots", "innings",
 //            "rack_seed": "DECIMAL", "racks", "position": [[x, y] by ball number],
-//            "on_table": [0 or 1 by ball number]}
+//            "on_table": [0 or 1 by ball number],
+//            snooker only: "snooker": {"score": [2], "break", "colour_on", "free_ball",
+//            "respotted_black", "misses", "replace": null | {"position", "on_table",
+//            "colour_on", "free_ball"}}}
 //   action  {"type": "place_cue_ball", "position": [x, y]}
 //           {"type": "shoot", "strike": STRIKE, "call": null | {"ball", "pocket"},
-//            "safety", "push_out"}
+//            "safety", "push_out", snooker only, when the shot nominates: "nominate"}
 //           {"type": "decide", "choice"}
 //   STRIKE  {"speed", "phi", "theta", "a", "b"}; "intended" is a STRIKE or null
 //   ruling  {"fouls": [names], "legal_break", "turn_continues", "assigned",
-//            "spotted": [ball numbers], "winner", "text", "call_made"}
+//            "spotted": [ball numbers], "winner", "text", "call_made",
+//            a snooker shot's only: "snooker": {"points", "penalty", "miss",
+//            "free_ball", "nominated"}}
 //
 // The config and the NOISE, STATE, action, STRIKE and ruling objects are
 // the one JSON of those types (io/game_json.hpp), which the web facade
 // uses too. Every field is always written (null for an empty optional)
 // and always required on reading, so a record cannot lose a field without
-// notice.
+// notice; snooker's fields exist in snooker records only, so the other
+// games' records keep their bytes.
 // Enum values are the names of game.hpp's to_string. Seeds are decimal
 // strings (64-bit integers do not survive readers that keep numbers in
 // doubles). Doubles are printed by nlohmann::json in a form that reads
