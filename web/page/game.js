@@ -1,7 +1,8 @@
 // The game tab: a game of 8-ball, 9-ball or snooker against an AI level
-// (snooker: the baseline player) or a friend on the same screen. The engine (engine.js over the wasm build)
-// does every bit of physics and every ruling; this file takes input,
-// draws the engine's positions and keeps the log. Nothing here reaches
+// (snooker: the baseline player) or a friend on the same screen. The
+// engine (engine.js over the wasm build) does every bit of physics and
+// every ruling; this file takes input, draws the engine's positions and
+// keeps the log. Nothing here reaches
 // the engine through Math.random: the seed comes from the URL, the form
 // or the clock at new-game time, and the link keeps it.
 
@@ -1055,6 +1056,9 @@ export class GameUI {
     $('score-break').textContent = String(k.break);
     $('score-on').textContent = st.phase === 'game_over' ? '—' : this.ballOnWords();
     $('score-remaining').textContent = String(fig.points_remaining);
+    const needs = [0, 1].filter((seat) => fig.snookers_required[seat] > 0)
+      .map((seat) => `${this.shortName(seat)}: ${fig.snookers_required[seat]}`);
+    $('score-snookers').textContent = needs.length ? needs.join(', ') : 'none';
   }
 
   fillNominateSelect() {
@@ -1195,7 +1199,7 @@ export class GameUI {
       w.textContent = `${this.shortName(r.winner)} wins. `;
       li.appendChild(w);
     } else if (e.kind === 'shoot' && !/(shoots again|plays on|to shoot|to break|breaks|cue ball in hand|wins|drawn|passes|decides|chooses|may push out|shoots from here)/.test(text)
-      && !(this.snooker() && /(to play|is on a|to decide)/.test(text))) {
+      && !(this.snooker() && /(to play|is on |may play on|awarded)/.test(text))) {
       // the ruling's words usually say whose turn it is; if not, say it
       const m = document.createElement('span');
       m.className = 'meta';

@@ -311,6 +311,9 @@ test('snooker: the D, a red potted, the score panel and the nomination of a colo
   }
   check(st.snooker.break >= 1 && await page.textContent('#score-break') === String(st.snooker.break), 'the break: ' + await page.textContent('#score-break'));
   check(await page.textContent('#score-remaining') === String(st.snooker_figures.points_remaining), 'remaining: ' + await page.textContent('#score-remaining'));
+  const needs = st.snooker_figures.snookers_required;
+  check((await page.textContent('#score-snookers') === 'none') === (needs[0] === 0 && needs[1] === 0),
+    'snookers required: ' + await page.textContent('#score-snookers') + ' for ' + needs);
   check(/colour/.test(await page.textContent('#score-on')), 'the ball on after a red: ' + await page.textContent('#score-on'));
   check(await page.isVisible('#nominate-box'), 'no nomination box after a red');
   // By the aim: aimed straight at a colour the line reaches first, the
