@@ -152,8 +152,8 @@ def test_not_json_text(run_cli, tmp_path):
 
 def test_unsupported_feature(run_cli, tmp_path):
     d = good()
-    d["table"] = {"shape": "snooker"}
-    f = tmp_path / "snooker.json"
+    d["table"] = {"shape": "carom"}
+    f = tmp_path / "carom.json"
     f.write_text(json.dumps(d))
     r = run_cli("simulate", f)
     assert r.returncode == 1
