@@ -35,6 +35,7 @@
 #include "breakshot/record_io.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
+#include "breakshot/snooker.hpp"
 #include "breakshot/version.hpp"
 #include "web_api.hpp"
 
@@ -166,7 +167,10 @@ TEST(WebApi, ErrorsNameTheField) {
   // Game configs.
   const std::pair<const char*, const char*> configs[] = {
       {R"({"players": ["human", "human"]})", "game: missing required field"},
-      {R"({"game": "snooker", "players": ["human", "human"]})", "game:"},
+      {R"({"game": "snooker", "players": ["human", "club"]})",
+       "players[1]: snooker seats are \"human\" or \"baseline\""},
+      {R"({"game": "snooker", "players": ["human", "human"], "table": "9ft"})",
+       "table: unknown table size \"9ft\" (expected \"12ft\")"},
       {R"({"game": "eight_ball"})", "players: missing required field"},
       {R"({"game": "eight_ball", "players": ["human"]})", "players:"},
       {R"({"game": "eight_ball", "players": ["human", "wizard"]})", "players[1]:"},
@@ -356,8 +360,9 @@ TEST(WebApi, LinkErrorsNameTheActionRefused) {
       {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[["d","x"],["d","x"]]})",
        "link.a[0][1]: unknown choice \"x\" (expected \"shoot\", "},
       {R"({"g":"snooker","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
-       "link.g: game \"snooker\" is not played in the browser yet (expected \"eight_ball\" or "
-       "\"nine_ball\")"},
+       "link.t: unknown table size \"9ft\" (expected \"12ft\")"},
+      {R"({"g":"snooker","t":"12ft","s":"1","b":0,"p":["human","expert"],"a":[]})",
+       "link.p[1]: snooker seats are \"human\" or \"baseline\""},
       {R"({"g":"bowls","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
        "link.g: unknown game \"bowls\" (expected \"eight_ball\", \"nine_ball\" or \"snooker\")"},
       {R"({"g":"eight_ball","t":"9ft","s":"x1","b":0,"p":["human","human"],"a":[]})",
@@ -874,6 +879,80 @@ TEST(WebApi, TableDescribesTheGamesTable) {
     const std::string kind = w["kind"].get<std::string>();
     EXPECT_TRUE(kind == "segment" || kind == "corner" || kind == "arc") << kind;
   }
+}
+
+TEST(WebApi, SnookerGameShowsTheScoreTheBallOnAndTheTable) {
+  GamePtr g = new_game(R"({"game": "snooker", "seed": "2026", "players": ["human", "baseline"]})");
+  // The table: the 12 ft table's markings (WPBSA: baulk line 737 mm from
+  // the bottom cushion, the D of radius 292 mm), as snooker.hpp has them.
+  const json t = J(bs_game_table(g.get()));
+  const bs::SnookerMarks m = bs::snooker_marks();
+  EXPECT_EQ(t["length"].get<double>(), 3.569);
+  EXPECT_EQ(t["ball_radius"].get<double>(), bs::kSnookerBallRadius);
+  EXPECT_EQ(t["snooker"]["baulk_line"].get<double>(), 0.737);
+  EXPECT_EQ(t["snooker"]["d_radius"].get<double>(), 0.292);
+  EXPECT_EQ(t["snooker"]["spots"]["black"][0].get<double>(), m.black.x);
+  EXPECT_EQ(t["snooker"]["spots"].size(), 6u);
+  // The pool games' tables have no snooker markings.
+  GamePtr pool = new_game(R"({"game": "nine_ball", "players": ["human", "human"]})");
+  EXPECT_FALSE(J(bs_game_table(pool.get())).contains("snooker"));
+  EXPECT_FALSE(J(bs_game_state(pool.get())).contains("snooker_figures"));
+  EXPECT_FALSE(J(bs_game_state(pool.get()))["legal"].contains("nominate"));
+
+  // At the start: on a red, 15 reds each with a black and the six colours
+  // left (15 x 8 + 27 = 147, the maximum break), no snookers needed.
+  json s = J(bs_game_state(g.get()));
+  EXPECT_EQ(s["phase"], "break_shot");
+  EXPECT_EQ(s["ball_in_hand"], "d");
+  EXPECT_EQ(s["snooker"]["score"], json::array({0, 0}));
+  EXPECT_EQ(s["snooker_figures"]["balls_on"].size(), 15u);
+  EXPECT_EQ(s["snooker_figures"]["points_remaining"], 147);
+  EXPECT_EQ(s["snooker_figures"]["snookers_required"], json::array({0, 0}));
+  EXPECT_EQ(s["legal"]["place"], "d");
+  EXPECT_EQ(s["legal"]["must_nominate"], false);
+  EXPECT_EQ(s["legal"]["choices"], json::array({"concede"}));
+  // The D: in it, on the baulk line; not beyond it.
+  EXPECT_TRUE(
+      J(bs_game_check_placement(g.get(), m.baulk_x, m.d_centre.y - 0.18))["ok"].get<bool>());
+  EXPECT_FALSE(
+      J(bs_game_check_placement(g.get(), m.baulk_x + 0.05, m.d_centre.y))["ok"].get<bool>());
+  EXPECT_FALSE(
+      J(bs_game_check_placement(g.get(), m.baulk_x - 0.1, m.d_centre.y + 0.3))["ok"].get<bool>());
+
+  // The AI levels do not play snooker: a hint from one is refused by name;
+  // the baseline's is given.
+  EXPECT_TRUE(
+      starts_with(error_of(bs_game_ai_action(g.get(), "club")), "level: snooker is played by"));
+  // seat 0 is human: a hint needs a level
+  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), nullptr)), "level:"));
+
+  // Play until a shot nominates a colour: after a red the state says a
+  // colour must be nominated, and the nominating shot's link keeps it.
+  act(g.get(), place_json(m.baulk_x, m.d_centre.y - 0.18));
+  bool nominated = false;
+  for (int k = 0; k < 60 && !nominated; ++k) {
+    const json st = J(bs_game_state(g.get()));
+    if (st["phase"] == "game_over") break;
+    if (st["legal"]["must_nominate"] == true) {
+      EXPECT_EQ(st["snooker"]["colour_on"], true);
+      EXPECT_EQ(st["legal"]["nominate"], json::array({16, 17, 18, 19, 20, 21}));
+      EXPECT_GT(st["snooker"]["break"].get<int>(), 0);
+      const json r = ai_act(g.get(), "baseline");
+      nominated = r["executed"].contains("nominate");
+    } else {
+      step_ai(g.get(), "baseline");
+    }
+  }
+  ASSERT_TRUE(nominated);
+  const std::string link = link_of(g.get());
+  GamePtr h(bs_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_last_error();
+  EXPECT_EQ(record_of(h.get()), record_of(g.get()));
+  EXPECT_EQ(state_of(h.get()), state_of(g.get()));
+  // Its record replays.
+  const auto rec = bs::read_record(record_of(g.get()));
+  ASSERT_TRUE(std::holds_alternative<bs::GameRecord>(rec));
+  EXPECT_TRUE(bs::replay(std::get<bs::GameRecord>(rec)).identical);
 }
 
 // ---------------------------------------------------------------------------

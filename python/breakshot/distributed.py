@@ -195,7 +195,11 @@ def _check_names(game, names, table) -> None:
     for name in names:
         if name not in known:
             raise ValueError(f"players: unknown player {name!r} (known: {', '.join(known)})")
-    _core.pool_table(table)  # ValueError naming an unknown table size
+    if game == "snooker":
+        if table != "12ft":
+            raise ValueError(f"table: unknown table size {table!r} (snooker: 12ft)")
+    else:
+        _core.pool_table(table)  # ValueError naming an unknown table size
 
 
 def _reproduce(game, players, seed, noise, table, g) -> str:
@@ -254,7 +258,7 @@ def _submit_match(client, expected, game, names, seed, noise, table, games, firs
 
 
 def match_json(client, game: str, players: Sequence[str], games: int, seed: int = 0,
-               noise: str = "none", table: str = "9ft",
+               noise: str = "none", table: Optional[str] = None,
                records: Union[None, str, os.PathLike] = None, chunk: Optional[int] = None,
                first_game: int = 0, progress: Optional[bool] = None,
                physics: Optional[dict] = None) -> str:
@@ -281,6 +285,8 @@ def match_json(client, game: str, players: Sequence[str], games: int, seed: int 
     first_game = _check_int(first_game, "first_game", 0)
     if not all(isinstance(n, str) for n in names):
         raise ValueError("players: expected two player names")
+    if table is None:
+        table = "12ft" if game == "snooker" else "9ft"  # the game's table, as breakshot match
     _check_names(game, names, table)
     check_workers(client)
     expected = identity()
@@ -314,7 +320,7 @@ def match_json(client, game: str, players: Sequence[str], games: int, seed: int 
 
 
 def match(client, game: str, players: Sequence[str], games: int, seed: int = 0,
-          noise: str = "none", table: str = "9ft",
+          noise: str = "none", table: Optional[str] = None,
           records: Union[None, str, os.PathLike] = None, chunk: Optional[int] = None,
           first_game: int = 0, progress: Optional[bool] = None,
           physics: Optional[dict] = None) -> dict:
@@ -613,7 +619,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     m.add_argument("--games", type=int, required=True)
     m.add_argument("--seed", type=int, required=True)
     m.add_argument("--noise", required=True)
-    m.add_argument("--table", default="9ft")
+    m.add_argument("--table", default=None, help="the table size (default: the game's, 9ft or snooker's 12ft)")
     m.add_argument("--records", help="write each game's record to DIR/game-NNNN.json")
     m.add_argument("--first-game", type=int, default=0)
     m.add_argument("--chunk", type=int, default=None, help="games per task")

@@ -162,6 +162,11 @@ class PoolEnv(_Base):
             raise ValueError(f"breaker: must be 0 (the agent) or 1 (the opponent), not {breaker!r}")
         if isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
             raise ValueError(f"max_steps: expected a whole number >= 1, not {max_steps!r}")
+        if game not in ("eight_ball", "nine_ball"):
+            # Its observation and action are the pool games' (groups,
+            # calls, push-outs); snooker's score and nominations have no
+            # place in them.
+            raise ValueError(f"game: PoolEnv plays eight_ball and nine_ball, not {game!r}")
         self.game_name = game
         self.table_size = table
         self.noise = noise

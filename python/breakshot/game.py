@@ -56,7 +56,10 @@ class Shot:
     radius. ``call`` is None or a :class:`Call` (or a (ball, pocket)
     pair): required in 8-ball when the 8 is the target, informational in
     9-ball. ``safety`` declares an 8-ball safety, ``push_out`` a 9-ball
-    push-out. JSON type ``"shoot"``.
+    push-out. ``nominate`` (snooker only) is the ball number nominated as
+    the ball on: required after a red (a colour, 16 yellow ... 21 black,
+    see ``LegalActions.must_nominate``) and to take a free ball. JSON type
+    ``"shoot"``.
     """
 
     phi: float
@@ -67,6 +70,7 @@ class Shot:
     call: Optional[Call] = None
     safety: bool = False
     push_out: bool = False
+    nominate: Optional[int] = None
 
     def __post_init__(self):
         if self.call is not None and not isinstance(self.call, Call):
@@ -82,6 +86,8 @@ class Shot:
             "call": None if self.call is None else self.call.to_dict(),
             "safety": bool(self.safety),
             "push_out": bool(self.push_out),
+            # snooker only, and only when given (the records' form)
+            **({} if self.nominate is None else {"nominate": int(self.nominate)}),
         }
 
 
@@ -102,8 +108,9 @@ class PlaceCue:
 class Decide:
     """A decision the rules offer (``LegalActions.choices``): ``"shoot"``,
     ``"pass_back"``, ``"accept_table"``, ``"rerack_and_break"``,
-    ``"rerack_opponent_breaks"`` or ``"respot_eight"``. JSON type
-    ``"decide"``."""
+    ``"rerack_opponent_breaks"`` or ``"respot_eight"``; in snooker
+    ``"play_on"``, ``"offender_again"``, ``"replace_balls"`` (after a
+    miss) and ``"concede"``. JSON type ``"decide"``."""
 
     choice: str
 
@@ -118,15 +125,15 @@ Action = Union[Shot, PlaceCue, Decide]
 def action_from_dict(d: dict) -> Action:
     """The action object of a dict in the records' JSON form.
 
-    Missing optional fields take their defaults (``call`` None, ``safety``
-    and ``push_out`` False, ``theta``, ``a`` and ``b`` 0); unknown fields
+    Missing optional fields take their defaults (``call`` and ``nominate``
+    None, ``safety`` and ``push_out`` False, ``theta``, ``a`` and ``b`` 0); unknown fields
     and wrong types raise ValueError naming them.
     """
     if not isinstance(d, dict):
         raise ValueError(f"action: expected a dict, not {type(d).__name__}")
     t = d.get("type")
     if t == "shoot":
-        _only(d, {"type", "strike", "call", "safety", "push_out"})
+        _only(d, {"type", "strike", "call", "safety", "push_out", "nominate"})
         s = d.get("strike")
         if not isinstance(s, dict):
             raise ValueError("action.strike: expected a dict with speed, phi, theta, a, b")
@@ -140,7 +147,8 @@ def action_from_dict(d: dict) -> Action:
             call = Call(call["ball"], call["pocket"])
         return Shot(phi=s["phi"], theta=s.get("theta", 0.0), speed=s["speed"],
                     a=s.get("a", 0.0), b=s.get("b", 0.0), call=call,
-                    safety=d.get("safety", False), push_out=d.get("push_out", False))
+                    safety=d.get("safety", False), push_out=d.get("push_out", False),
+                    nominate=d.get("nominate"))
     if t == "place_cue_ball":
         _only(d, {"type", "position"})
         p = d.get("position")
@@ -198,6 +206,16 @@ class State:
     ((x, y) by ball number, meaningful where on the table) and ``on_table``
     (bools by ball number). ``targets`` are the balls the player to act may
     legally hit first.
+
+    Snooker (balls 1-15 the reds, 16-21 yellow, green, brown, blue, pink,
+    black; phase ``"foul_choice"``, ball in hand ``"d"``): ``snooker`` is
+    the records' snooker part, a dict with ``score`` (by seat), ``break``
+    (the points of the visit in progress), ``colour_on`` (a red was potted:
+    a colour is to be nominated), ``free_ball``, ``respotted_black``,
+    ``misses`` and ``replace`` (the table a miss's ``replace_balls``
+    restores, or None); ``snooker_figures`` what the table leaves:
+    ``balls_on``, ``points_remaining`` and ``snookers_required`` (by seat).
+    Both are None in the other games.
     """
 
     game: str
@@ -220,10 +238,14 @@ class State:
     position: Tuple[Tuple[float, float], ...]
     on_table: Tuple[bool, ...]
     targets: Tuple[int, ...] = ()
+    snooker: Optional[dict] = field(default=None, hash=False)
+    snooker_figures: Optional[dict] = field(default=None, hash=False)
 
     @classmethod
-    def from_dict(cls, d: dict, targets: Sequence[int] = ()) -> "State":
-        """A State from the records' JSON form of a state."""
+    def from_dict(cls, d: dict, targets: Sequence[int] = (),
+                  snooker_figures: Optional[dict] = None) -> "State":
+        """A State from the records' JSON form of a state (and, in snooker,
+        the figures of ``Game.state``)."""
         return cls(
             game=d["game"], phase=d["phase"], player=d["player"], breaker=d["breaker"],
             ball_in_hand=d["ball_in_hand"], kitchen_shot=d["kitchen_shot"],
@@ -232,11 +254,12 @@ class State:
             scratch_on_break=d["scratch_on_break"], winner=d["winner"], result=d["result"],
             shots=d["shots"], innings=d["innings"], rack_seed=int(d["rack_seed"]),
             racks=d["racks"], position=tuple((p[0], p[1]) for p in d["position"]),
-            on_table=tuple(bool(f) for f in d["on_table"]), targets=tuple(targets))
+            on_table=tuple(bool(f) for f in d["on_table"]), targets=tuple(targets),
+            snooker=d.get("snooker"), snooker_figures=snooker_figures)
 
     def to_dict(self) -> dict:
         """The records' JSON form (rack_seed as a decimal string, on_table as 0/1)."""
-        return {
+        d = {
             "game": self.game, "phase": self.phase, "player": self.player,
             "breaker": self.breaker, "ball_in_hand": self.ball_in_hand,
             "kitchen_shot": self.kitchen_shot, "group": list(self.group),
@@ -248,6 +271,14 @@ class State:
             "position": [list(p) for p in self.position],
             "on_table": [1 if f else 0 for f in self.on_table],
         }
+        if self.snooker is not None:
+            d["snooker"] = self.snooker
+        return d
+
+    @property
+    def score(self) -> Optional[Tuple[int, int]]:
+        """Snooker: the score by seat; None in the other games."""
+        return None if self.snooker is None else tuple(self.snooker["score"])
 
     @property
     def positions(self) -> np.ndarray:
@@ -288,13 +319,16 @@ class LegalActions:
 
     ``kinds`` lists the action types allowed (``"place_cue_ball"``,
     ``"shoot"``, ``"decide"``); ``place`` where the cue ball may be placed
-    (``"none"``, ``"kitchen"`` (x <= the table's head_string) or
-    ``"anywhere"``); ``must_place`` is True when the cue ball is off the
+    (``"none"``, ``"kitchen"`` (x <= the table's head_string),
+    ``"anywhere"`` or, in snooker, ``"d"``); ``must_place`` is True when the cue ball is off the
     table and must be placed before a shot; ``shoot`` whether a shot may be
     played; ``push_out`` whether it may be declared a push-out (9-ball);
     ``call`` whether shots carry calls (8-ball); ``targets`` the balls the
     cue ball may legally hit first; ``choices`` the :class:`Decide` choices
-    on offer.
+    on offer (in snooker ``"concede"`` is among them whenever a shot is
+    due). Snooker: ``nominate`` the balls a shot may nominate
+    (``Shot.nominate``) and ``must_nominate`` whether it must (a colour
+    after a red); empty and False in the other games.
     """
 
     kinds: Tuple[str, ...]
@@ -305,6 +339,8 @@ class LegalActions:
     call: bool
     targets: Tuple[int, ...]
     choices: Tuple[str, ...]
+    nominate: Tuple[int, ...] = ()
+    must_nominate: bool = False
 
     @classmethod
     def _of(cls, d: dict) -> "LegalActions":
@@ -317,7 +353,8 @@ class LegalActions:
             kinds.append("decide")
         return cls(kinds=tuple(kinds), place=d["place"], must_place=d["must_place"],
                    shoot=d["shoot"], push_out=d["push_out"], call=d["call"],
-                   targets=tuple(d["targets"]), choices=tuple(d["choices"]))
+                   targets=tuple(d["targets"]), choices=tuple(d["choices"]),
+                   nominate=tuple(d["nominate"]), must_nominate=d["must_nominate"])
 
 
 @dataclass(frozen=True)
@@ -386,9 +423,12 @@ def _seed(value, what: str = "seed") -> int:
 class Game:
     """One game on the C++ game session: the rules, the seeds and the record.
 
-    ``Game(game="eight_ball", table="9ft", seed=0, breaker=0,
+    ``Game(game="eight_ball", table=None, seed=0, breaker=0,
     players=("Player 1", "Player 2"), noise="none", max_shots=None)``.
-    ``game`` is one of :func:`games`; ``seed`` (0 to 2^64 - 1) gives the
+    ``game`` is one of :func:`games` (``"eight_ball"``, ``"nine_ball"``,
+    ``"snooker"``); ``table`` the table size: ``"7ft"``, ``"8ft"`` or
+    ``"9ft"`` (None: ``"9ft"``), in snooker ``"12ft"`` (None: that one,
+    with snooker balls); ``seed`` (0 to 2^64 - 1) gives the
     rack and the noise of every action, so the same seed and the same
     actions give the same game; ``breaker`` (0 or 1) breaks. ``players``
     are the seats' names in the record, or :class:`Player` objects (their
@@ -410,7 +450,7 @@ class Game:
     ``Player`` objects deciding: see :class:`Player`.
     """
 
-    def __init__(self, game: str = "eight_ball", table: str = "9ft", seed: int = 0,
+    def __init__(self, game: str = "eight_ball", table: Optional[str] = None, seed: int = 0,
                  breaker: int = 0, players: Sequence = ("Player 1", "Player 2"),
                  noise: Union[str, Sequence[str]] = "none", max_shots: Optional[int] = None,
                  physics: Optional[dict] = None, *, _core_game=None):
@@ -437,6 +477,8 @@ class Game:
                 raise ValueError(f"noise: expected a noise spec string, not {type(n).__name__}")
         if max_shots is not None and (isinstance(max_shots, bool) or not isinstance(max_shots, int)):
             raise ValueError(f"max_shots: expected a whole number or None, not {max_shots!r}")
+        if table is None:
+            table = _default_table(game)
         if not isinstance(game, str) or not isinstance(table, str):
             raise ValueError("game and table: expected names (strings)")
         if max_shots is not None and max_shots < 0:
@@ -455,7 +497,7 @@ class Game:
         """The state before action i (0: the start; ``actions``: now)."""
         d = json.loads(self._g.state_json(int(i)))
         targets = self._g.targets() if i == self._g.actions else ()
-        return State.from_dict(d, targets)
+        return State.from_dict(d, targets, self._g.snooker_figures(int(i)))
 
     @property
     def positions(self) -> np.ndarray:
@@ -486,7 +528,10 @@ class Game:
     def table(self) -> dict:
         """The table: size, length and width (m), head_string (x of the
         kitchen's edge), head_spot, foot_spot, ball_radius, ball_count and
-        the pockets (name, centre, radius) in the index order calls use."""
+        the pockets (name, centre, radius) in the index order calls use;
+        in snooker also ``snooker``: the markings (``baulk_line``, the x of
+        the baulk line; ``d_centre`` and ``d_radius``, the D; ``spots``, the
+        six colour spots by colour)."""
         return self._g.table()
 
     @property
@@ -709,6 +754,12 @@ def mix_seed(a: int, b: int) -> int:
     return _core.mix_seed(_seed(a, "a"), _seed(b, "b"))
 
 
+def _default_table(game) -> str:
+    """The table a game is played on when none is named: snooker's 12 ft
+    table, else the 9 ft pool table."""
+    return "12ft" if game == "snooker" else "9ft"
+
+
 def _physics(physics: Optional[dict]) -> Optional[str]:
     """The physics argument as the JSON text _core takes (None: defaults)."""
     if physics is None:
@@ -739,7 +790,7 @@ def physics_of(cushion_model: str = "han_2005", ball_ball_model: str = "friction
 
 
 def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
-               noise: str = "none", table: str = "9ft",
+               noise: str = "none", table: Optional[str] = None,
                records: Union[None, str, os.PathLike] = None,
                threads: Optional[int] = None, first_game: int = 0,
                physics: Optional[dict] = None) -> str:
@@ -754,6 +805,8 @@ def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
     :func:`physics_of`) is ``--cushion-model``, ``--ball-ball-model`` and
     ``--ball-ball-friction``; the summary shows it only when it is not the
     default."""
+    if table is None:
+        table = _default_table(game)
     names = _pair(players, "players")
     if isinstance(players, str) or not all(isinstance(n, str) for n in names):
         raise ValueError("players: expected two player names")
@@ -770,7 +823,7 @@ def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
 
 
 def match(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
-          noise: str = "none", table: str = "9ft",
+          noise: str = "none", table: Optional[str] = None,
           records: Union[None, str, os.PathLike] = None,
           threads: Optional[int] = None, first_game: int = 0,
           physics: Optional[dict] = None) -> dict:

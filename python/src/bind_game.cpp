@@ -32,6 +32,7 @@
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/session.hpp"
 #include "breakshot/simulation.hpp"
+#include "breakshot/snooker.hpp"
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
 
@@ -40,6 +41,17 @@ namespace breakshot::python {
 namespace {
 
 using json_io::ojson;
+
+/// A table size of `game`: "7ft", "8ft" or "9ft"; snooker "12ft".
+void check_table(GameType game, const std::string& table) {
+  if (game == GameType::snooker) {
+    if (table != "12ft") {
+      throw std::invalid_argument("table: unknown table size '" + table + "' (snooker: 12ft)");
+    }
+  } else if (table != "7ft" && table != "8ft" && table != "9ft") {
+    throw std::invalid_argument("table: unknown table size '" + table + "' (7ft, 8ft or 9ft)");
+  }
+}
 
 std::string join(const std::vector<std::string>& names) {
   std::string out;
@@ -209,6 +221,8 @@ class GameCore {
       d["call"] = false;
       d["targets"] = py::list();
       d["choices"] = py::list();
+      d["nominate"] = py::list();
+      d["must_nominate"] = false;
       return d;
     }
     const LegalActions la = session_.rules().legal_actions(session_.state());
@@ -221,6 +235,25 @@ class GameCore {
     py::list choices;
     for (const Choice c : la.choices) choices.append(std::string(to_string(c)));
     d["choices"] = choices;
+    d["nominate"] = la.nominate;
+    d["must_nominate"] = la.must_nominate;
+    return d;
+  }
+
+  /// Snooker: what the table leaves before action i (game.hpp):
+  /// {"balls_on", "points_remaining", "snookers_required": [2]}; None in
+  /// the other games.
+  std::optional<py::dict> snooker_figures(std::size_t i) const {
+    if (i > session_.actions()) {
+      throw std::invalid_argument("state_before: action " + std::to_string(i) + " of " +
+                                  std::to_string(session_.actions()));
+    }
+    const GameState& s = session_.state_before(i);
+    if (!s.snooker) return std::nullopt;
+    py::dict d;
+    d["balls_on"] = snooker_balls_on(s);
+    d["points_remaining"] = snooker_points_remaining(s);
+    d["snookers_required"] = py::make_tuple(snookers_required(s, 0), snookers_required(s, 1));
     return d;
   }
 
@@ -283,6 +316,24 @@ class GameCore {
       pockets.append(pd);
     }
     d["pockets"] = pockets;
+    if (rules.config().game == GameType::snooker) {
+      // The markings (snooker.hpp's SnookerMarks).
+      const SnookerMarks m = snooker_marks();
+      const auto xy = [](Vec2 v) { return py::make_tuple(v.x, v.y); };
+      py::dict k;
+      k["baulk_line"] = m.baulk_x;
+      k["d_centre"] = xy(m.d_centre);
+      k["d_radius"] = m.d_radius;
+      py::dict spots;
+      spots["yellow"] = xy(m.yellow);
+      spots["green"] = xy(m.green);
+      spots["brown"] = xy(m.brown);
+      spots["blue"] = xy(m.blue);
+      spots["pink"] = xy(m.pink);
+      spots["black"] = xy(m.black);
+      k["spots"] = spots;
+      d["snooker"] = k;
+    }
     return d;
   }
 
@@ -301,12 +352,12 @@ class GameCore {
  private:
   static GameConfig config(const std::string& game, const std::string& table, int max_shots,
                            const std::optional<std::string>& physics) {
-    GameConfig c;
+    const GameType g = game_arg(game);
+    // Snooker: the 12 ft table and snooker balls.
+    GameConfig c = g == GameType::snooker ? snooker_config() : GameConfig{};
     c.physics = physics_arg(physics);
-    c.game = game_arg(game);
-    if (table != "7ft" && table != "8ft" && table != "9ft") {
-      throw std::invalid_argument("table: unknown table size '" + table + "' (7ft, 8ft or 9ft)");
-    }
+    c.game = g;
+    check_table(g, table);
     c.table_size = table;
     // -1: the rules' default; 0: no limit.
     if (max_shots < -1) {
@@ -405,9 +456,7 @@ MatchOptions match_options(const std::string& game, const std::array<std::string
   opt.first_game = first_game;
   opt.seed = seed;
   opt.noise = noise_arg(noise, "noise");
-  if (table != "7ft" && table != "8ft" && table != "9ft") {
-    throw std::invalid_argument("table: unknown table size '" + table + "' (7ft, 8ft or 9ft)");
-  }
+  check_table(opt.game, table);
   opt.table_size = table;
   return opt;
 }
@@ -539,6 +588,7 @@ void bind_game(py::module_& m) {
       .def_static("from_record", &GameCore::from_record, py::arg("text"))
       .def("state_json", &GameCore::state_json, py::arg("i"))
       .def("targets", &GameCore::targets)
+      .def("snooker_figures", &GameCore::snooker_figures, py::arg("i"))
       .def("legal", &GameCore::legal)
       .def("check", &GameCore::check, py::arg("action"))
       .def("check_placement", &GameCore::check_placement, py::arg("x"), py::arg("y"))

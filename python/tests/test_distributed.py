@@ -52,6 +52,14 @@ def test_match_equals_the_command_however_split(client, run_cli):
     assert bd.match(client, progress=False, **MATCH) == json.loads(expected)
 
 
+def test_snooker_match_equals_the_command(client, run_cli):
+    expected = cli_match(run_cli, "--game", "snooker", "--players", "baseline,baseline",
+                         "--games", "2", "--seed", "3", "--noise", "tournament")
+    got = bd.match_json(client, "snooker", ("baseline", "baseline"), games=2, seed=3,
+                        noise="tournament", chunk=1, progress=False)
+    assert got == expected
+
+
 def test_first_game_equals_the_command(client, run_cli):
     expected = cli_match(run_cli, *MATCH_ARGS[:4], "--games", "4", "--first-game", "7",
                          *MATCH_ARGS[6:])
@@ -128,6 +136,8 @@ def test_bad_arguments_name_what_is_wrong(client):
         bd.match(client, "nine_ball", ("baseline", "baseline"), games=0)
     with pytest.raises(ValueError, match="unknown game"):
         bd.match(client, "bowls", ("baseline", "baseline"), games=1)
+    with pytest.raises(ValueError, match="snooker: 12ft"):
+        bd.match(client, "snooker", ("baseline", "baseline"), games=1, table="9ft")
     with pytest.raises(ValueError, match="10ft"):
         bd.match(client, "nine_ball", ("baseline", "baseline"), games=1, table="10ft")
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "breakshot/ai.hpp"
 
@@ -105,6 +106,23 @@ std::string seat_name(const json& v, const std::string& path) {
     bad(path, std::string("\"human\" or ") + e.what());
   }
   return s;
+}
+
+std::vector<std::string> computer_players(bs::GameType game) {
+  if (game == bs::GameType::snooker) return {"baseline"};
+  return bs::ai_level_names();
+}
+
+bool is_baseline(std::string_view name) { return name == "baseline"; }
+
+std::string seat_name(const json& v, const std::string& path, bs::GameType game) {
+  if (game != bs::GameType::snooker) return seat_name(v, path);
+  const std::string& s = text(v, path);
+  if (s == kHuman || is_baseline(s)) return s;
+  bad(path,
+      "snooker seats are \"human\" or \"baseline\" (the AI levels do not play snooker "
+      "yet), not \"" +
+          s + "\"");
 }
 
 }  // namespace facade

@@ -157,6 +157,15 @@ std::uint64_t seed_value(const json& v, const std::string& path);
 
 /// "human" or a known AI level.
 std::string seat_name(const json& v, const std::string& path);
+/// "human" or a computer player of `game` (computer_players).
+std::string seat_name(const json& v, const std::string& path, bs::GameType game);
+
+/// The computer players a seat of `game` may be, by name: the AI levels
+/// in 8-ball and 9-ball; in snooker the baseline player (players.hpp), the
+/// only one that plays snooker (play_match refuses the levels there).
+std::vector<std::string> computer_players(bs::GameType game);
+/// The player `name` (one of computer_players) makes decisions with.
+bool is_baseline(std::string_view name);
 
 }  // namespace facade
 
@@ -194,12 +203,19 @@ struct BsGame {
          std::uint64_t seed, int breaker, std::optional<std::int64_t> budget)
       : session(config, seats_of(seat_names), seed, breaker), seats(seat_names), ai_budget(budget) {}
 
-  /// A human seat plays without noise; an AI seat with its level's noise.
+  /// A human seat plays without noise; an AI seat with its level's noise;
+  /// the baseline (which has no noise of its own) with tournament noise.
   static bs::Seats seats_of(const std::array<std::string, 2>& names) {
     bs::Seats s;
     s.names = names;
     for (std::size_t k = 0; k < 2; ++k) {
-      s.noise[k] = names[k] == facade::kHuman ? bs::NoiseModel{} : bs::ai_level(names[k]).noise;
+      if (names[k] == facade::kHuman) {
+        s.noise[k] = bs::NoiseModel{};
+      } else if (facade::is_baseline(names[k])) {
+        s.noise[k] = bs::parse_noise("tournament");
+      } else {
+        s.noise[k] = bs::ai_level(names[k]).noise;
+      }
     }
     return s;
   }
@@ -231,18 +247,23 @@ struct GameConfigInput {
 inline constexpr std::int64_t kMaxBudget = 1'000'000'000;
 
 bs::GameType game_type(const json& v, const std::string& path);
-std::string table_size(const json& v, const std::string& path);
+/// A table size of `game`: "7ft", "8ft" or "9ft"; snooker "12ft".
+std::string table_size(const json& v, const std::string& path, bs::GameType game);
 /// bs_game_new's config: {"game", "table", "seed", "breaker", "players",
-/// "ai_budget", "physics": {"airborne"}}.
+/// "ai_budget", "physics": {"airborne"}}. Snooker starts from
+/// snooker_config (the 12 ft table, snooker balls).
 GameConfigInput read_config(const json& doc);
 std::unique_ptr<BsGame> make_game(const GameConfigInput& in);
 
 /// bs_game_state's reply: the state as game records write it
 /// (src/io/game_json.hpp), then the seats, the number of actions and what
-/// the rules allow next.
+/// the rules allow next; in snooker also "snooker_figures": {"balls_on",
+/// "points_remaining", "snookers_required": [2]} (game.hpp's
+/// snooker_balls_on, snooker_points_remaining, snookers_required).
 ojson state_json(const BsGame& g);
 /// bs_game_table's reply: the table's size, lines, spots, outline, walls
-/// and pockets, and the ball radius.
+/// and pockets, and the ball radius; in snooker also "snooker": the
+/// markings (snooker.hpp's SnookerMarks).
 ojson table_json(const BsGame& g);
 /// bs_game_check_placement's reply: {"ok"} and, if not, {"reason"}.
 std::string check_placement_json(const BsGame& g, double x, double y);

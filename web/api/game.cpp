@@ -36,8 +36,10 @@
 #include "breakshot/ai.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/player.hpp"
+#include "breakshot/players.hpp"
 #include "breakshot/record.hpp"
 #include "breakshot/session.hpp"
+#include "breakshot/snooker.hpp"
 
 namespace facade {
 
@@ -100,7 +102,7 @@ bs::Action read_action(const json& doc) {
   return action;
 }
 
-ojson legal_json(const bs::LegalActions& la) {
+ojson legal_json(const bs::LegalActions& la, bs::GameType game) {
   ojson j = ojson::object();
   j["place"] = bs::to_string(la.place);
   j["must_place"] = la.must_place;
@@ -111,6 +113,39 @@ ojson legal_json(const bs::LegalActions& la) {
   ojson choices = ojson::array();
   for (const bs::Choice c : la.choices) choices.push_back(bs::to_string(c));
   j["choices"] = choices;
+  // Snooker's nomination, only in snooker: the other games' replies keep
+  // their bytes.
+  if (game == bs::GameType::snooker) {
+    j["nominate"] = ints_json(la.nominate);
+    j["must_nominate"] = la.must_nominate;
+  }
+  return j;
+}
+
+/// What the snooker page shows beside the score (game.hpp).
+ojson snooker_figures_json(const bs::GameState& s) {
+  ojson j = ojson::object();
+  j["balls_on"] = ints_json(bs::snooker_balls_on(s));
+  j["points_remaining"] = bs::snooker_points_remaining(s);
+  j["snookers_required"] = ojson::array({bs::snookers_required(s, 0), bs::snookers_required(s, 1)});
+  return j;
+}
+
+/// The markings of the snooker table (snooker.hpp).
+ojson snooker_marks_json() {
+  const bs::SnookerMarks m = bs::snooker_marks();
+  ojson j = ojson::object();
+  j["baulk_line"] = m.baulk_x;
+  j["d_centre"] = vec2_json(m.d_centre);
+  j["d_radius"] = m.d_radius;
+  ojson spots = ojson::object();
+  spots["yellow"] = vec2_json(m.yellow);
+  spots["green"] = vec2_json(m.green);
+  spots["brown"] = vec2_json(m.brown);
+  spots["blue"] = vec2_json(m.blue);
+  spots["pink"] = vec2_json(m.pink);
+  spots["black"] = vec2_json(m.black);
+  j["spots"] = spots;
   return j;
 }
 
@@ -140,15 +175,12 @@ bs::GameType game_type(const json& v, const std::string& path) {
   Reader r;
   bs::GameType g{};
   r.must(r.game_type(v, path, g));
-  if (g == bs::GameType::snooker) {
-    bad(path, "game \"snooker\" is not played in the browser yet (expected \"eight_ball\" or "
-              "\"nine_ball\")");
-  }
   return g;
 }
 
-std::string table_size(const json& v, const std::string& path) {
+std::string table_size(const json& v, const std::string& path, bs::GameType game) {
   Reader r;
+  r.game_context = game;
   std::string size;
   r.must(r.table_size(v, path, size));
   return size;
@@ -158,14 +190,19 @@ GameConfigInput read_config(const json& doc) {
   object(doc, "", {"game", "table", "seed", "breaker", "players", "ai_budget", "physics"});
   GameConfigInput in;
   in.config.game = game_type(required(doc, "", "game"), "game");
-  if (const json* t = find(doc, "table")) in.config.table_size = table_size(*t, "table");
+  if (in.config.game == bs::GameType::snooker) in.config = bs::snooker_config();
+  if (const json* t = find(doc, "table")) {
+    in.config.table_size = table_size(*t, "table", in.config.game);
+  }
   if (const json* s = find(doc, "seed")) in.seed = seed_value(*s, "seed");
   if (const json* b = find(doc, "breaker")) in.breaker = static_cast<int>(integer(*b, "breaker", 0, 1));
   const json& players = required(doc, "", "players");
   if (!players.is_array() || players.size() != 2) {
     bad("players", "expected an array of two seats (\"human\" or an AI level)");
   }
-  for (std::size_t k = 0; k < 2; ++k) in.seats[k] = seat_name(players[k], index_path("players", k));
+  for (std::size_t k = 0; k < 2; ++k) {
+    in.seats[k] = seat_name(players[k], index_path("players", k), in.config.game);
+  }
   if (const json* n = find(doc, "ai_budget")) in.ai_budget = integer(*n, "ai_budget", 1, kMaxBudget);
   if (const json* ph = find(doc, "physics")) {
     // The choices a game may change from GamePhysics's defaults; the
@@ -188,7 +225,8 @@ ojson state_json(const BsGame& g) {
   ojson j = bs::json_io::state_json(s);
   j["players"] = ojson::array({g.seats[0], g.seats[1]});
   j["actions"] = g.record().actions.size();
-  j["legal"] = legal_json(g.rules().legal_actions(s));
+  j["legal"] = legal_json(g.rules().legal_actions(s), s.game);
+  if (s.game == bs::GameType::snooker) j["snooker_figures"] = snooker_figures_json(s);
   return j;
 }
 
@@ -225,6 +263,7 @@ ojson table_json(const BsGame& g) {
     pockets.push_back(pj);
   }
   j["pockets"] = pockets;
+  if (g.rules().config().game == bs::GameType::snooker) j["snooker"] = snooker_marks_json();
   return j;
 }
 
@@ -272,13 +311,23 @@ std::string ai_action_json(BsGame& g, const char* level) {
   const bs::GameState& state = g.state();
   if (state.phase == bs::Phase::game_over) bad("", "the game is over");
   std::string name;
+  const bool snooker = state.game == bs::GameType::snooker;
   if (level != nullptr && level[0] != '\0') {
     name = level;
     if (name == kHuman) bad("level", "\"human\" is not an AI level");
-    try {
-      (void)bs::ai_level(name);
-    } catch (const std::invalid_argument& e) {
-      bad("level", e.what());
+    if (snooker) {
+      if (!is_baseline(name)) {
+        bad("level",
+            "snooker is played by \"baseline\" (the AI levels do not play snooker "
+            "yet), not \"" +
+                name + "\"");
+      }
+    } else {
+      try {
+        (void)bs::ai_level(name);
+      } catch (const std::invalid_argument& e) {
+        bad("level", e.what());
+      }
     }
   } else {
     name = g.seats[static_cast<std::size_t>(state.player)];
@@ -287,7 +336,9 @@ std::string ai_action_json(BsGame& g, const char* level) {
                        ") is human: name an AI level for a hint");
     }
   }
-  const std::unique_ptr<bs::Player> ai = bs::make_ai_player(web_level(name, g.ai_budget));
+  const std::unique_ptr<bs::Player> ai = is_baseline(name)
+                                             ? bs::make_baseline_player()
+                                             : bs::make_ai_player(web_level(name, g.ai_budget));
   const bs::Action a = ai->decide(g.rules(), state, g.session.next_player_seed());
   ojson j = ojson::object();
   j["action"] = action_json(a);

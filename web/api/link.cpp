@@ -12,7 +12,8 @@
 // with each action as chosen (before noise):
 //   ["p", X, Y]                                      place the cue ball
 //   ["s", SPEED, PHI, THETA, A, B, ball, pocket, f]  shoot; ball and
-//        pocket -1 without a call; f = 1 safety + 2 push-out
+//        pocket -1 without a call; f = 1 safety + 2 push-out; a snooker
+//        shot that nominates a ball has that ball number as a 10th entry
 //   ["d", "choice"]                                  decide
 // where the capitals are doubles written as the hexadecimal of their IEEE
 // bits, without leading zeros ("0" for +0, "8000000000000000" for -0,
@@ -160,6 +161,7 @@ std::string link_text(const BsGame& g) {
           {"s", double_hex(k.speed), double_hex(k.phi), double_hex(k.theta), double_hex(k.a),
            double_hex(k.b), s->call ? s->call->ball : -1, s->call ? s->call->pocket : -1,
            (s->safety ? 1 : 0) + (s->push_out ? 2 : 0)}));
+      if (s->nominate) actions.back().push_back(*s->nominate);
     } else {
       actions.push_back(ojson::array({"d", bs::to_string(std::get<bs::Decide>(ra.action).choice)}));
     }
@@ -176,7 +178,11 @@ bs::Action link_action(const json& v, const std::string& path) {
     return bs::PlaceCueBall{{hex_double(v[1], index_path(path, 1)), hex_double(v[2], index_path(path, 2))}};
   }
   if (k == "s") {
-    if (v.size() != 9) bad(path, "expected [\"s\", SPEED, PHI, THETA, A, B, ball, pocket, flags]");
+    if (v.size() != 9 && v.size() != 10) {
+      bad(path,
+          "expected [\"s\", SPEED, PHI, THETA, A, B, ball, pocket, flags] and, in snooker, "
+          "the nominated ball");
+    }
     bs::Shoot s;
     s.strike.speed = hex_double(v[1], index_path(path, 1));
     s.strike.phi = hex_double(v[2], index_path(path, 2));
@@ -190,6 +196,7 @@ bs::Action link_action(const json& v, const std::string& path) {
     const auto flags = integer(v[8], index_path(path, 8), 0, 3);
     s.safety = (flags & 1) != 0;
     s.push_out = (flags & 2) != 0;
+    if (v.size() == 10) s.nominate = static_cast<int>(integer(v[9], index_path(path, 9), 1, 21));
     return s;
   }
   if (k == "d") {
@@ -244,7 +251,12 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
     }
   }
   in.config.game = game_type(required(doc, "link", "g"), "link.g");
-  in.config.table_size = table_size(required(doc, "link", "t"), "link.t");
+  if (in.config.game == bs::GameType::snooker) {
+    const bs::GamePhysics physics = in.config.physics;
+    in.config = bs::snooker_config();
+    in.config.physics = physics;
+  }
+  in.config.table_size = table_size(required(doc, "link", "t"), "link.t", in.config.game);
   {
     Reader r;
     r.must(r.seed(required(doc, "link", "s"), "link.s", in.seed));
@@ -252,7 +264,9 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
   in.breaker = static_cast<int>(integer(required(doc, "link", "b"), "link.b", 0, 1));
   const json& players = required(doc, "link", "p");
   if (!players.is_array() || players.size() != 2) bad("link.p", "expected two seats");
-  for (std::size_t k = 0; k < 2; ++k) in.seats[k] = seat_name(players[k], index_path("link.p", k));
+  for (std::size_t k = 0; k < 2; ++k) {
+    in.seats[k] = seat_name(players[k], index_path("link.p", k), in.config.game);
+  }
   if (const json* n = find(doc, "n")) in.ai_budget = integer(*n, "link.n", 1, kMaxBudget);
   const json& actions = required(doc, "link", "a");
   if (!actions.is_array()) bad("link.a", "expected an array of actions");

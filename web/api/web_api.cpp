@@ -80,6 +80,10 @@ const char* bs_version(void) {
     }
     j["levels"] = levels;
     j["ai_budgets"] = budgets;
+    // The computer players of a snooker seat (facade::computer_players).
+    ojson snooker = ojson::array();
+    for (const std::string& p : computer_players(bs::GameType::snooker)) snooker.push_back(p);
+    j["snooker_players"] = snooker;
     j["defaults"] = defaults_json();
     return j.dump();
   }();

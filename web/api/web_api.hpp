@@ -26,6 +26,7 @@ typedef struct BsPlayback BsPlayback;
 typedef struct BsGame BsGame;
 
 /* {"version": "...", "levels": [...], "ai_budgets": {...},
+ *  "snooker_players": [...] (the computer players of a snooker seat),
  *  "defaults": {"ball": {"radius", "mass", "wall_restitution"},
  *               "pool_cushion_restitution",
  *               "physics": {"ideal": {...}, "friction": {...}, "pool": {...}}}}

@@ -143,14 +143,45 @@ function route() {
   return false;
 }
 
+/** The opponents and tables the form offers for the chosen game: the AI
+ *  levels and the pool tables; in snooker the engine's snooker players
+ *  (bs_version's "snooker_players") and the 12 ft table. */
+let poolOpponents = null;
+let poolTables = null;
+function gameOptions() {
+  const opp = $('opponent');
+  const table = $('table-size');
+  if (!poolOpponents) {
+    poolOpponents = [...opp.options].map((o) => [o.value, o.text, o.defaultSelected]);
+    poolTables = [...table.options].map((o) => [o.value, o.text, o.defaultSelected]);
+  }
+  const snooker = $('game-type').value === 'snooker';
+  const want = snooker
+    ? [...((engine && engine.snookerPlayers) || ['baseline']).map((p, i) => [p, `Computer: ${p}`, i === 0]), ['friend', 'A friend (same screen)', false]]
+    : poolOpponents;
+  const tables = snooker ? [['12ft', '12 ft', true]] : poolTables;
+  const fill = (sel, list) => {
+    const key = list.map((x) => x[0]).join(',');
+    if (sel.dataset.key === key) return;
+    const keep = sel.value;
+    sel.dataset.key = key;
+    sel.textContent = '';
+    for (const [v, t, d] of list) sel.appendChild(new Option(t, v, d, d));
+    if (list.some((x) => x[0] === keep)) sel.value = keep;
+  };
+  fill(opp, want);
+  fill(table, tables);
+}
+
 function syncForm() {
   if (!ui || !ui.st) return;
   const st = ui.st;
   $('game-type').value = st.game;
+  gameOptions();
   if (st.players && st.players[1]) $('opponent').value = st.players[1] === 'human' ? 'friend' : st.players[1];
   const physics = ui.physics();
   if (physics) $('airborne').checked = !!physics.airborne;
-  if (ui.table) {
+  if (ui.table && st.game !== 'snooker') {
     const size = Math.abs(ui.table.length - 2.54) < 0.01 ? '9ft' : Math.abs(ui.table.length - 2.34) < 0.01 ? '8ft' : '7ft';
     $('table-size').value = size;
   }
@@ -166,6 +197,7 @@ async function main() {
     box.scrollIntoView({ block: 'nearest' });
     $('game-type').focus({ preventScroll: true });
   });
+  $('game-type').addEventListener('change', () => gameOptions());
   $('new-game-form').addEventListener('submit', (ev) => {
     ev.preventDefault();
     startFromForm();
@@ -189,6 +221,7 @@ async function main() {
     $('version').textContent = `engine ${typeof v === 'string' ? v : (v && v.version) || ''}`;
   } catch (e) { /* no version */ }
   ui = new GameUI(engine);
+  gameOptions();  // the form may come back with snooker chosen
   $('airborne').checked = defaultAirborne();
 
   window.breakshot = {

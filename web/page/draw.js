@@ -63,6 +63,34 @@ export function ballColour(n) {
   return BALL_COLOURS[n - 8];
 }
 
+// Snooker's balls by number (game.hpp): 0 the white cue ball, 1-15 the
+// reds, 16-21 yellow, green, brown, blue, pink, black.
+export const SNOOKER_COLOURS = {
+  0: '#f6f3ea',
+  red: '#c8141e',
+  16: '#f2c81a',
+  17: '#0e7a3a',
+  18: '#7a4a1c',
+  19: '#1c4fc4',
+  20: '#f08cb0',
+  21: '#141414',
+};
+export const SNOOKER_NAMES = {
+  16: 'yellow', 17: 'green', 18: 'brown', 19: 'blue', 20: 'pink', 21: 'black',
+};
+
+export function snookerColour(n) {
+  if (n >= 1 && n <= 15) return SNOOKER_COLOURS.red;
+  return SNOOKER_COLOURS[n] || '#888';
+}
+
+/** A snooker ball's name: "cue ball", "red", "yellow", ... */
+export function snookerName(n) {
+  if (n === 0) return 'cue ball';
+  if (n >= 1 && n <= 15) return 'red';
+  return SNOOKER_NAMES[n] || `ball ${n}`;
+}
+
 /** Draws ball n at (cx, cy) in the current canvas units with radius r. */
 export function drawBall(ctx, n, cx, cy, r, opts = {}) {
   const alpha = opts.alpha ?? 1;
@@ -78,14 +106,16 @@ export function drawBall(ctx, n, cx, cy, r, opts = {}) {
   ctx.arc(cx, cy, r, 0, Math.PI * 2);
   ctx.save();
   ctx.clip();
-  const stripe = n >= 9;
-  ctx.fillStyle = stripe ? '#f6f3ea' : (opts.colour || ballColour(n));
+  // snooker balls: plain colours, no numbers
+  const plain = !!opts.snooker;
+  const stripe = !plain && n >= 9;
+  ctx.fillStyle = stripe ? '#f6f3ea' : (opts.colour || (plain ? snookerColour(n) : ballColour(n)));
   ctx.fillRect(cx - r, cy - r, 2 * r, 2 * r);
   if (stripe) {
     ctx.fillStyle = ballColour(n);
     ctx.fillRect(cx - r, cy - r * 0.56, 2 * r, r * 1.12);
   }
-  if (n > 0) {
+  if (n > 0 && !plain) {
     const nr = r * 0.5;
     ctx.fillStyle = '#fbfaf5';
     ctx.beginPath();
@@ -200,6 +230,8 @@ export class TableView {
   setTable(table) {
     this.table = table;
     this.staticLayer = null;
+    // the snooker table's markings (bs_game_table's "snooker"), or null
+    this.snooker = table && table.snooker ? table.snooker : null;
   }
 
   /** Width over height of the whole table, rails included. */
@@ -381,6 +413,12 @@ export class TableView {
       ctx.fill();
     }
 
+    if (this.snooker) {
+      this.drawSnookerMarks(ctx);
+      this.staticLayer = layer;
+      return;
+    }
+
     // diamonds: 1/8 of the length on the long rails, 1/4 of the width on the short
     const d = CUSHION + (FRAME - CUSHION) * 0.5;
     const spots = [];
@@ -427,11 +465,37 @@ export class TableView {
     this.staticLayer = layer;
   }
 
+  /** The baulk line, the D and the six colour spots (snooker), to scale. */
+  drawSnookerMarks(ctx) {
+    const m = this.snooker;
+    const W = this.table.width;
+    ctx.save();
+    ctx.strokeStyle = 'rgba(255, 255, 255, 0.55)';
+    ctx.lineWidth = Math.max(1, this.scale * 0.0025);
+    ctx.beginPath();
+    ctx.moveTo(this.sx(m.baulk_line), this.sy(0));
+    ctx.lineTo(this.sx(m.baulk_line), this.sy(W));
+    ctx.stroke();
+    // the D: the half circle on the baulk side of the line
+    ctx.beginPath();
+    ctx.arc(this.sx(m.d_centre[0]), this.sy(m.d_centre[1]), this.px(m.d_radius), Math.PI / 2, (3 * Math.PI) / 2);
+    ctx.stroke();
+    for (const p of Object.values(m.spots)) {
+      ctx.fillStyle = 'rgba(255, 255, 255, 0.6)';
+      ctx.beginPath();
+      ctx.arc(this.sx(p[0]), this.sy(p[1]), Math.max(1.2, this.px(0.004)), 0, Math.PI * 2);
+      ctx.fill();
+    }
+    ctx.restore();
+  }
+
   /**
    * Draws a frame. scene: {
    *   balls: [{n, x, y, z?, alpha?, scale?}], R (ball radius, m); z > 0:
    *     in flight (drawn with flightScale and flightLift over its shadow),
    *   kitchen: bool (shade the area behind the head string),
+   *   d: bool (snooker: shade the D, where the cue ball may be placed),
+   *   nominated: {ball, auto} | null (snooker: the nominated ball, ringed),
    *   aim: {cue: {x, y}, phi, geo (aimGeometry), power (0..1), stick: bool} | null,
    *   call: {ball, pocket, auto} | null, place: {x, y, ok, reason} | null,
    *   banner: text | null }
@@ -460,6 +524,17 @@ export class TableView {
       ctx.stroke();
     }
 
+    if (scene.d && this.snooker) {
+      const m = this.snooker;
+      ctx.save();
+      ctx.fillStyle = 'rgba(255, 255, 255, 0.09)';
+      ctx.beginPath();
+      ctx.arc(this.sx(m.d_centre[0]), this.sy(m.d_centre[1]), this.px(m.d_radius), Math.PI / 2, (3 * Math.PI) / 2);
+      ctx.closePath();
+      ctx.fill();
+      ctx.restore();
+    }
+
     // called pocket
     if (scene.call && scene.call.pocket != null && t.pockets[scene.call.pocket]) {
       const p = t.pockets[scene.call.pocket];
@@ -479,6 +554,13 @@ export class TableView {
     // balls: those on the cloth, then those in flight over their shadows,
     // lowest first
     const callBall = scene.call ? scene.call.ball : null;
+    const nom = scene.nominated && scene.nominated.ball != null ? scene.nominated : null;
+    const snooker = !!this.snooker;
+    const ringOf = (n) => {
+      if (callBall != null && n === callBall) return scene.call.ballAuto ? 'rgba(255, 214, 90, 0.6)' : '#ffd65a';
+      if (nom && n === nom.ball) return nom.auto ? 'rgba(255, 214, 90, 0.6)' : '#ffd65a';
+      return null;
+    };
     const flying = [];
     for (const b of scene.balls) {
       if (scene.place && b.n === 0) continue;
@@ -488,14 +570,15 @@ export class TableView {
       }
       drawBall(ctx, b.n, this.sx(b.x), this.sy(b.y), rpx * (b.scale ?? 1), {
         alpha: b.alpha,
-        ring: callBall != null && b.n === callBall ? (scene.call.ballAuto ? 'rgba(255, 214, 90, 0.6)' : '#ffd65a') : null,
+        ring: ringOf(b.n),
+        snooker,
       });
     }
     flying.sort((p, q) => p.z - q.z);
     for (const b of flying) drawFlightShadow(ctx, this.sx(b.x), this.sy(b.y), rpx, b.z);
     for (const b of flying) {
       drawBall(ctx, b.n, this.sx(b.x), this.sy(b.y) - this.px(flightLift(b.z)),
-        rpx * (b.scale ?? 1) * flightScale(b.z), { alpha: b.alpha, shadow: false });
+        rpx * (b.scale ?? 1) * flightScale(b.z), { alpha: b.alpha, shadow: false, snooker });
     }
     // What the last frame drew in flight (the page's tests read it).
     this.flight = { count: flying.length, maxZ: flying.reduce((m, b) => Math.max(m, b.z), 0) };
@@ -505,7 +588,7 @@ export class TableView {
       const p = scene.place;
       const cx = this.sx(p.x);
       const cy = this.sy(p.y);
-      drawBall(ctx, 0, cx, cy, rpx, { alpha: p.ok ? 1 : 0.85 });
+      drawBall(ctx, 0, cx, cy, rpx, { alpha: p.ok ? 1 : 0.85, snooker });
       ctx.strokeStyle = p.ok ? 'rgba(255, 255, 255, 0.7)' : '#ff4d4d';
       ctx.lineWidth = 2;
       ctx.beginPath();

@@ -285,6 +285,8 @@ async function instantiate(options) {
     raw,
     levels: info.levels,
     aiBudgets: info.ai_budgets,
+    // the computer players of a snooker seat
+    snookerPlayers: info.snooker_players,
     // The engine's defaults (default_physics per model, the default ball):
     // the one home of them, so the page never keeps its own copy.
     defaults: info.defaults,

@@ -1,17 +1,19 @@
-// The game tab: a game of 8-ball or 9-ball against an AI level or a
-// friend on the same screen. The engine (engine.js over the wasm build)
-// does every bit of physics and every ruling; this file takes input,
-// draws the engine's positions and keeps the log. Nothing here reaches
+// The game tab: a game of 8-ball, 9-ball or snooker against an AI level
+// (snooker: the baseline player) or a friend on the same screen. The
+// engine (engine.js over the wasm build) does every bit of physics and
+// every ruling; this file takes input, draws the engine's positions and
+// keeps the log. Nothing here reaches
 // the engine through Math.random: the seed comes from the URL, the form
 // or the clock at new-game time, and the link keeps it.
 
-import { TableView, aimGeometry, drawBall } from './draw.js';
+import { TableView, aimGeometry, drawBall, snookerName } from './draw.js';
 
 export const AI_LEVELS = ['beginner', 'amateur', 'club', 'expert', 'champion'];
 
 const MIN_SPEED = 0.3;
 const MAX_SPEED = 10;
 const BREAK_SPEED = 8.5;
+const SNOOKER_BREAK_SPEED = 5;
 const DEFAULT_SPEED = 3;
 const TIP_LIMIT = 0.48;
 const FADE = 0.3;          // seconds a pocketed ball takes to vanish    // largest tip offset the widget allows (miscue limit 0.5)
@@ -39,6 +41,10 @@ const FOUL_WORDS = {
   no_rail: 'no rail after contact',
   illegal_break: 'illegal break',
   behind_head_string: 'first ball hit was behind the head string',
+  ball_off_table: 'a ball left the table',
+  in_off: 'in-off (the cue ball fell)',
+  wrong_ball_potted: 'a ball not on was potted',
+  free_ball_snooker: 'the free ball snookered the opponent',
 };
 
 const CHOICE_WORDS = {
@@ -48,13 +54,20 @@ const CHOICE_WORDS = {
   rerack_and_break: 'Re-rack, and I break',
   rerack_opponent_breaks: 'Re-rack, and the other player breaks again',
   respot_eight: 'Spot the 8 and play on',
+  play_on: 'Play on from here',
+  offender_again: 'Make the other player play again',
+  replace_balls: 'Replace the balls: the other player plays again',
+  concede: 'Concede the frame',
 };
 
 const PHASE_WORDS = {
   push_out_choice: 'after the push-out: take the table or pass it back',
   illegal_break_choice: 'after the illegal break: accept the table or re-rack',
   eight_on_break_choice: 'the 8 fell on the break: spot it or re-rack',
+  foul_choice: 'after the foul: play on, or have the other player play again',
 };
+
+const GAME_NAMES = { eight_ball: '8-ball', nine_ball: '9-ball', snooker: 'Snooker' };
 
 /** The #power slider's value is the cue speed in m/s. */
 export function speedFromPower(p) {
@@ -95,7 +108,7 @@ export class GameUI {
     this.players = ['human', 'club'];
     this.config = null;
     this.aim = { phi: 0, speed: DEFAULT_SPEED, theta: 0, a: 0, b: 0 };
-    this.override = { ball: null, pocket: null };
+    this.override = { ball: null, pocket: null, nominate: null };
     this.placePos = null;   // where the cue ball will be placed before the shot
     this.drag = null;       // {kind: 'cue' | 'aim', id, dx, dy, x, y, ok, reason}
     this.anim = null;
@@ -286,6 +299,43 @@ export class GameUI {
     return !legal.shoot && this.shotDue() && this.st.game === 'nine_ball' && !!this.st.push_out_allowed;
   }
 
+  snooker() { return !!this.st && this.st.game === 'snooker'; }
+
+  /** The decisions on offer now (snooker's concede, which a shooter may
+   *  always take, aside while a shot is due). */
+  decisions() {
+    const legal = this.legal();
+    const list = legal.choices || [];
+    return legal.shoot || this.shotDue() ? list.filter((c) => c !== 'concede') : list;
+  }
+
+  /** Snooker: the coming shot nominates a ball: a colour after a red
+   *  (must_nominate), or a free ball may be taken. Otherwise a nomination
+   *  could only name a ball that is on anyway, and the page leaves it out. */
+  nominateDue() {
+    if (!this.snooker() || !this.shotDue()) return false;
+    const legal = this.legal();
+    if (!Array.isArray(legal.nominate) || legal.nominate.length === 0) return false;
+    return !!legal.must_nominate || !!(this.st.snooker && this.st.snooker.free_ball);
+  }
+
+  /** Snooker: the ball the shot nominates: the player's choice, else by
+   *  the aim: the first ball the aim line hits when it is one that may be
+   *  nominated and needs to be (a colour after a red; a free ball: a ball
+   *  not otherwise on). {ball, auto}, ball null for none. */
+  currentNomination(geo) {
+    if (!this.nominateDue()) return null;
+    const legal = this.legal();
+    const allowed = legal.nominate || [];
+    const o = this.override.nominate;
+    if (o != null && allowed.includes(o)) return { ball: o, auto: false };
+    const hit = geo && geo.hit ? geo.hit.n : null;
+    if (hit == null || !allowed.includes(hit)) return { ball: null, auto: true };
+    if (legal.must_nominate) return { ball: hit, auto: true };
+    const on = (this.st.snooker_figures && this.st.snooker_figures.balls_on) || [];
+    return { ball: on.includes(hit) ? null : hit, auto: true };
+  }
+
   humanToAct() {
     return !!this.st && this.st.phase !== 'game_over' && this.players[this.st.player] === 'human';
   }
@@ -311,7 +361,7 @@ export class GameUI {
   /** Sets up the controls for the turn after an action. */
   newTurn(fresh) {
     const legal = this.legal();
-    this.override = { ball: null, pocket: null };
+    this.override = { ball: null, pocket: null, nominate: null };
     $('safety').checked = false;
     $('push-out').checked = false;
     this.drag = null;
@@ -319,7 +369,7 @@ export class GameUI {
     if (legal.place && legal.place !== 'none') this.placePos = this.defaultPlacement(legal);
     if (!this.st) return;
     if (this.st.phase === 'break_shot') {
-      this.aim.speed = BREAK_SPEED;
+      this.aim.speed = this.snooker() ? SNOOKER_BREAK_SPEED : BREAK_SPEED;
     } else if (fresh || this.aim.speed > 6.5) {
       this.aim.speed = DEFAULT_SPEED;
     }
@@ -341,6 +391,14 @@ export class GameUI {
     };
     if (c && c.on && !legal.must_place) return { x: c.x, y: c.y };
     const t = this.table;
+    if (legal.place === 'd' && t.snooker) {
+      // in the D: on the baulk line between the brown and the yellow
+      // spots (the usual break-off), else the D's centre line
+      const m = t.snooker;
+      for (const [dx, dy] of [[0, -0.18], [0, 0.18], [-0.15, -0.1], [-0.15, 0.1], [-0.2, 0]]) {
+        if (tryAt(m.d_centre[0] + dx, m.d_centre[1] + dy)) return { x: m.d_centre[0] + dx, y: m.d_centre[1] + dy };
+      }
+    }
     const hs = t.head_spot || [t.length / 4, t.width / 2];
     if (tryAt(hs[0], hs[1])) return { x: hs[0], y: hs[1] };
     // a spiral of candidates around the head spot, kitchen first
@@ -438,6 +496,8 @@ export class GameUI {
       if ($('safety').checked) action.safety = true;
     }
     if (legal.push_out && $('push-out').checked) action.push_out = true;
+    const nom = this.currentNomination(this.geometry());
+    if (nom && nom.ball != null) action.nominate = nom.ball;
     return action;
   }
 
@@ -463,7 +523,13 @@ export class GameUI {
       this.showError('No shot is due now.');
       return;
     }
-    this.doAct(this.shotAction());
+    const action = this.shotAction();
+    if (legal.must_nominate && action.nominate == null) {
+      this.showError('Nominate a colour: click it, aim at it, or choose it under "Nominate".');
+      this.updatePanel();
+      return;
+    }
+    this.doAct(action);
   }
 
   decide(choice) {
@@ -749,6 +815,7 @@ export class GameUI {
     const scene = this.scene();
     this.view.render(scene);
     if (scene.call) this.autoCallLabels(scene.call);
+    this.nominateLabel(scene.nominated);
     if (this.anim) this.requestRender();
   }
 
@@ -767,8 +834,18 @@ export class GameUI {
     }
   }
 
+  /** The "auto" entry of the nominate select names what the aim picks. */
+  nominateLabel(nom) {
+    const sel = $('nominate');
+    if (!sel || !sel.options.length || $('nominate-box').hidden) return;
+    const t = nom && nom.auto ? (nom.ball != null ? `auto: ${snookerName(nom.ball)}` : 'auto: none') : 'auto (aim)';
+    if (sel.options[0].text !== t) sel.options[0].text = t;
+    const v = this.override.nominate == null ? '' : String(this.override.nominate);
+    if (sel.value !== v) sel.value = v;
+  }
+
   scene() {
-    const scene = { balls: [], R: this.R, kitchen: false, aim: null, call: null, place: null, banner: null };
+    const scene = { balls: [], R: this.R, kitchen: false, d: false, aim: null, call: null, nominated: null, place: null, banner: null };
     if (!this.st) return scene;
     if (this.anim && this.anim.frame) {
       const { frame, numbers, gone, t } = this.anim;
@@ -796,6 +873,7 @@ export class GameUI {
     const placing = canAct && legal.place && legal.place !== 'none';
     if (placing) {
       scene.kitchen = legal.place === 'kitchen';
+      scene.d = legal.place === 'd';
       if (this.drag && this.drag.kind === 'cue') {
         scene.place = { x: this.drag.x, y: this.drag.y, ok: this.drag.ok, reason: this.drag.reason };
       } else if (this.placePos) {
@@ -813,6 +891,7 @@ export class GameUI {
         stick: true,
       };
       scene.call = this.currentCall(geo);
+      scene.nominated = this.currentNomination(geo);
     }
     if (this.st.phase === 'game_over') {
       scene.banner = this.st.winner >= 0 ? `${this.shortName(this.st.winner)} wins` : 'Draw';
@@ -859,10 +938,15 @@ export class GameUI {
     callBox.hidden = !(canAct && this.shotDue() && this.callDue());
     if (!callBox.hidden) this.fillCallSelects();
     $('push-out-box').hidden = !(canAct && this.shotDue() && this.pushOutDue());
+    const nomBox = $('nominate-box');
+    nomBox.hidden = !(canAct && this.nominateDue());
+    if (!nomBox.hidden) this.fillNominateSelect();
+    const concede = $('concede');
+    concede.hidden = !(canAct && this.shotDue() && (legal.choices || []).includes('concede'));
 
     // decisions
     const choices = $('choices');
-    const list = canAct ? legal.choices || [] : [];
+    const list = canAct ? this.decisions() : [];
     choices.hidden = list.length === 0;
     const key = list.join(',');
     if (choices.dataset.key !== key) {
@@ -892,13 +976,14 @@ export class GameUI {
       info.textContent = '';
       return;
     }
-    const gameName = st.game === 'nine_ball' ? '9-ball' : '8-ball';
+    const gameName = GAME_NAMES[st.game] || st.game;
     if (this.anim) {
       // the state is already the one after the shot: keep it for the end
       turn.textContent = `${gameName}: ${this.anim.replay ? 'replaying a shot…' : 'the balls are rolling…'}`;
       return;
     }
     this.drawTray();
+    this.updateScore();
     if (st.phase === 'game_over') {
       const who = st.winner >= 0 ? `${this.seatName(st.winner)} wins` : 'Draw';
       turn.textContent = `Game over: ${who}.${st.result ? ` ${capital(st.result)}.` : ''}`;
@@ -907,11 +992,12 @@ export class GameUI {
       let what;
       if (this.thinking) what = `${gameName}: ${who} is thinking…`;
       else if (st.phase === 'break_shot') what = `${gameName}: ${who} to break`;
-      else if (legal.choices && legal.choices.length) what = `${gameName}: ${who} to decide (${PHASE_WORDS[st.phase] || st.phase})`;
+      else if (this.decisions().length) what = `${gameName}: ${who} to decide (${PHASE_WORDS[st.phase] || st.phase})`;
       else what = `${gameName}: ${who} to shoot`;
       if (!this.thinking) {
         if (legal.place === 'kitchen') what += ' — cue ball in hand behind the head string';
         else if (legal.place === 'anywhere') what += ' — cue ball in hand anywhere';
+        else if (legal.place === 'd') what += ' — cue ball in hand in the D';
       }
       turn.textContent = what;
     }
@@ -920,22 +1006,84 @@ export class GameUI {
       const g = st.group || ['none', 'none'];
       if (g[0] === 'none' && g[1] === 'none') bits.push('table open');
       else bits.push(`${this.shortName(0)}: ${g[0]}, ${this.shortName(1)}: ${g[1]}`);
+    } else if (st.game === 'snooker') {
+      if (st.phase !== 'game_over') bits.push(`on: ${this.ballOnWords()}`);
     } else {
       const lowest = (legal.targets && legal.targets.length) ? legal.targets[0] : null;
       if (lowest != null && st.phase !== 'game_over') bits.push(`ball on: ${lowest}`);
       if (st.push_out_allowed && st.phase !== 'game_over') bits.push('push-out allowed');
     }
     const f = st.fouls_in_a_row || [0, 0];
-    bits.push(`fouls in a row: ${f[0]} – ${f[1]}`);
+    if (st.game !== 'snooker') bits.push(`fouls in a row: ${f[0]} – ${f[1]}`);
     bits.push(`shots: ${st.shots}`);
     if (this.shareNote) bits.push(this.shareNote);
     info.textContent = bits.join(' · ');
+  }
+
+  /** Snooker: the ball on in words. */
+  ballOnWords() {
+    const st = this.st;
+    const k = st.snooker || {};
+    const on = (st.snooker_figures && st.snooker_figures.balls_on) || [];
+    let words;
+    if (k.colour_on) words = 'a colour (nominate it)';
+    else if (on.length && on.every((n) => n >= 1 && n <= 15)) words = 'a red';
+    else if (on.length) words = on.map(snookerName).join(', ');
+    else words = 'none';
+    if (k.respotted_black) words += ' (re-spotted black)';
+    if (k.free_ball) words += ' — free ball: any ball may be nominated';
+    return words;
+  }
+
+  /** Snooker's score panel: both scores, the break, the ball on, the
+   *  points remaining and the snookers each player requires. */
+  updateScore() {
+    const box = $('score');
+    const st = this.st;
+    if (!box) return;
+    const snooker = !!st && st.game === 'snooker' && !!st.snooker;
+    box.hidden = !snooker;
+    if (!snooker) return;
+    const k = st.snooker;
+    const fig = st.snooker_figures || { points_remaining: 0, snookers_required: [0, 0] };
+    for (const seat of [0, 1]) {
+      $(`score-name-${seat}`).textContent = this.shortName(seat);
+      $(`score-${seat}`).textContent = String(k.score[seat]);
+      $(`score-row-${seat}`).classList.toggle('to-play', st.phase !== 'game_over' && st.player === seat);
+      const need = fig.snookers_required[seat];
+      $(`score-snookers-${seat}`).textContent = need > 0 ? `needs ${need} snooker${need > 1 ? 's' : ''}` : '';
+    }
+    $('score-break').textContent = String(k.break);
+    $('score-on').textContent = st.phase === 'game_over' ? '—' : this.ballOnWords();
+    $('score-remaining').textContent = String(fig.points_remaining);
+    const needs = [0, 1].filter((seat) => fig.snookers_required[seat] > 0)
+      .map((seat) => `${this.shortName(seat)}: ${fig.snookers_required[seat]}`);
+    $('score-snookers').textContent = needs.length ? needs.join(', ') : 'none';
+  }
+
+  fillNominateSelect() {
+    const sel = $('nominate');
+    const list = this.legal().nominate || [];
+    const key = list.join(',');
+    if (sel.dataset.key !== key) {
+      sel.dataset.key = key;
+      sel.textContent = '';
+      sel.appendChild(new Option('auto (aim)', ''));
+      // the reds as one entry (any red is the same nomination in effect)
+      for (const n of list) {
+        if (n >= 1 && n <= 15 && list.some((m) => m >= 1 && m <= 15 && m < n)) continue;
+        sel.appendChild(new Option(n <= 15 ? 'a red' : snookerName(n), String(n)));
+      }
+    }
+    sel.value = this.override.nominate == null ? '' : String(this.override.nominate);
   }
 
   /** The balls still to play: by group in 8-ball, 1-9 in 9-ball. */
   drawTray() {
     const c = $('tray');
     if (!c || !this.st) return;
+    c.hidden = this.st.game === 'snooker';
+    if (c.hidden) return;
     const dpr = Math.min(3, window.devicePixelRatio || 1);
     const W = 320;
     const H = 60;
@@ -1050,7 +1198,8 @@ export class GameUI {
       w.className = 'win';
       w.textContent = `${this.shortName(r.winner)} wins. `;
       li.appendChild(w);
-    } else if (e.kind === 'shoot' && !/(shoots again|plays on|to shoot|to break|breaks|cue ball in hand|wins|drawn|passes|decides|chooses|may push out|shoots from here)/.test(text)) {
+    } else if (e.kind === 'shoot' && !/(shoots again|plays on|to shoot|to break|breaks|cue ball in hand|wins|drawn|passes|decides|chooses|may push out|shoots from here)/.test(text)
+      && !(this.snooker() && /(to play|is on |may play on|awarded)/.test(text))) {
       // the ruling's words usually say whose turn it is; if not, say it
       const m = document.createElement('span');
       m.className = 'meta';
@@ -1147,6 +1296,12 @@ export class GameUI {
       this.override.ball = v === '' ? null : Number(v);
       this.requestRender();
     });
+    $('nominate').addEventListener('change', () => {
+      const v = $('nominate').value;
+      this.override.nominate = v === '' ? null : Number(v);
+      this.requestRender();
+    });
+    $('concede').addEventListener('click', () => this.decide('concede'));
     $('call-pocket').addEventListener('change', () => {
       const v = $('call-pocket').value;
       this.override.pocket = v === '' ? null : Number(v);
@@ -1214,6 +1369,17 @@ export class GameUI {
       return;
     }
     if (!this.shotDue()) return;
+    // snooker: a click on a ball that may be nominated nominates it (and
+    // aims at it, as any click does)
+    if (this.nominateDue()) {
+      const allowed = this.legal().nominate || [];
+      const b = this.objectBalls().find((q) => allowed.includes(q.n) && Math.hypot(q.x - p.x, q.y - p.y) <= this.R * 1.1);
+      const on = (this.st.snooker_figures && this.st.snooker_figures.balls_on) || [];
+      if (b && (this.legal().must_nominate || !on.includes(b.n))) {
+        this.override.nominate = b.n;
+        this.updatePanel();
+      }
+    }
     // 8-ball calls: a click on a pocket calls that pocket
     if (this.callDue()) {
       const onBall = this.objectBalls().some((b) => Math.hypot(b.x - p.x, b.y - p.y) <= this.R * 1.1);

@@ -261,6 +261,101 @@ test('a shared link reproduces the shot', async ({ browser, url }) => {
   await three.context.close();
 });
 
+test('snooker: the D, a red potted, the score panel and the nomination of a colour', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  // Snooker in the form: its opponents are the engine's snooker players
+  // and its table the 12 ft one.
+  await page.click('#new-game');
+  await page.selectOption('#game-type', 'snooker');
+  const opponents = await page.$$eval('#opponent option', (os) => os.map((o) => o.value));
+  check(JSON.stringify(opponents) === JSON.stringify(['baseline', 'friend']), 'snooker opponents: ' + opponents);
+  check(JSON.stringify(await page.$$eval('#table-size option', (os) => os.map((o) => o.value))) === '["12ft"]',
+    'snooker tables are not 12ft only');
+  await page.fill('#seed', '1');
+  await newGame(page, { game: 'snooker', opponent: 'friend', table: '12ft' });
+  await page.selectOption('#playback-speed', '2');
+  const t = await page.evaluate(() => window.breakshot.game.table());
+  check(t.snooker && t.snooker.d_radius === 0.292 && t.snooker.baulk_line === 0.737, 'the table has no snooker markings');
+  let st = await page.evaluate(() => window.breakshot.state());
+  check(st.legal.place === 'd', 'the break-off is not from the D: ' + st.legal.place);
+  check(await page.isVisible('#score') && !(await page.isVisible('#tray')), 'the score panel is not shown');
+  check(await page.textContent('#score-remaining') === '147', 'remaining at the start: ' + await page.textContent('#score-remaining'));
+  check(/a red/.test(await page.textContent('#score-on')), 'the ball on at the start: ' + await page.textContent('#score-on'));
+  check(/in the D/.test(await page.textContent('#status-turn')), 'the status does not say in hand in the D');
+  // The page's default placement is in the D (the engine accepts it).
+  await page.locator('#table').screenshot({ path: path.join(shots, 'snooker-start.png') });
+  const place = await page.evaluate(() => window.breakshot.ui.placePos);
+  const ok = await page.evaluate((p) => window.breakshot.game.checkPlacement(p.x, p.y), place);
+  check(ok.ok, 'the default placement is not in the D: ' + JSON.stringify(place));
+  await page.evaluate((p) => window.breakshot.act({ type: 'place_cue_ball', position: [p.x, p.y] }), place);
+  await idle(page);
+  // Shots as the baseline would play them, through the page, until a red
+  // falls and a colour is to be nominated.
+  for (let k = 0; k < 8 && !st.legal.must_nominate; k++) {
+    const hint = await page.evaluate(() => window.breakshot.game.aiAction('baseline'));
+    const a = hint.action || hint;
+    const r = await page.evaluate((x) => window.breakshot.act(x), a);
+    check(!r.error, 'a shot was refused: ' + r.error);
+    await idle(page);
+    st = await page.evaluate(() => window.breakshot.state());
+    if (st.phase === 'foul_choice') {
+      await page.click('#choice-play_on');
+      await idle(page);
+      st = await page.evaluate(() => window.breakshot.state());
+    }
+  }
+  check(st.legal.must_nominate, 'no red was potted in 8 shots');
+  // The score panel shows the engine's figures.
+  for (const seat of [0, 1]) {
+    check(await page.textContent(`#score-${seat}`) === String(st.snooker.score[seat]), `score ${seat}: ` + await page.textContent(`#score-${seat}`));
+  }
+  check(st.snooker.break >= 1 && await page.textContent('#score-break') === String(st.snooker.break), 'the break: ' + await page.textContent('#score-break'));
+  check(await page.textContent('#score-remaining') === String(st.snooker_figures.points_remaining), 'remaining: ' + await page.textContent('#score-remaining'));
+  const needs = st.snooker_figures.snookers_required;
+  check((await page.textContent('#score-snookers') === 'none') === (needs[0] === 0 && needs[1] === 0),
+    'snookers required: ' + await page.textContent('#score-snookers') + ' for ' + needs);
+  check(/colour/.test(await page.textContent('#score-on')), 'the ball on after a red: ' + await page.textContent('#score-on'));
+  check(await page.isVisible('#nominate-box'), 'no nomination box after a red');
+  // By the aim: aimed straight at a colour the line reaches first, the
+  // nomination is that colour.
+  const byAim = await page.evaluate(() => {
+    const ui = window.breakshot.ui;
+    const cue = ui.cuePos();
+    for (const n of [21, 20, 19, 18, 17, 16]) {
+      const p = ui.st.position[n];
+      ui.setAimToward({ x: p[0], y: p[1] });
+      const geo = ui.geometry();
+      if (geo.hit && geo.hit.n === n) return { n, nom: ui.currentNomination(geo), shot: ui.shotAction().nominate };
+    }
+    return { cue };
+  });
+  check(byAim.n != null, 'no colour could be aimed at directly');
+  check(byAim.nom.ball === byAim.n && byAim.nom.auto && byAim.shot === byAim.n,
+    'the aim does not nominate the colour it hits: ' + JSON.stringify(byAim));
+  await page.locator('#table').screenshot({ path: path.join(shots, 'snooker-nominate.png') });
+  await page.screenshot({ path: path.join(shots, 'snooker-page.png') });
+  // By a click: the click on another colour nominates it.
+  const other = byAim.n === 21 ? 20 : 21;
+  const p = await page.evaluate((n) => window.breakshot.state().position[n], other);
+  const at = await toPage(page, p[0], p[1]);
+  await page.mouse.click(at.x, at.y);
+  check(await page.inputValue('#nominate') === String(other), 'the click did not nominate ball ' + other);
+  check(await page.evaluate(() => window.breakshot.ui.shotAction().nominate) === other, 'the shot does not carry the clicked nomination');
+  await page.fill('#power', '1.5');
+  await page.dispatchEvent('#power', 'input');
+  await page.click('#shoot');
+  await page.waitForFunction((n) => window.breakshot.state().actions > n, st.actions, { timeout: 10000 });
+  await idle(page);
+  const log = await page.$$eval('#ruling-log li', (li) => li.map((x) => x.textContent));
+  const rec = await page.evaluate(() => window.breakshot.game.record());
+  const last = rec.actions[rec.actions.length - 1];
+  check(last.action.nominate === other && last.ruling.snooker.nominated === other,
+    'the shot played did not nominate ' + other + ': ' + JSON.stringify(last.action));
+  check(log.length === rec.actions.length, 'the log has no entry for the shot');
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
 test('the lab runs the two-ball example and draws its energy graph', async ({ browser, url }) => {
   const { page, context, problems } = await openPage(browser, url);
   await page.click('#tab-lab');
