@@ -167,8 +167,7 @@ TEST(WebApi, ErrorsNameTheField) {
   // Game configs.
   const std::pair<const char*, const char*> configs[] = {
       {R"({"players": ["human", "human"]})", "game: missing required field"},
-      {R"({"game": "snooker", "players": ["human", "club"]})",
-       "players[1]: snooker seats are \"human\" or \"baseline\""},
+      {R"({"game": "snooker", "players": ["human", "shark"]})", "players[1]: "},
       {R"({"game": "snooker", "players": ["human", "human"], "table": "9ft"})",
        "table: unknown table size \"9ft\" (expected \"12ft\")"},
       {R"({"game": "eight_ball"})", "players: missing required field"},
@@ -361,8 +360,7 @@ TEST(WebApi, LinkErrorsNameTheActionRefused) {
        "link.a[0][1]: unknown choice \"x\" (expected \"shoot\", "},
       {R"({"g":"snooker","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
        "link.t: unknown table size \"9ft\" (expected \"12ft\")"},
-      {R"({"g":"snooker","t":"12ft","s":"1","b":0,"p":["human","expert"],"a":[]})",
-       "link.p[1]: snooker seats are \"human\" or \"baseline\""},
+      {R"({"g":"snooker","t":"12ft","s":"1","b":0,"p":["human","shark"],"a":[]})", "link.p[1]: "},
       {R"({"g":"bowls","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
        "link.g: unknown game \"bowls\" (expected \"eight_ball\", \"nine_ball\" or \"snooker\")"},
       {R"({"g":"eight_ball","t":"9ft","s":"x1","b":0,"p":["human","human"],"a":[]})",
@@ -919,10 +917,10 @@ TEST(WebApi, SnookerGameShowsTheScoreTheBallOnAndTheTable) {
   EXPECT_FALSE(
       J(bs_game_check_placement(g.get(), m.baulk_x - 0.1, m.d_centre.y + 0.3))["ok"].get<bool>());
 
-  // The AI levels do not play snooker: a hint from one is refused by name;
-  // the baseline's is given.
-  EXPECT_TRUE(
-      starts_with(error_of(bs_game_ai_action(g.get(), "club")), "level: snooker is played by"));
+  // A hint from an AI level and from the baseline is given; an unknown
+  // level is refused by name.
+  EXPECT_EQ(error_of(bs_game_ai_action(g.get(), "beginner")), "");
+  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "shark")), "level:"));
   // seat 0 is human: a hint needs a level
   EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), nullptr)), "level:"));
 

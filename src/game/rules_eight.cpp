@@ -96,6 +96,7 @@ class EightBall final : public Ruleset {
   std::optional<std::string> check_shot(const Rules& rules, const GameState& s,
                                         const Shoot& shot) const override {
     if (shot.push_out) return "8-ball has no push-out";
+    if (shot.nominate) return "8-ball has no nominated ball (nominate is snooker's)";
     if (s.phase == Phase::break_shot) {
       if (shot.call || shot.safety) return "the break is neither called nor a safety";
       return std::nullopt;

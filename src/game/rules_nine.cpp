@@ -39,6 +39,7 @@ class NineBall final : public Ruleset {
   std::optional<std::string> check_shot(const Rules& rules, const GameState& s,
                                         const Shoot& shot) const override {
     if (shot.safety) return "9-ball has no declared safety";
+    if (shot.nominate) return "9-ball has no nominated ball (nominate is snooker's)";
     if (shot.call) {
       // Informational only: a valid pocket and an object ball on the table.
       const Call& call = *shot.call;

@@ -109,20 +109,16 @@ std::string seat_name(const json& v, const std::string& path) {
 }
 
 std::vector<std::string> computer_players(bs::GameType game) {
-  if (game == bs::GameType::snooker) return {"baseline"};
-  return bs::ai_level_names();
+  std::vector<std::string> out = bs::ai_level_names();
+  if (game == bs::GameType::snooker) out.push_back("baseline");
+  return out;
 }
 
 bool is_baseline(std::string_view name) { return name == "baseline"; }
 
 std::string seat_name(const json& v, const std::string& path, bs::GameType game) {
-  if (game != bs::GameType::snooker) return seat_name(v, path);
-  const std::string& s = text(v, path);
-  if (s == kHuman || is_baseline(s)) return s;
-  bad(path,
-      "snooker seats are \"human\" or \"baseline\" (the AI levels do not play snooker "
-      "yet), not \"" +
-          s + "\"");
+  if (game == bs::GameType::snooker && is_baseline(text(v, path))) return text(v, path);
+  return seat_name(v, path);
 }
 
 }  // namespace facade

@@ -160,9 +160,8 @@ std::string seat_name(const json& v, const std::string& path);
 /// "human" or a computer player of `game` (computer_players).
 std::string seat_name(const json& v, const std::string& path, bs::GameType game);
 
-/// The computer players a seat of `game` may be, by name: the AI levels
-/// in 8-ball and 9-ball; in snooker the baseline player (players.hpp), the
-/// only one that plays snooker (play_match refuses the levels there).
+/// The computer players a seat of `game` may be, by name: the AI levels,
+/// and in snooker also the baseline player (players.hpp).
 std::vector<std::string> computer_players(bs::GameType game);
 /// The player `name` (one of computer_players) makes decisions with.
 bool is_baseline(std::string_view name);

@@ -315,14 +315,7 @@ std::string ai_action_json(BsGame& g, const char* level) {
   if (level != nullptr && level[0] != '\0') {
     name = level;
     if (name == kHuman) bad("level", "\"human\" is not an AI level");
-    if (snooker) {
-      if (!is_baseline(name)) {
-        bad("level",
-            "snooker is played by \"baseline\" (the AI levels do not play snooker "
-            "yet), not \"" +
-                name + "\"");
-      }
-    } else {
+    if (!(snooker && is_baseline(name))) {
       try {
         (void)bs::ai_level(name);
       } catch (const std::invalid_argument& e) {

@@ -157,7 +157,7 @@ function gameOptions() {
   }
   const snooker = $('game-type').value === 'snooker';
   const want = snooker
-    ? [...((engine && engine.snookerPlayers) || ['baseline']).map((p, i) => [p, `Computer: ${p}`, i === 0]), ['friend', 'A friend (same screen)', false]]
+    ? [...((engine && engine.snookerPlayers) || ['club']).map((p) => [p, p === 'baseline' ? 'Computer: baseline' : `AI: ${p}`, p === 'club']), ['friend', 'A friend (same screen)', false]]
     : poolOpponents;
   const tables = snooker ? [['12ft', '12 ft', true]] : poolTables;
   const fill = (sel, list) => {

@@ -268,7 +268,7 @@ test('snooker: the D, a red potted, the score panel and the nomination of a colo
   await page.click('#new-game');
   await page.selectOption('#game-type', 'snooker');
   const opponents = await page.$$eval('#opponent option', (os) => os.map((o) => o.value));
-  check(JSON.stringify(opponents) === JSON.stringify(['baseline', 'friend']), 'snooker opponents: ' + opponents);
+  check(JSON.stringify(opponents) === JSON.stringify(['beginner', 'amateur', 'club', 'expert', 'champion', 'baseline', 'friend']), 'snooker opponents: ' + opponents);
   check(JSON.stringify(await page.$$eval('#table-size option', (os) => os.map((o) => o.value))) === '["12ft"]',
     'snooker tables are not 12ft only');
   await page.fill('#seed', '1');
