@@ -127,16 +127,15 @@ def test_conceding_ends_the_frame():
     assert g.over and out.ruling["winner"] == 1 and g.winner == 1
 
 
-def test_snooker_refuses_what_it_does_not_have():
+def test_snooker_tables_and_players():
     with pytest.raises(ValueError, match="table"):
         Game("snooker", table="9ft")
     with pytest.raises(ValueError, match="table"):
         Game("eight_ball", table="12ft")
     g = Game("snooker", seed=1)
-    # The AI levels do not play snooker; the baseline does.
-    with pytest.raises(ValueError, match="snooker"):
-        Player("club").decide(g)
-    assert isinstance(Player("baseline").decide(g), (Shot, PlaceCue))
+    # The AI levels and the baseline play snooker: the break-off from the D.
+    for name in ("beginner", "baseline"):
+        assert isinstance(Player(name).decide(g), (Shot, PlaceCue))
 
 
 def test_a_snooker_match_from_python_is_the_commands(cli):
