@@ -32,11 +32,13 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/snooker.hpp"
 #include "breakshot/table.hpp"
+#include "table_geometry.hpp"
 
 namespace breakshot {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using namespace table_geometry;
+
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInch = 0.0254;
 constexpr double kR = 0.02625;  // WPBSA: 52.5 mm balls
@@ -46,13 +48,6 @@ constexpr double kW = 1.778;
 const char* const kCornerPockets[] = {"bottom_left", "bottom_right", "top_right", "top_left"};
 const char* const kSidePockets[] = {"side_bottom", "side_top"};
 
-const Wall& wall_named(const Table& t, const std::string& name) {
-  for (const Wall& w : t.walls) {
-    if (w.name == name) return w;
-  }
-  throw std::runtime_error("no wall " + name);
-}
-
 int wall_index(const Table& t, const std::string& name) {
   for (std::size_t i = 0; i < t.walls.size(); ++i) {
     if (t.walls[i].name == name) return static_cast<int>(i);
@@ -60,186 +55,7 @@ int wall_index(const Table& t, const std::string& name) {
   throw std::runtime_error("no wall " + name);
 }
 
-const Pocket& pocket_named(const Table& t, const std::string& name) {
-  for (const Pocket& p : t.pockets) {
-    if (p.name == name) return p;
-  }
-  throw std::runtime_error("no pocket " + name);
-}
-
-Vec2 unit(Vec2 v) { return v / norm(v); }
-
-Vec2 line_meet(const Wall& s1, const Wall& s2) {
-  const Vec2 d1 = s1.b - s1.a;
-  const Vec2 d2 = s2.b - s2.a;
-  const double t = cross(s2.a - s1.a, d2) / cross(d1, d2);
-  return s1.a + d1 * t;
-}
-
-std::string rail_of(const std::string& jaw) {
-  if (jaw == "bottom_left_jaw_x" || jaw == "side_bottom_jaw_left") return "rail_bottom_left";
-  if (jaw == "bottom_right_jaw_x" || jaw == "side_bottom_jaw_right") return "rail_bottom_right";
-  if (jaw == "top_left_jaw_x" || jaw == "side_top_jaw_left") return "rail_top_left";
-  if (jaw == "top_right_jaw_x" || jaw == "side_top_jaw_right") return "rail_top_right";
-  if (jaw == "bottom_left_jaw_y" || jaw == "top_left_jaw_y") return "rail_left";
-  return "rail_right";
-}
-
-std::vector<std::string> jaws_of(const std::string& pocket) {
-  if (pocket.rfind("side", 0) == 0) return {pocket + "_jaw_left", pocket + "_jaw_right"};
-  return {pocket + "_jaw_x", pocket + "_jaw_y"};
-}
-
 bool is_side(const std::string& pocket) { return pocket.rfind("side", 0) == 0; }
-
-/// The pointed lip: where the nose line meets the facing line.
-Vec2 lip(const Table& t, const std::string& jaw) {
-  return line_meet(wall_named(t, rail_of(jaw)), wall_named(t, jaw));
-}
-
-double arc_distance(Vec2 p, const Wall& w) {
-  const Vec2 d = p - w.a;
-  if (cross(w.b, d) >= 0.0 && cross(d, w.normal) >= 0.0) return std::abs(norm(d) - w.radius);
-  return std::min(norm(p - (w.a + w.b * w.radius)), norm(p - (w.a + w.normal * w.radius)));
-}
-
-double wall_distance(const Table& t, Vec2 p) {
-  double d = kInf;
-  for (const Wall& w : t.walls) {
-    if (w.kind == WallKind::segment) d = std::min(d, segment_distance(p, w.a, w.b));
-    if (w.kind == WallKind::arc) d = std::min(d, arc_distance(p, w));
-    if (w.kind == WallKind::corner) d = std::min(d, norm(p - w.a));
-  }
-  return d;
-}
-
-bool in_a_pocket(const Table& t, Vec2 p) {
-  for (const Pocket& k : t.pockets) {
-    if (norm(p - k.centre) < k.radius) return true;
-  }
-  return false;
-}
-
-double circle_entry(Vec2 p, Vec2 v, Vec2 c, double reach) {
-  const Vec2 d = p - c;
-  const double b = dot(d, v);
-  if (b >= 0.0) return kInf;
-  const double a = norm2(v);
-  const double cc = norm2(d) - reach * reach;
-  if (cc < 0.0) return cc > -1e-9 * reach ? 0.0 : kInf;
-  const double disc = b * b - a * cc;
-  if (disc < 0.0) return kInf;
-  return std::max(0.0, (-b - std::sqrt(disc)) / a);
-}
-
-struct Hit {
-  double t = kInf;
-  int wall = -1;
-  int pocket = -1;
-  Vec2 normal;
-};
-
-/// The first contact of a ball of radius r whose centre moves from p
-/// along v: a wall contact as the simulator defines it or a capture.
-Hit cast(const Table& t, Vec2 p, Vec2 v, double r) {
-  Hit h;
-  for (std::size_t i = 0; i < t.walls.size(); ++i) {
-    const Wall& w = t.walls[i];
-    double tau = kInf;
-    Vec2 n;
-    if (w.kind == WallKind::segment) {
-      const double vn = dot(v, w.normal);
-      if (vn >= 0.0) continue;
-      const double d0 = dot(p - w.a, w.normal);
-      if (d0 < r - 1e-9) continue;
-      tau = std::max(0.0, (d0 - r) / -vn);
-      const Vec2 q = p + v * tau;
-      const double s = dot(q - w.a, w.b - w.a) / norm2(w.b - w.a);
-      if (s < 0.0 || s > 1.0) continue;
-      n = w.normal;
-    } else if (w.kind == WallKind::arc || w.kind == WallKind::corner) {
-      const double reach = r + (w.kind == WallKind::arc ? w.radius : 0.0);
-      tau = circle_entry(p, v, w.a, reach);
-      if (tau == kInf) continue;
-      const Vec2 q = p + v * tau - w.a;
-      if (w.kind == WallKind::arc && (cross(w.b, q) < 0.0 || cross(q, w.normal) < 0.0)) continue;
-      n = unit(q);
-    }
-    if (tau < h.t) {
-      h.t = tau;
-      h.wall = static_cast<int>(i);
-      h.pocket = -1;
-      h.normal = n;
-    }
-  }
-  for (std::size_t k = 0; k < t.pockets.size(); ++k) {
-    const Pocket& pk = t.pockets[k];
-    const Vec2 d = p - pk.centre;
-    double tau = kInf;
-    if (norm2(d) < pk.radius * pk.radius) {
-      tau = 0.0;
-    } else {
-      const double b = dot(d, v);
-      const double disc = b * b - norm2(v) * (norm2(d) - pk.radius * pk.radius);
-      if (b < 0.0 && disc >= 0.0) tau = (-b - std::sqrt(disc)) / norm2(v);
-    }
-    if (tau < h.t) {
-      h.t = tau;
-      h.wall = -1;
-      h.pocket = static_cast<int>(k);
-    }
-  }
-  return h;
-}
-
-bool in_box(const Table& t, Vec2 p) {
-  return p.x >= t.min.x && p.x <= t.max.x && p.y >= t.min.y && p.y <= t.max.y;
-}
-
-bool segments_cross(Vec2 p1, Vec2 p2, Vec2 q1, Vec2 q2) {
-  auto orient = [](Vec2 a, Vec2 b, Vec2 c) {
-    const double x = cross(b - a, c - a);
-    return (x > 0.0) - (x < 0.0);
-  };
-  const int o1 = orient(p1, p2, q1);
-  const int o2 = orient(p1, p2, q2);
-  const int o3 = orient(q1, q2, p1);
-  const int o4 = orient(q1, q2, p2);
-  if (o1 != o2 && o3 != o4) return true;
-  auto on = [](Vec2 a, Vec2 b, Vec2 c) {
-    return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
-           c.y <= std::max(a.y, b.y);
-  };
-  return (o1 == 0 && on(p1, p2, q1)) || (o2 == 0 && on(p1, p2, q2)) ||
-         (o3 == 0 && on(q1, q2, p1)) || (o4 == 0 && on(q1, q2, p2));
-}
-
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
-
-Vec2 random_free_point(const Table& t, std::mt19937_64& rng) {
-  const bool near_pocket = (rng() & 1U) != 0;
-  for (;;) {
-    Vec2 p;
-    if (near_pocket) {
-      const Pocket& k = t.pockets[rng() % t.pockets.size()];
-      p = {uniform(rng, k.centre.x - 0.25, k.centre.x + 0.25),
-           uniform(rng, k.centre.y - 0.25, k.centre.y + 0.25)};
-    } else {
-      p = {uniform(rng, t.min.x, t.max.x), uniform(rng, t.min.y, t.max.y)};
-    }
-    if (contains(t, p) && !in_a_pocket(t, p) && wall_distance(t, p) >= kR) return p;
-  }
-}
-
-Vec2 random_direction(std::mt19937_64& rng) {
-  for (;;) {
-    const Vec2 v{uniform(rng, -1, 1), uniform(rng, -1, 1)};
-    const double n = norm(v);
-    if (n > 0.1 && n < 1.0) return v / n;
-  }
-}
 
 /// The mouth's midpoint and the pocket axis (unit, away from the table).
 struct Axis {
@@ -506,7 +322,7 @@ TEST(SnookerTable, NoRayEscapes) {
   int pocketed = 0;
   int walls = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Vec2 p = random_free_point(t, rng);
+    const Vec2 p = random_free_point(t, rng, kR, 0.25);
     const Vec2 v = random_direction(rng);
     const Hit h = cast(t, p, v, kR);
     ASSERT_LT(h.t, kInf) << "escapes from (" << p.x << ", " << p.y << ") along (" << v.x << ", "
@@ -525,7 +341,7 @@ TEST(SnookerTable, NoBouncingBallEscapes) {
   std::mt19937_64 rng(1357);
   int pocketed = 0;
   for (int i = 0; i < 1000; ++i) {
-    Vec2 p = random_free_point(t, rng);
+    Vec2 p = random_free_point(t, rng, kR, 0.25);
     Vec2 v = random_direction(rng);
     for (int bounce = 0; bounce < 200; ++bounce) {
       const Hit h = cast(t, p, v, kR);
