@@ -23,24 +23,14 @@
 #include "breakshot/match.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
+#include "ai_fixtures.hpp"
 #include "rules_fixtures.hpp"
 
 namespace {
 
 using namespace rules_fixtures;
 
-/// A small searching level: few candidates and samples, one thread.
-AiLevel small_level(const std::string& base = "expert") {
-  AiLevel l = ai_level(base);
-  l.candidates = 4;
-  l.samples = 4;
-  l.threads = 1;
-  l.generation.speed_factors = {1.0, 1.6};
-  l.generation.spins = {0.0};
-  l.generation.refine_iterations = 2;
-  l.generation.max_candidates = 24;
-  return l;
-}
+using ai_fixtures::small_level;
 
 Action decide_legal(Player& player, const Rules& rules, const GameState& s,
                     std::uint64_t seed = 1) {

@@ -21,6 +21,8 @@
 #include "breakshot/player.hpp"
 #include "breakshot/players.hpp"
 #include "breakshot/snooker.hpp"
+#include "ai_fixtures.hpp"
+#include "snooker_fixtures.hpp"
 
 using namespace breakshot;
 
@@ -31,40 +33,12 @@ constexpr int kYellow = 16;
 constexpr int kBlack = 21;
 constexpr double kR = kSnookerBallRadius;
 
-const Rules& rules() {
-  static const Rules r(snooker_config());
-  return r;
-}
-
-/// A small searching level: few candidates and samples, one thread.
-AiLevel small_level(const std::string& base = "expert") {
-  AiLevel l = ai_level(base);
-  l.candidates = 4;
-  l.samples = 4;
-  l.threads = 1;
-  l.generation.speed_factors = {1.0, 1.6};
-  l.generation.spins = {0.0};
-  l.generation.refine_iterations = 2;
-  l.generation.max_candidates = 24;
-  return l;
-}
+using ai_fixtures::small_level;
+using snooker_fixtures::put;
+using snooker_fixtures::rules;
 
 /// Only the cue ball on the table at `cue`, player 0 on a red at 0-0.
-GameState bare(Vec2 cue) {
-  GameState s = rules().start(3, 0);
-  std::fill(s.on_table.begin(), s.on_table.end(), std::uint8_t{0});
-  s.on_table[0] = 1;
-  s.position[0] = cue;
-  s.phase = Phase::shot;
-  s.ball_in_hand = BallInHand::none;
-  s.shots = 1;
-  return s;
-}
-
-void put(GameState& s, int ball, Vec2 p) {
-  s.position[static_cast<std::size_t>(ball)] = p;
-  s.on_table[static_cast<std::size_t>(ball)] = 1;
-}
+GameState bare(Vec2 cue) { return snooker_fixtures::bare(cue, 3); }
 
 int pocket_index(const std::string& name) {
   const auto& pk = rules().table().pockets;

@@ -20,6 +20,7 @@
 #include "breakshot/players.hpp"
 #include "breakshot/record_io.hpp"
 #include "breakshot/snooker.hpp"
+#include "snooker_fixtures.hpp"
 #include "io/game_json.hpp"
 
 using namespace breakshot;
@@ -34,28 +35,11 @@ constexpr int kPink = 20;
 constexpr int kBlack = 21;
 constexpr double kR = kSnookerBallRadius;
 
-const Rules& rules() {
-  static const Rules r(snooker_config());
-  return r;
-}
+using snooker_fixtures::put;
+using snooker_fixtures::rules;
 
-/// A frame in progress with only the cue ball on the table at `cue`:
-/// player 0 to shoot, on a red, 0-0.
-GameState bare(Vec2 cue) {
-  GameState s = rules().start(5, 0);
-  std::fill(s.on_table.begin(), s.on_table.end(), std::uint8_t{0});
-  s.on_table[0] = 1;
-  s.position[0] = cue;
-  s.phase = Phase::shot;
-  s.ball_in_hand = BallInHand::none;
-  s.shots = 1;
-  return s;
-}
-
-void put(GameState& s, int ball, Vec2 p) {
-  s.position[static_cast<std::size_t>(ball)] = p;
-  s.on_table[static_cast<std::size_t>(ball)] = 1;
-}
+/// A frame in progress with only the cue ball on the table at `cue`.
+GameState bare(Vec2 cue) { return snooker_fixtures::bare(cue, 5); }
 
 bool on(const GameState& s, int ball) { return s.on_table[static_cast<std::size_t>(ball)] != 0; }
 
