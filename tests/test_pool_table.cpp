@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "breakshot/rack.hpp"
+#include "breakshot/snooker.hpp"
 #include "breakshot/table.hpp"
 #include "table_geometry.hpp"
 
@@ -604,6 +605,36 @@ TEST(Rack, RejectsBadInput) {
   // A table that is not a pool table.
   EXPECT_THROW(make_rack("eight_ball", make_rectangle({0, 0}, {1, 1}), kBallR, 1),
                std::invalid_argument);
+}
+
+// contains() answers for the bed of a pool or snooker table without the
+// walk around its outline: that shortcut must agree with the walk, which
+// a "polygon" copy of the table still takes, at points all over the bed
+// and right up to its edges and pocket mouths.
+TEST(PoolTable, BedInsideOutline) {
+  std::vector<Table> tables{make_pool_table("7ft"), make_pool_table("8ft"),
+                            make_pool_table("9ft"), make_snooker_table()};
+  for (const Table& t : tables) {
+    Table walked = t;
+    walked.shape = "polygon";
+    int checked = 0;
+    for (int i = 0; i <= 400; ++i) {
+      for (int j = 0; j <= 200; ++j) {
+        const Vec2 p{t.length * (i == 0 ? 1e-9 : i == 400 ? 1.0 - 1e-9 : i / 400.0),
+                     t.width * (j == 0 ? 1e-9 : j == 200 ? 1.0 - 1e-9 : j / 200.0)};
+        ASSERT_TRUE(contains(walked, p)) << t.shape << " " << p.x << " " << p.y;
+        EXPECT_TRUE(contains(t, p));
+        ++checked;
+      }
+    }
+    EXPECT_EQ(checked, 401 * 201);
+    // Outside the bed both still walk the outline: in a pocket's mouth
+    // and beyond the cushion.
+    for (const Pocket& pk : t.pockets) {
+      EXPECT_EQ(contains(t, pk.centre), contains(walked, pk.centre)) << pk.name;
+    }
+    EXPECT_FALSE(contains(t, Vec2{-0.5, 0.5 * t.width}));
+  }
 }
 
 }  // namespace

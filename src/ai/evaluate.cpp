@@ -40,6 +40,10 @@ constexpr double kMaxCutCos = 0.17364817766693041;  // cos 80 degrees: thinner c
 // over bins of the estimate).
 constexpr double kCornerTolerance = 0.78;
 constexpr double kSideTolerance = 0.715;
+// The snooker table's rounded jaws and tighter mouths accept far less:
+// fitted to sampled play on it (docs/ai.md, "Snooker").
+constexpr double kSnookerCornerTolerance = 0.38;
+constexpr double kSnookerSideTolerance = 0.38;
 constexpr double kCornerMinCos = 0.5;   // 60 degrees
 constexpr double kSideMinCos = 0.47;    // about 62 degrees
 constexpr double kDistancePenalty = 0.04;  // per metre of d1 + d2
@@ -190,11 +194,12 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
       const Vec2 mouth = mouth_direction(table, pk.centre, &side);
       const double cos_alpha = -dot(u, mouth);
       if (cos_alpha < (side ? kSideMinCos : kCornerMinCos)) continue;
-      const double tol = side ? kSideTolerance * pk.radius * cos_alpha * std::sqrt(cos_alpha)
-                              : kCornerTolerance * pk.radius * cos_alpha;
+      const double ct = snooker ? kSnookerCornerTolerance : kCornerTolerance;
+      const double st = snooker ? kSnookerSideTolerance : kSideTolerance;
+      const double tol = side ? st * pk.radius * cos_alpha * std::sqrt(cos_alpha)
+                              : ct * pk.radius * cos_alpha;
       const double d2 = std::max(dist - pk.radius, 0.01);
       const Vec2 ghost = b - u * (2.0 * R);
-      if (wall_clearance(table, ghost, R) < 0.0) continue;
       const Vec2 run = ghost - cue;
       const double d1 = norm(run);
       if (d1 < 1e-6) continue;
@@ -212,6 +217,7 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
                    [](const Pot& x, const Pot& y) { return x.rank > y.rank; });
   for (const Pot& pot : pots) {
     const Vec2 b = state.position[static_cast<std::size_t>(pot.ball)];
+    if (wall_clearance(table, pot.ghost, R) < 0.0) continue;
     if (!ai::walls_clear(table, R, cue, pot.ghost)) continue;
     if (!ai::pocket_approach(table, R, lay, b, pot.pocket, pot.ball)) continue;
     if (best_ball) *best_ball = pot.ball;
@@ -239,7 +245,9 @@ double snooker_visit_points(const Rules& rules, const GameState& s, double sigma
     p = best_pot_estimate_from(rules, s, s.position[0], false, sigma, &ball);
     if (ball < 0 && snookered(rules, s)) return -kSnookeredPoints;
   }
-  return ball > 0 ? p * (snooker_value(ball) + kSnookerCarry) : 0.0;
+  if (ball <= 0) return 0.0;
+  const double after_pot = static_cast<double>(snooker_points_remaining(s) - snooker_value(ball));
+  return p * (snooker_value(ball) + std::min(kSnookerCarry, std::max(0.0, after_pot)));
 }
 
 bool snookered(const Rules& rules, const GameState& s) {
@@ -265,6 +273,15 @@ bool snookered(const Rules& rules, const GameState& s) {
   return true;
 }
 
+namespace {
+/// Snooker: the value of leading by `lead` with `left` points on the table.
+double snooker_lead_value(double lead, double left) {
+  const double spread = std::sqrt(kSnookerSpreadPerPoint * left + kSnookerSpreadBase);
+  return (1.0 - kSnookerPointsWeight) * dm::erf(lead / (std::sqrt(2.0) * spread)) +
+         kSnookerPointsWeight * std::clamp(lead / kSnookerPointsScale, -1.0, 1.0);
+}
+}  // namespace
+
 double snooker_position_value(const Rules& rules, const GameState& after, int me, double sigma,
                               bool no_pot) {
   if (after.phase == Phase::game_over) {
@@ -275,8 +292,7 @@ double snooker_position_value(const Rules& rules, const GameState& after, int me
   const auto i_me = static_cast<std::size_t>(me);
   const double lead = static_cast<double>(k.score[i_me] - k.score[1 - i_me]);
   const double left = static_cast<double>(snooker_points_remaining(after));
-  const double spread = std::sqrt(kSnookerSpreadPerPoint * left + kSnookerSpreadBase);
-  const auto value = [&](double lead_now) { return dm::erf(lead_now / (std::sqrt(2.0) * spread)); };
+  const auto value = [&](double lead_now) { return snooker_lead_value(lead_now, left); };
   const double e = no_pot ? 0.0 : snooker_visit_points(rules, after, sigma);
   const int shooter = after.player;
   if (after.phase == Phase::foul_choice) {

@@ -38,17 +38,22 @@ inline constexpr double kBallProgress = 0.06;
 /// loss always dominates.
 inline constexpr double kOpenBound = 0.95;
 
-/// Snooker (docs/ai.md, "Snooker"): a table is worth the chance of
-/// winning the frame from its score, read as a normal law: the lead plus
-/// the points the shooter's visit promises (for the side to shoot) over
-/// a spread of sqrt(kSnookerSpreadPerPoint x points left +
-/// kSnookerSpreadBase) points. A visit promises p (value of the ball +
-/// kSnookerCarry) for its best pot p; with the cue ball in hand, p is
-/// kSnookerHandP.
+/// Snooker (docs/ai.md, "Snooker"): a table is worth, mostly, the chance
+/// of winning the frame from its score, read as a normal law: the lead
+/// plus the points the shooter's visit promises (for the side to shoot)
+/// over a spread of sqrt(kSnookerSpreadPerPoint x points left +
+/// kSnookerSpreadBase) points; and for kSnookerPointsWeight of it, that
+/// margin over kSnookerPointsScale points, so that a frame all but won
+/// or lost still ranks shots by the points they promise. A visit
+/// promises p (value of the ball + the smaller of kSnookerCarry and the
+/// points left after it) for its best pot p; with the cue ball in hand,
+/// p is kSnookerHandP.
 inline constexpr double kSnookerCarry = 4.0;
 inline constexpr double kSnookerSpreadPerPoint = 9.0;
 inline constexpr double kSnookerSpreadBase = 16.0;
 inline constexpr double kSnookerHandP = 0.6;
+inline constexpr double kSnookerPointsWeight = 0.25;
+inline constexpr double kSnookerPointsScale = 147.0;
 /// Snooker: what a visit that begins snookered (no ball on can be hit
 /// directly, full or thin) is worth: the escape risks a foul of at least 4.
 inline constexpr double kSnookeredPoints = 3.0;

@@ -1016,6 +1016,17 @@ class Generator {
         next.on_table[static_cast<std::size_t>(l.target)] = 1;
       }
     }
+    if (snooker_) {
+      // What the next pot is worth, not only its chance: p (value +
+      // carry) as the estimate ranks pots, scaled so that a sure black
+      // is 1. A black at 0.8 then outranks a yellow at 0.85.
+      int ball = -1;
+      const double p = ai_detail::best_pot_estimate_from(rules_, next, next.position[0], false,
+                                                         opt_.leave_sigma_deg, &ball);
+      return ball > 0 ? p * (snooker_value(ball) + ai_detail::kSnookerCarry) /
+                            (7.0 + ai_detail::kSnookerCarry)
+                      : 0.0;
+    }
     return ai_detail::best_pot_estimate(rules_, next, opt_.leave_sigma_deg);
   }
 

@@ -171,6 +171,14 @@ double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
 }
 
 bool contains(const Table& table, Vec2 p) {
+  // The bed of a pocket table lies inside its outline, which runs along
+  // the cushion noses and out around the pockets (a test checks it against
+  // the crossing-number test below): the common case without the walk
+  // around the outline's hundreds of points.
+  if ((table.shape == "pool" || table.shape == "snooker") && p.x > 0.0 && p.x < table.length &&
+      p.y > 0.0 && p.y < table.width) {
+    return true;
+  }
   // Crossing-number test on the outline.
   bool inside = false;
   const auto& v = table.outline;
