@@ -197,3 +197,26 @@ TEST(AiSnooker, WholeFramesBetweenLevelsEndWithLegalActions) {
     EXPECT_EQ(end.snooker->score[1], points[1]);
   }
 }
+
+// The break-off: every level plays a shot at the reds from the D, not a
+// fallback. Played without noise it hits a red first and fouls nothing
+// (the earlier break-off aimed straight up the table into the pink).
+TEST(AiSnooker, BreakOffHitsARedCleanly) {
+  const GameState start = rules().start(11, 0);
+  ASSERT_EQ(start.phase, Phase::break_shot);
+  for (const std::string level : {"beginner", "amateur", "champion"}) {
+    const auto player =
+        make_ai_player(level == "champion" ? small_level(level) : ai_level(level));
+    GameState s = start;
+    Action a = decide_legal(*player, s);
+    if (std::holds_alternative<PlaceCueBall>(a)) {
+      s = rules().apply(s, a).state;
+      a = decide_legal(*player, s);
+    }
+    ASSERT_TRUE(std::holds_alternative<Shoot>(a)) << level;
+    const Outcome out = rules().apply(s, a);
+    EXPECT_TRUE(out.ruling.fouls.empty()) << level << ": " << out.ruling.text;
+    ASSERT_FALSE(out.facts.first_hit < 0) << level;
+    EXPECT_EQ(snooker_value(out.facts.first_hit), 1) << level << ": " << out.ruling.text;
+  }
+}

@@ -113,6 +113,7 @@ constexpr std::uint64_t kLookStream = 0x6c6f6f6bULL;          // "look"
 constexpr std::uint64_t kBreakStream = 0x627265616bULL;       // "break"
 constexpr std::uint64_t kPushStream = 0x70757368ULL;          // "push"
 constexpr std::uint64_t kPlaceStream = 0x706c616365ULL;       // "place"
+constexpr std::uint64_t kBreakOffStream = 0x626f6666ULL;      // "boff"
 constexpr std::uint64_t kChoiceStream = 0x63686f696365ULL;    // "choice"
 
 // A push-out is considered when the best shot is worth less than this,
@@ -273,8 +274,46 @@ class AiPlayer final : public Player {
       }
       return Decide{best};
     }
+    if (state.phase == Phase::break_shot) return break_off(rules, state, la, seed, budget);
     if (la.place != BallInHand::none) return placement_or_shot(rules, state, la, seed, budget);
     return shot_action(rules, state, la, seed, budget);
+  }
+
+  /// Snooker's break-off: the cue ball may be placed in the D again and
+  /// again until the stroke, so the place is chosen from a fixed set (six
+  /// points of the baulk line, the break-off spot first) with seeds from
+  /// the rack, never from the decision or the cue ball's position: the
+  /// call that places the cue ball and the call that then finds it there
+  /// choose the same place, and the second shoots. Each place is searched
+  /// with half the effort of a shot decision; the shot itself is then
+  /// chosen as any shot.
+  Action break_off(const Rules& rules, const GameState& state, const LegalActions& la,
+                   std::uint64_t seed, Budget& budget) const {
+    const SnookerMarks m = snooker_marks();
+    std::vector<Vec2> spots;
+    for (const double f : {-0.5, 0.5, -0.25, 0.25, -0.75, 0.75}) {
+      const Vec2 p{m.baulk_x, m.d_centre.y + f * m.d_radius};
+      if (!rules.check_placement(state, p)) spots.push_back(p);
+    }
+    if (spots.empty()) return shot_action(rules, state, la, seed, budget);
+    std::size_t best = 0;
+    if (searches()) {
+      const std::uint64_t place_seed = mix_seed(state.rack_seed, kBreakOffStream);
+      double best_value = kNoValue;
+      for (std::size_t i = 0; i < spots.size(); ++i) {
+        const GameState placed = rules.apply(state, PlaceCueBall{spots[i]}).state;
+        const double v =
+            best_shot(rules, placed, mix_seed(place_seed, i), 0.5, budget).value;
+        if (v > best_value) {
+          best_value = v;
+          best = i;
+        }
+      }
+    }
+    if (state.on_table[0] && norm(state.position[0] - spots[best]) < 1e-9) {
+      return shot_action(rules, state, la, seed, budget);
+    }
+    return PlaceCueBall{spots[best]};
   }
 
   // -------------------------------------------------------------------------

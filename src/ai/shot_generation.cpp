@@ -186,7 +186,11 @@ class Generator {
 
   std::vector<CandidateShot> run() {
     std::vector<CandidateShot> out;
-    if (state_.phase != Phase::shot || !la_.shoot || !on(0) || targets_.empty()) return out;
+    // Snooker's break-off is a shot like any other (at the reds, from
+    // the D); the pool games' break has its own search (ai_player.cpp).
+    const bool shot_phase =
+        state_.phase == Phase::shot || (snooker_ && state_.phase == Phase::break_shot);
+    if (!shot_phase || !la_.shoot || !on(0) || targets_.empty()) return out;
     std::vector<Line> lines;
     // Whether each target has a direct pot into each pocket: kicks are
     // planned only where it has not.
