@@ -149,10 +149,22 @@ TEST(Snooker, RedThenNominatedColour) {
   EXPECT_TRUE(rules().legal_actions(a.state).must_nominate);
   EXPECT_TRUE(rules().check(a.state, shoot()));
   EXPECT_TRUE(rules().check(a.state, shoot(4)));  // a red is not a colour
+  // A call is information only (a pot attempt for the statistics): a
+  // ball on the table and a pocket that exists; the ball on is still the
+  // nominated one.
   Shoot called = shoot(kBlue);
   called.call = Call{kBlue, 0};
-  EXPECT_TRUE(rules().check(a.state, called));  // no called pockets
+  EXPECT_FALSE(rules().check(a.state, called));
+  called.call = Call{kBlue, 6};
+  EXPECT_TRUE(rules().check(a.state, called));  // no pocket 6
+  called.call = Call{0, 0};
+  EXPECT_TRUE(rules().check(a.state, called));  // the cue ball is no object ball
   const Outcome b = rule(a.state, shoot(kBlue), {hit(0.1, 0, kBlue), potted(0.6, kBlue, 2)});
+  EXPECT_FALSE(b.ruling.call_made);
+  called.call = Call{kBlue, 2};
+  EXPECT_TRUE(rule(a.state, called, {hit(0.1, 0, kBlue), potted(0.6, kBlue, 2)}).ruling.call_made);
+  called.call = Call{kBlue, 0};
+  EXPECT_FALSE(rule(a.state, called, {hit(0.1, 0, kBlue), potted(0.6, kBlue, 2)}).ruling.call_made);
   EXPECT_TRUE(b.ruling.fouls.empty());
   EXPECT_EQ(b.ruling.snooker->points, 5);
   EXPECT_EQ(sk(b.state).score[0], 6);

@@ -203,7 +203,7 @@ TEST(WebApi, ErrorsNameTheField) {
       {shoot_json(R"("speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0, "spin": 2)"),
        "strike.spin: unknown field (known: speed, phi, theta, a, b)"},
       {shoot_json(R"("speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0)", R"({"ball": "x", "pocket": 1})"),
-       "call.ball: expected an integer in [-1, 15], not a string"},
+       "call.ball: expected an integer in [-1, 21], not a string"},
       {shoot_json(R"("speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0)", "null", "1"),
        "safety: expected true or false, not a number"},
       {R"({"type": "shoot", "strike": {"speed": 1, "phi": 0, "theta": 0, "a": 0, "b": 0}})",

@@ -811,7 +811,9 @@ class BaselinePlayer final : public Player {
       return s;
     };
     if (const std::optional<Plan> p = planner.best_pot(cue, o.targets, o.legs)) {
-      return nominate(make_shoot(p->phi, p->speed), p->ball);
+      Shoot s = nominate(make_shoot(p->phi, p->speed), p->ball);
+      s.call = Call{p->ball, p->pocket};  // information: a pot attempt (docs/rules.md)
+      return s;
     }
     // No pot: a safety, then a kick, at one ball on at a time, nearest
     // first (so that a colour's nomination is the ball the trial hit).

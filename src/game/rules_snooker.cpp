@@ -307,10 +307,19 @@ class Snooker final : public Ruleset {
     la.nominate = targets(s);
   }
 
-  std::optional<std::string> check_shot(const Rules& /*rules*/, const GameState& s,
+  std::optional<std::string> check_shot(const Rules& rules, const GameState& s,
                                         const Shoot& shot) const override {
     const SnookerState& k = part(s);
-    if (shot.call) return "snooker has no called pockets (nominate the ball on with nominate)";
+    if (shot.call) {
+      // Informational only, as in 9-ball: it marks a pot attempt for the
+      // statistics. A valid pocket and a ball on the table; the ball on
+      // is still named by nominate.
+      const Call& call = *shot.call;
+      if (auto why = check_called_pocket(rules, call)) return why;
+      if (call.ball < 1 || call.ball >= kBalls || !on(s, call.ball)) {
+        return "called ball " + std::to_string(call.ball) + " is not on the table";
+      }
+    }
     if (shot.safety) return "snooker has no declared safety";
     if (shot.push_out) return "snooker has no push-out";
     if (shot.nominate) {

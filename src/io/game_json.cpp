@@ -546,7 +546,7 @@ bool GameReader::action(const json& v, const std::string& path, Action& a) {
     if (!call.is_null()) {
       Call c;
       if (!exact_object(call, call_path, {"ball", "pocket"}) ||
-          !integer(call["ball"], member_path(call_path, "ball"), -1, 15, c.ball) ||
+          !integer(call["ball"], member_path(call_path, "ball"), -1, 21, c.ball) ||
           !integer(call["pocket"], member_path(call_path, "pocket"), -1, 5, c.pocket)) {
         return false;
       }
