@@ -348,7 +348,7 @@ class AiPlayer final : public Player {
         return c.kind != ShotKind::safety && c.target >= 0;
       });
       const CandidateShot& c = pot != cands.end() && pot->prior >= kFairPot ? *pot : cands.front();
-      return Evaluated{snooker_call(state, c), shooter_value(c.prior)};
+      return Evaluated{c.shot, shooter_value(c.prior)};
     }
 
     cands = shortlist(std::move(cands), static_cast<std::size_t>(std::max(
@@ -495,24 +495,11 @@ class AiPlayer final : public Player {
     // the statistics), so a safety or kick whose samples mostly pocket
     // one ball in one pocket is called for it, as the pot it is expected
     // to be.
-    Shoot chosen = snooker_call(state, cands[best]);
+    Shoot chosen = cands[best].shot;
     if (nine && !chosen.call) {
       chosen.call = expected_pot(potted[best], count[best]);
     }
     return Evaluated{chosen, value[best]};
-  }
-
-  /// Snooker: a pot is called for the ball and pocket it was planned for
-  /// (information only, as in 9-ball: it marks a pot attempt for the
-  /// statistics; the ball on is named by nominate). Other shots and other
-  /// games as they are.
-  static Shoot snooker_call(const GameState& state, const CandidateShot& c) {
-    Shoot s = c.shot;
-    if (state.game == GameType::snooker && c.kind != ShotKind::safety && c.target > 0 &&
-        c.pocket >= 0 && !s.call) {
-      s.call = Call{c.target, c.pocket};
-    }
-    return s;
   }
 
   /// The candidates worth sampling, from `cands` sorted by prior: the

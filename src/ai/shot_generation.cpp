@@ -913,6 +913,8 @@ class Generator {
     c.pocket = l.pocket;
     c.shot.strike = strike;
     if (la_.must_nominate) c.shot.nominate = l.target;  // snooker: the colour after a red
+    // Called: 8-ball needs it; in 9-ball and snooker it is information
+    // (a pot attempt for the statistics), and the centred aim works on it.
     c.shot.call = Call{l.target, l.pocket};
     if (!la_.call && rules_.check(state_, Action{c.shot})) c.shot.call.reset();
     c.prior = prior;
