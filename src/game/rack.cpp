@@ -156,7 +156,7 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
     // spot beside it. The rules leave the side to the breaker; the two are
     // mirror images, and the seed draws one.
     const CaromMarks m = carom_marks();
-    const Vec2 white = m.starting_spots[draws.below(2)];
+    const Vec2 white = m.starting_spots[static_cast<std::size_t>(draws.below(2))];
     for (const Vec2 p : {white, m.bottom_spot, m.top_spot}) {
       if (wall_clearance(table, p, radius) < 0.0) {
         throw std::invalid_argument("the rack does not fit on the table");
