@@ -18,7 +18,8 @@ set(BREAKSHOT_LAYER_ai_BELOW game physics)
 set(BREAKSHOT_LAYER_io_BELOW game physics)
 
 set(BREAKSHOT_LAYER_physics_HEADERS
-  airborne ball cluster_impact detmath event lab physics pool roots scenario simulation snooker table vec
+  airborne ball carom cluster_impact detmath event lab physics pool roots scenario simulation snooker
+  table vec
   version)
 set(BREAKSHOT_LAYER_game_HEADERS batch game match noise player rack record session)
 set(BREAKSHOT_LAYER_ai_HEADERS ai players pot_map)

@@ -3,10 +3,12 @@
 # must not change behaviour (a refactoring) leaves every output byte for
 # byte as it was. Prints one "sha256  what" line per output:
 #
-#   - `simulate` of every scenario in examples/lab, examples/pool and
-#     examples/snooker, and the three plots of two_balls.json (--plot);
-#   - match summaries and every game record of short matches (8-ball and
-#     9-ball; the baseline and the AI levels), and `replay` of each record;
+#   - `simulate` of every scenario in examples/lab, examples/pool,
+#     examples/snooker and examples/carom, and the three plots of
+#     two_balls.json (--plot);
+#   - match summaries and every game record of short matches (8-ball,
+#     9-ball and snooker; the baseline and the AI levels), and `replay` of
+#     each record;
 #   - the replies of web_api_probe to web/tests/probe_script.json (the
 #     native side of the wasm identity test).
 #
@@ -36,7 +38,7 @@ fi
 sum() { sha256sum "$1" | awk -v what="$2" '{print $1 "  " what}'; }
 
 mkdir -p "$out/simulate"
-for f in examples/lab/*.json examples/pool/*.json examples/snooker/*.json; do
+for f in examples/lab/*.json examples/pool/*.json examples/snooker/*.json examples/carom/*.json; do
   name=$(basename "$(dirname "$f")")-$(basename "$f")
   status=0
   "$cli" simulate "$f" -o "$out/simulate/$name" || status=$?
@@ -54,6 +56,8 @@ matches=(
   "nine_ball baseline,baseline 12 11 2x"
   "eight_ball beginner,amateur 3 5 tournament"
   "nine_ball club,champion 2 3 tournament"
+  "snooker baseline,baseline 2 5 tournament"
+  "snooker baseline,beginner 1 9 tournament"
 )
 i=0
 for m in "${matches[@]}"; do

@@ -204,12 +204,35 @@ TEST_F(Cli, NotJsonExitsTwo) {
   EXPECT_NE(r.err.find("invalid scenario"), std::string::npos) << r.err;
 }
 
-TEST_F(Cli, UnsupportedFeatureExitsOne) {
-  json doc = good_scenario();
-  doc["table"] = {{"shape", "carom"}};
+TEST_F(Cli, CaromBreakRunsToRest) {
+  const json doc = json::parse(R"({
+    "physics": {"model": "pool"},
+    "table": {"shape": "carom"},
+    "rack": {"game": "three_cushion", "seed": 1},
+    "cue": {"ball": "white", "speed": 4.0, "phi": 30.0}
+  })");
   const Run r = run("simulate " + quote(write("carom.json", doc.dump())));
-  EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_NE(r.err.find("not supported yet: table.shape"), std::string::npos) << r.err;
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json out = json::parse(r.out);
+  EXPECT_EQ(out["complete"], true);
+  ASSERT_EQ(out["final"]["balls"].size(), 3u);
+  EXPECT_EQ(out["final"]["balls"][0]["id"], "white");
+  EXPECT_EQ(out["final"]["balls"][1]["id"], "yellow");
+  EXPECT_EQ(out["final"]["balls"][2]["id"], "red");
+  bool cushion = false;
+  for (const json& e : out["events"]) {
+    cushion = cushion || (e["type"] == "ball_cushion" && e["cushion"] == "rail_top");
+  }
+  EXPECT_TRUE(cushion);
+
+  // The carom rack on a pool table is an invalid scenario.
+  json bad = doc;
+  bad["table"] = {{"shape", "pool"}, {"size", "9ft"}};
+  const Run r2 = run("simulate " + quote(write("carom_bad.json", bad.dump())));
+  EXPECT_EQ(r2.status, 2) << r2.err;
+  EXPECT_NE(r2.err.find("rack.game: the three_cushion rack needs the carom table"),
+            std::string::npos)
+      << r2.err;
 }
 
 TEST_F(Cli, PoolBreakRunsToRest) {

@@ -460,6 +460,40 @@ TEST_F(MatchCli, MatchPrintsTheSummary) {
   EXPECT_EQ(read_file(dir_ / "records" / "game-0001.json").config.table_size, "7ft");
 }
 
+TEST_F(MatchCli, ThreeCushionSummaryAndReplay) {
+  const Run r = run("match --game three_cushion --players baseline,baseline --games 2 --seed 5 "
+                    "--noise tournament --target 6 --innings-limit 12 --equalizing-inning off "
+                    "--records " + quote((dir_ / "records").string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["game"], "three_cushion");
+  EXPECT_EQ(j["table_size"], "10ft");
+  EXPECT_EQ(j["carom"], json::parse(R"({"target": 6, "innings_limit": 12,
+                                        "equalizing_inning": false})"));
+  for (const json& p : j["players"]) {
+    ASSERT_TRUE(p.contains("carom")) << r.out;
+    const json& c = p["carom"];
+    EXPECT_LE(c["points"].get<int>(), 12);
+    EXPECT_DOUBLE_EQ(c["general_average"].get<double>(),
+                     p["innings"].get<int>() > 0
+                         ? c["points"].get<double>() / p["innings"].get<double>()
+                         : 0.0);
+    EXPECT_TRUE(p["fouls"].contains("push_through"));
+    EXPECT_FALSE(p["fouls"].contains("scratch"));
+  }
+  const GameRecord rec = read_file(dir_ / "records" / "game-0001.json");
+  EXPECT_EQ(rec.config.carom.target, 6);
+  EXPECT_FALSE(rec.config.carom.equalizing_inning);
+  const Run rep = run("replay " + quote((dir_ / "records" / "game-0002.json").string()));
+  EXPECT_EQ(rep.status, 0) << rep.out << rep.err;
+  EXPECT_NE(rep.out.find("actions: identical"), std::string::npos) << rep.out;
+  // The other games' summaries have no carom part.
+  const Run nine = run("match --game nine_ball --players baseline,baseline --games 1 --seed 5 "
+                       "--noise tournament");
+  ASSERT_EQ(nine.status, 0) << nine.err;
+  EXPECT_EQ(nine.out.find("carom"), std::string::npos);
+}
+
 TEST_F(MatchCli, TimingAddsDecisionTimesOnlyWhenAsked) {
   const std::string args = "match --game nine_ball --players baseline,beginner --games 2 --seed 3 "
                            "--noise tournament";
@@ -542,6 +576,20 @@ TEST_F(MatchCli, BadArgumentsExitTwoNamingTheProblem) {
       {"--game eight_ball --players baseline,baseline --games 0", "--games: "},
       {"--game eight_ball --players baseline,baseline --games many", "--games: "},
       {"--game eight_ball --players baseline,baseline --games 1 --table 10ft", "--table: "},
+      {"--game three_cushion --players baseline,baseline --games 1 --table 9ft",
+       "--table: three_cushion is played on the 10ft carom table"},
+      {"--game three_cushion --players baseline,club --games 1",
+       "--players: player \"club\" does not play three_cushion"},
+      {"--game three_cushion --players baseline,baseline --games 1 --target 0", "--target: "},
+      {"--game three_cushion --players baseline,baseline --games 1 --target x", "--target: "},
+      {"--game three_cushion --players baseline,baseline --games 1 --innings-limit -1",
+       "--innings-limit: "},
+      {"--game three_cushion --players baseline,baseline --games 1 --equalizing-inning yes",
+       "--equalizing-inning: expected on or off"},
+      {"--game nine_ball --players baseline,baseline --games 1 --target 10",
+       "--target: only three_cushion has this option"},
+      {"--game snooker --players baseline,baseline --games 1 --innings-limit 10",
+       "--innings-limit: only three_cushion has this option"},
   };
   for (const Case& c : cases) {
     const Run r = run("match " + base + c.args);

@@ -274,14 +274,6 @@ TEST(PoolInvalid, TableSize) {
   expect_invalid(doc, "table.min", "unknown field");
 }
 
-TEST(PoolInvalid, CaromIsNotSupportedYet) {
-  json doc = pool_base();
-  doc["table"] = {{"shape", "carom"}};
-  const bs::ScenarioError e = read_error(doc);
-  EXPECT_EQ(e.path, "table.shape");
-  EXPECT_TRUE(e.unsupported);
-}
-
 TEST(PoolRead, CushionFields) {
   json doc = pool_base();
   doc["table"]["cushion_restitution"] = 0.7;
@@ -517,8 +509,8 @@ TEST(PoolInvalid, Racks) {
   doc = pool_break();
   doc["rack"]["game"] = "straight_pool";
   expect_invalid(doc, "rack.game",
-                 "unknown game \"straight_pool\" (expected \"eight_ball\", \"nine_ball\" or "
-                 "\"snooker\")");
+                 "unknown game \"straight_pool\" (expected \"eight_ball\", \"nine_ball\", "
+                 "\"snooker\" or \"three_cushion\")");
   doc["rack"].erase("game");
   expect_invalid(doc, "rack.game", "missing required field");
   doc = pool_break();

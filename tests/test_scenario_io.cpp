@@ -543,18 +543,11 @@ TEST(ScenarioInvalid, Models) {
   expect_invalid(doc, "physics.model", "unknown model");
 }
 
-TEST(ScenarioInvalid, UnsupportedFeaturesAreMarked) {
+TEST(ScenarioInvalid, RacksAndShapes) {
   // The pool model, pool tables and racks are supported (test_pool_io.cpp);
-  // so is the snooker table (test_snooker_table.cpp); the carom table is
-  // not yet.
+  // so are the snooker table (test_snooker_table.cpp) and the carom table
+  // (test_carom_table.cpp). A rack is valid, but only on a table of its game.
   json doc = base();
-  doc["table"] = {{"shape", "carom"}};
-  const bs::ScenarioError e = read_error(doc);
-  EXPECT_EQ(e.path, "table.shape");
-  EXPECT_TRUE(e.unsupported);
-
-  // A rack is valid, but only on a pool table.
-  doc = base();
   doc.erase("balls");
   doc["rack"] = {{"game", "eight_ball"}, {"seed", 1}};
   expect_invalid(doc, "rack", "a rack needs a pool table");

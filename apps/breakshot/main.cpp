@@ -2,8 +2,10 @@
 // play matches between computer players; replay game records.
 //
 //   breakshot simulate FILE|- [-o PATH] [--plot PREFIX]
-//   breakshot match --game eight_ball|nine_ball|snooker --players A,B --games N
-//                   --seed S --noise LEVEL [--table 7ft|8ft|9ft|12ft] [--records DIR] [--timing]
+//   breakshot match --game eight_ball|nine_ball|snooker|three_cushion --players A,B --games N
+//                   --seed S --noise LEVEL [--table 7ft|8ft|9ft|12ft|10ft] [--records DIR]
+//                   [--timing]
+//                   [--target N] [--innings-limit N] [--equalizing-inning on|off] (three-cushion)
 //                   [--first-game N] [--cushion-model NAME] [--ball-ball-model NAME]
 //                   [--ball-ball-friction tpa28|tpb3|A,B,C|MU] [--airborne on|off]
 //   breakshot match-sum SUMMARY...
@@ -198,7 +200,7 @@ struct MatchArgs {
   std::string games;
   std::string seed;
   std::string noise;
-  std::string table;  // empty: 9ft, snooker 12ft
+  std::string table;  // empty: 9ft, snooker 12ft, three-cushion 10ft
   std::string records;
   std::string first_game = "0";
   bool timing = false;
@@ -206,6 +208,9 @@ struct MatchArgs {
   std::string ball_ball_model;     // empty: the default
   std::string ball_ball_friction;  // empty: the default
   std::string airborne;            // "on", "off"; empty: the default
+  std::string target;              // three-cushion; empty: the default
+  std::string innings_limit;       // three-cushion; empty: the default
+  std::string equalizing_inning;   // three-cushion: "on", "off"; empty: the default
 };
 
 template <class T>
@@ -296,7 +301,8 @@ bs::MatchOptions match_options(const MatchArgs& a) {
   bs::MatchOptions opt;
   const auto game = bs::parse_game_type(a.game);
   if (!game) {
-    throw BadArgument{"--game: unknown game '" + a.game + "' (eight_ball, nine_ball or snooker)"};
+    throw BadArgument{"--game: unknown game '" + a.game +
+                      "' (eight_ball, nine_ball, snooker or three_cushion)"};
   }
   opt.game = *game;
 
@@ -308,11 +314,7 @@ bs::MatchOptions match_options(const MatchArgs& a) {
   }
   opt.players = {a.players.substr(0, comma), a.players.substr(comma + 1)};
   for (const std::string& name : opt.players) {
-    try {
-      (void)bs::make_player(name);
-    } catch (const std::invalid_argument& e) {
-      throw BadArgument{"--players: " + std::string(e.what())};
-    }
+    if (auto why = bs::check_player(name, opt.game)) throw BadArgument{"--players: " + *why};
   }
 
   if (!parse_whole(a.games, opt.games) || opt.games < 1) {
@@ -341,12 +343,40 @@ bs::MatchOptions match_options(const MatchArgs& a) {
       throw BadArgument{"--table: snooker is played on the 12ft table, not '" + a.table + "'"};
     }
     opt.table_size = "12ft";
+  } else if (opt.game == bs::GameType::three_cushion) {
+    if (!a.table.empty() && a.table != "10ft") {
+      throw BadArgument{"--table: three_cushion is played on the 10ft carom table, not '" +
+                        a.table + "'"};
+    }
+    opt.table_size = "10ft";
   } else {
     const std::string table = a.table.empty() ? "9ft" : a.table;
     if (table != "7ft" && table != "8ft" && table != "9ft") {
       throw BadArgument{"--table: unknown table size '" + table + "' (7ft, 8ft or 9ft)"};
     }
     opt.table_size = table;
+  }
+  const bool carom = opt.game == bs::GameType::three_cushion;
+  for (const auto& [given, option] :
+       {std::pair{&a.target, "--target"}, std::pair{&a.innings_limit, "--innings-limit"},
+        std::pair{&a.equalizing_inning, "--equalizing-inning"}}) {
+    if (!given->empty() && !carom) {
+      throw BadArgument{std::string(option) + ": only three_cushion has this option, not " +
+                        a.game};
+    }
+  }
+  if (!a.target.empty() && (!parse_whole(a.target, opt.carom.target) || opt.carom.target < 1)) {
+    throw BadArgument{"--target: expected a whole number of points >= 1, not '" + a.target + "'"};
+  }
+  if (!a.innings_limit.empty() &&
+      (!parse_whole(a.innings_limit, opt.carom.innings_limit) || opt.carom.innings_limit < 0)) {
+    throw BadArgument{"--innings-limit: expected a whole number >= 0 (0: no limit), not '" +
+                      a.innings_limit + "'"};
+  }
+  if (a.equalizing_inning == "on" || a.equalizing_inning == "off") {
+    opt.carom.equalizing_inning = a.equalizing_inning == "on";
+  } else if (!a.equalizing_inning.empty()) {
+    throw BadArgument{"--equalizing-inning: expected on or off, not '" + a.equalizing_inning + "'"};
   }
   opt.physics = match_physics(a);
   opt.timing = a.timing;
@@ -515,7 +545,7 @@ int main(int argc, char** argv) {
   MatchArgs match_args;
   CLI::App* match = app.add_subcommand(
       "match", "Play games between computer players and print a summary (JSON)");
-  match->add_option("--game", match_args.game, "eight_ball, nine_ball or snooker")
+  match->add_option("--game", match_args.game, "eight_ball, nine_ball, snooker or three_cushion")
       ->type_name("GAME")
       ->required();
   match->add_option("--players", match_args.players,
@@ -534,9 +564,25 @@ int main(int argc, char** argv) {
                     "custom:phi=..,theta=..,speed=..,a=..,b=..")
       ->type_name("LEVEL")
       ->required();
-  match->add_option("--table", match_args.table,
-                    "Table size: 7ft, 8ft or 9ft (default 9ft); snooker: 12ft (the default)")
+  match
+      ->add_option("--table", match_args.table,
+                   "Table size: 7ft, 8ft or 9ft (default 9ft); snooker: 12ft (the default); "
+                   "three_cushion: 10ft (the default, the 2840 x 1420 mm carom table)")
       ->type_name("SIZE");
+  match
+      ->add_option("--target", match_args.target,
+                   "three_cushion: the points that win a game (default 40)")
+      ->type_name("N");
+  match
+      ->add_option("--innings-limit", match_args.innings_limit,
+                   "three_cushion: the game ends after this many innings each, the higher "
+                   "score winning (default 50; 0: no limit)")
+      ->type_name("N");
+  match
+      ->add_option("--equalizing-inning", match_args.equalizing_inning,
+                   "three_cushion: on (default): when the breaker reaches the target, the "
+                   "other player has one more inning; off: the game ends at once")
+      ->type_name("on|off");
   match->add_option("--records", match_args.records,
                     "Write each game's record to DIR/game-0001.json, ... (DIR is created)")
       ->type_name("DIR");

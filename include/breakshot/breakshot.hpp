@@ -5,6 +5,7 @@
 
 // physics: tables, balls, the event-driven simulation, measures
 #include "breakshot/ball.hpp"
+#include "breakshot/carom.hpp"
 #include "breakshot/cluster_impact.hpp"
 #include "breakshot/detmath.hpp"
 #include "breakshot/event.hpp"

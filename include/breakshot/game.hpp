@@ -1,5 +1,5 @@
-// Games: 8-ball and 9-ball by the WPA rules, snooker by the WPBSA rules
-// (docs/rules.md).
+// Games: 8-ball and 9-ball by the WPA rules, snooker by the WPBSA rules,
+// three-cushion billiards by the UMB rules (docs/rules.md).
 //
 // A game is a plain value (GameState) and the rules are a function of it:
 // Rules::apply(state, action) returns the next state, the shot's events
@@ -7,8 +7,9 @@
 // hit, cushion contacts, pockets), so the rules and the physics never
 // disagree. Balls are numbered as on the table: 0 is the cue ball, then
 // 1-15 (8-ball) or 1-9 (9-ball); in snooker 1-15 are the reds and 16-21
-// the yellow, green, brown, blue, pink and black (values 2-7); index =
-// number in every array here.
+// the yellow, green, brown, blue, pink and black (values 2-7); in
+// three-cushion 0 is the white (the breaker's cue ball), 1 the yellow (the
+// other player's) and 2 the red. Index = number in every array here.
 #pragma once
 
 #include <array>
@@ -37,9 +38,9 @@ class Ruleset;
 /// The fastest cue stick a game accepts (m/s); a hard break is about 11.
 inline constexpr double kMaxCueSpeed = 20.0;
 
-enum class GameType : std::uint8_t { eight_ball, nine_ball, snooker };
+enum class GameType : std::uint8_t { eight_ball, nine_ball, snooker, three_cushion };
 std::string_view to_string(GameType g);
-/// "eight_ball", "nine_ball" or "snooker"; nullopt otherwise.
+/// "eight_ball", "nine_ball", "snooker" or "three_cushion"; nullopt otherwise.
 std::optional<GameType> parse_game_type(std::string_view s);
 /// The names of every game the library plays, in GameType order.
 std::vector<std::string> game_type_names();
@@ -83,12 +84,28 @@ inline constexpr GamePhysics kLegacyGamePhysics{CushionModel::han_2005_v0, BallB
 /// when it can.
 std::optional<std::string> check_game_physics(const GamePhysics& physics);
 
+/// Three-cushion's options (GameConfig::carom): how a game ends
+/// (docs/rules.md, "Three-cushion").
+struct CaromRules {
+  /// Points that win the game (the distance), at least 1.
+  int target = 40;
+  /// The game ends when both players have played this many innings (the
+  /// higher score wins; equal scores draw). 0: no limit.
+  int innings_limit = 50;
+  /// When the player who broke reaches the target, the other player has
+  /// one more inning (the equalizing inning); reaching the target in it
+  /// draws the game.
+  bool equalizing_inning = true;
+  bool operator==(const CaromRules&) const = default;
+};
+
 /// Equipment and limits of a game. Everything else is fixed by the rules.
 /// Snooker is played on the "12ft" table with snooker balls
-/// (snooker_config gives them).
+/// (snooker_config gives them), three-cushion on the "10ft" carom table
+/// with carom balls (three_cushion_config).
 struct GameConfig {
   GameType game = GameType::eight_ball;
-  std::string table_size = "9ft";  ///< "7ft", "8ft" or "9ft"; snooker "12ft"
+  std::string table_size = "9ft";  ///< "7ft", "8ft" or "9ft"; snooker "12ft"; three-cushion "10ft"
   double ball_radius = kPoolBallRadius;  ///< m (WPA 2.25 in)
   double ball_mass = kPoolBallMass;      ///< kg
   /// A game still going after this many shots is ended as a draw (the
@@ -97,6 +114,9 @@ struct GameConfig {
   int max_shots = 400;
   /// The physics choices (cushion and ball-ball laws, ball-ball friction).
   GamePhysics physics;
+  /// Three-cushion's target score, innings limit and equalizing inning;
+  /// unused (and left at its defaults) in the other games.
+  CaromRules carom;
   bool operator==(const GameConfig&) const = default;
 };
 
@@ -148,11 +168,11 @@ std::string_view to_string(Choice c);
 std::optional<Choice> parse_choice(std::string_view s);
 
 enum class Foul : std::uint8_t {
-  scratch,           ///< cue ball pocketed
-  no_contact,        ///< the cue ball touched no object ball (a miscue included)
-  wrong_ball_first,  ///< first ball touched not a legal target (8-ball: the 8 on an open table)
-  no_rail,           ///< after contact, nothing pocketed and no ball reached a cushion
-  illegal_break,     ///< nothing pocketed and fewer than four object balls reached a cushion
+  scratch,             ///< cue ball pocketed
+  no_contact,          ///< the cue ball touched no object ball (a miscue included)
+  wrong_ball_first,    ///< first ball touched not a legal target (8-ball: the 8 on an open table)
+  no_rail,             ///< after contact, nothing pocketed and no ball reached a cushion
+  illegal_break,       ///< nothing pocketed and fewer than four object balls reached a cushion
   behind_head_string,  ///< from the kitchen, first contact with a ball behind the head string
   /// a ball left the table: it flew over a rail or landed outside the
   /// table (EventType::ball_off_table; only with GamePhysics::airborne)
@@ -162,6 +182,13 @@ enum class Foul : std::uint8_t {
   /// snooker: after a free ball, the cue ball was left snookered by the
   /// free ball (WPBSA 3.9(c), 3.11(a)(vii))
   free_ball_snooker,
+  /// three-cushion: the shot struck a ball other than the player's own
+  /// cue ball (UMB: playing the wrong ball)
+  wrong_cue_ball,
+  /// three-cushion: the cue ball met an object ball while the tip could
+  /// still be on it (within kCaromTipContact of the strike): a push or a
+  /// double hit (UMB: "pushed through")
+  push_through,
 };
 std::string_view to_string(Foul f);
 std::optional<Foul> parse_foul(std::string_view s);
@@ -195,6 +222,19 @@ struct SnookerState {
   bool operator==(const SnookerState&) const = default;
 };
 
+/// Three-cushion's part of the state (GameState::carom).
+struct CaromState {
+  std::array<int, 2> score{0, 0};
+  /// Points of the inning in progress (the run of `GameState::player`).
+  int run = 0;
+  /// Innings begun by each player (the break is the breaker's first).
+  std::array<int, 2> innings{0, 0};
+  /// The inning in progress is the equalizing inning: the breaker has
+  /// reached the target, and the other player's inning ends the game.
+  bool equalizing = false;
+  bool operator==(const CaromState&) const = default;
+};
+
 /// The state between shots: every ball at rest.
 struct GameState {
   GameType game = GameType::eight_ball;
@@ -220,6 +260,8 @@ struct GameState {
   int racks = 1;                  ///< racks set up in this game (re-racks add one)
   /// Snooker's part; empty in the other games.
   std::optional<SnookerState> snooker;
+  /// Three-cushion's part; empty in the other games.
+  std::optional<CaromState> carom;
 
   bool operator==(const GameState&) const = default;
 };
@@ -250,6 +292,10 @@ struct Shoot {
   /// a free ball (any ball not otherwise on); else optional, and then it
   /// must be a ball on. Never in the other games.
   std::optional<int> nominate;
+  /// Three-cushion: the ball the cue strikes. Absent: the player's own cue
+  /// ball (Rules::cue_ball). Another ball is played, and is a foul
+  /// (Foul::wrong_cue_ball). Never in the other games.
+  std::optional<int> cue_ball;
   bool operator==(const Shoot&) const = default;
 };
 
@@ -303,6 +349,21 @@ struct SnookerRuling {
   bool operator==(const SnookerRuling&) const = default;
 };
 
+/// Three-cushion's part of a shot's ruling (Ruling::carom), read from the
+/// events of the ball struck.
+struct CaromRuling {
+  bool point = false;  ///< the shot scored (no foul, both balls, three cushions first)
+  int cue_ball = 0;    ///< the ball struck
+  /// The object balls the struck ball touched, in the order of their first
+  /// contact (0, 1 or 2 of them).
+  std::vector<int> hit;
+  /// Cushions the struck ball touched before its first contact with the
+  /// second object ball; all its cushions when it touched fewer than two.
+  int cushions = 0;
+  bool kiss = false;  ///< the object balls touched each other
+  bool operator==(const CaromRuling&) const = default;
+};
+
 struct Ruling {
   std::vector<Foul> fouls;       ///< empty: no foul
   bool legal_break = true;       ///< break shots only
@@ -316,6 +377,8 @@ struct Ruling {
   bool call_made = false;
   /// Snooker's part of a shot's ruling; empty otherwise.
   std::optional<SnookerRuling> snooker;
+  /// Three-cushion's part of a shot's ruling; empty otherwise.
+  std::optional<CaromRuling> carom;
   bool operator==(const Ruling&) const = default;
 };
 
@@ -355,6 +418,18 @@ int snooker_points_remaining(const GameState& state);
 /// player that is not 0 or 1.
 int snookers_required(const GameState& state, int player);
 
+/// Three-cushion: the gap (m) up to which balls at rest count as touching
+/// (they are then re-spotted before the next shot, docs/rules.md).
+inline constexpr double kCaromTouching = 1e-4;
+/// Three-cushion: how long the cue tip stays on the ball (s): a cue ball
+/// that meets an object ball sooner after the strike was pushed
+/// (Foul::push_through). Alciatore gives about 1 ms for the tip's contact.
+inline constexpr double kCaromTipContact = 1e-3;
+
+/// Three-cushion: the 10 ft carom table, carom balls and CaromRules'
+/// defaults; the other fields GameConfig's defaults.
+GameConfig three_cushion_config();
+
 /// The rules of one game type on one table. Immutable once built; all
 /// functions are pure functions of their arguments.
 class Rules {
@@ -365,8 +440,13 @@ class Rules {
 
   const GameConfig& config() const { return config_; }
   const Table& table() const { return table_; }
-  /// Number of balls including the cue ball: 16, 10 or (snooker) 22.
+  /// Number of balls including the cue ball: 16, 10, (snooker) 22 or
+  /// (three-cushion) 3.
   int ball_count() const;
+  /// The ball the player to act strikes: 0 but in three-cushion, where it
+  /// is the white (0) for the player who broke and the yellow (1) for the
+  /// other.
+  int cue_ball(const GameState& state) const;
   /// x of the head string: the kitchen is x <= head_string().
   double head_string() const;
 
@@ -400,12 +480,17 @@ class Rules {
   Outcome apply_events(const GameState& state, const Shoot& shot, std::vector<Event> events,
                        const std::vector<Vec2>& rest, bool miscue = false) const;
 
-  /// The physics of a shot from `state` (balls on the table only, the cue
-  /// ball first), and each scenario ball's number.
+  /// The physics of a shot from `state` (balls on the table only, in
+  /// number order), the strike on cue_ball(state), and each scenario
+  /// ball's number.
   Scenario shot_scenario(const GameState& state, const CueStrike& strike,
                          std::vector<int>* numbers = nullptr) const;
-  /// The facts of a shot from its events (ball fields as ball numbers).
-  ShotFacts facts(const std::vector<Event>& events) const;
+  /// The same with the strike on ball number `cue` (on the table).
+  Scenario shot_scenario(const GameState& state, const CueStrike& strike, int cue,
+                         std::vector<int>* numbers) const;
+  /// The facts of a shot from its events (ball fields as ball numbers),
+  /// `cue` being the ball struck.
+  ShotFacts facts(const std::vector<Event>& events, int cue = 0) const;
 
   /// Lowest legal spot for `ball` on the long string, from the foot spot
   /// toward the foot rail, then toward the head (WPA spotting). Snooker:

@@ -38,10 +38,13 @@ GameRecord play_game(const Rules& rules, Player& p0, Player& p1, int breaker,
 struct MatchOptions {
   GameType game = GameType::eight_ball;
   /// "7ft", "8ft" or "9ft"; snooker "12ft" (with snooker balls:
-  /// snooker_config).
+  /// snooker_config); three-cushion "10ft" (three_cushion_config).
   std::string table_size = "9ft";
   /// The physics the games are played with (GameConfig::physics).
   GamePhysics physics;
+  /// Three-cushion's target, innings limit and equalizing inning
+  /// (GameConfig::carom); left at its defaults in the other games.
+  CaromRules carom;
   std::array<std::string, 2> players;  ///< the seats' names (players.hpp: make_player)
   int games = 1;
   /// The index of the first game played: a match of `games` games plays
@@ -104,6 +107,16 @@ struct SnookerStats {
   bool operator==(const SnookerStats&) const = default;
 };
 
+/// A three-cushion player's figures over a match (PlayerStats::carom). A
+/// run is the points of one inning.
+struct CaromStats {
+  int points = 0;       ///< points scored, summed over the games
+  int highest_run = 0;  ///< the most points of one inning
+  /// The innings that scored at least one point.
+  int scoring_innings = 0;
+  bool operator==(const CaromStats&) const = default;
+};
+
 /// One player's figures over a match. Everything counts only the
 /// player's own actions.
 struct PlayerStats {
@@ -145,6 +158,11 @@ struct PlayerStats {
   double pot_rate() const;
   /// Snooker's figures; empty in the other games.
   std::optional<SnookerStats> snooker;
+  /// Three-cushion's figures; empty in the other games.
+  std::optional<CaromStats> carom;
+  /// Three-cushion: carom->points / innings, the general average (0
+  /// without innings or outside three-cushion).
+  double general_average() const;
 };
 
 /// Games first .. first + count - 1 of a match.
@@ -160,6 +178,7 @@ struct MatchSummary {
   std::uint64_t seed = 0;
   NoiseModel noise;  ///< the match's noise (MatchOptions::noise)
   GamePhysics physics;  ///< MatchOptions::physics
+  CaromRules carom;     ///< MatchOptions::carom
   /// The games the summary covers, by index: ascending, disjoint and
   /// never adjacent (adjacent ranges are one range). play_match sets one
   /// range (first_game, games); add_summary joins two summaries' ranges.
@@ -167,7 +186,9 @@ struct MatchSummary {
   /// not know its index).
   std::vector<GameRange> ranges;
   int games_played = 0;
-  int draws = 0;  ///< games ended by the stalemate clause
+  /// Games without a winner: ended by the stalemate clause or, in
+  /// three-cushion, drawn (docs/rules.md).
+  int draws = 0;
   std::array<PlayerStats, 2> players;
 };
 
@@ -186,15 +207,16 @@ void add_game(MatchSummary& summary, const GameRecord& record);
 
 /// Adds `part`, the summary of other games of the same match, into
 /// `into`: every count (games, draws, each player's wins, breaks,
-/// innings, shots, balls, pot attempts and pots made, fouls by kind) is
+/// innings, shots, balls, pot attempts and pots made, fouls by kind, the
+/// snooker and three-cushion figures) is
 /// summed, decision times are appended, and the game ranges are joined.
 /// The rates (balls_per_inning, pot_rate) are derived from the summed
 /// counts, so adding the summaries of chunks that cover games 0 .. N-1,
 /// in any grouping and any order, gives the summary of one match of N
 /// games, equal in every field. Throws std::invalid_argument naming the
 /// field (nothing added) when the two are not of the same match (game,
-/// table_size, physics, seed, noise, a player's name or noise, the foul kinds) or
-/// when their games overlap.
+/// table_size, physics, the three-cushion options, seed, noise, a player's name or noise, the foul
+/// kinds) or when their games overlap.
 void add_summary(MatchSummary& into, const MatchSummary& part);
 
 /// Where a match sends each finished game's record: game g (from 0) and

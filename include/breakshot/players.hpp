@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,15 @@ std::unique_ptr<Player> make_player(std::string_view name);
 /// The names make_player knows: "baseline", then the AI levels.
 std::vector<std::string> player_names();
 
+/// The names of the players that play `game`: every player, but only
+/// "baseline" in three_cushion (the AI levels refuse it with
+/// std::invalid_argument).
+std::vector<std::string> player_names(GameType game);
+
+/// Why the player `name` cannot play `game` (an unknown name, or a player
+/// that does not play that game), naming the game; nullopt when it can.
+std::optional<std::string> check_player(std::string_view name, GameType game);
+
 /// empty_summary (match.hpp) for the players named in options.players,
 /// with each one's own noise (make_player(name)->noise(), else
 /// options.noise). Throws std::invalid_argument for an unknown name.
@@ -32,7 +42,8 @@ MatchSummary empty_summary(const MatchOptions& options);
 
 /// play_match (match.hpp) between make_player(options.players[0]) and
 /// make_player(options.players[1]). Throws std::invalid_argument for an
-/// unknown player name or bad options.
+/// unknown player name, a player that does not play the game
+/// (check_player) or bad options.
 MatchSummary play_match(const MatchOptions& options, const RecordSink& sink = {});
 
 }  // namespace breakshot

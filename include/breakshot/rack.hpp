@@ -11,12 +11,14 @@
 namespace breakshot {
 
 struct RackedBall {
-  std::string id;  ///< "1" ... "15"; snooker "red1" ... "red15", "yellow" ... "black"
+  std::string id;  ///< "1" ... "15"; snooker "red1" ... "red15", "yellow" ... "black";
+                   ///< three-cushion "white", "yellow", "red"
   Vec2 position;
 };
 
-/// The balls of `game` ("eight_ball", "nine_ball" or "snooker") racked on
-/// a pool table (eight_ball, nine_ball) or the snooker table (snooker):
+/// The balls of `game` ("eight_ball", "nine_ball", "snooker" or
+/// "three_cushion") racked on a pool table (eight_ball, nine_ball), the
+/// snooker table (snooker) or the carom table (three_cushion):
 /// balls frozen with the tiny random gaps (from `seed`) that real racks
 /// have, never overlapping. 8-ball: apex ball on the foot spot, rows
 /// toward the foot rail, 15 balls, the 8 in the middle of the third row, a
@@ -26,8 +28,12 @@ struct RackedBall {
 /// behind the pink spot (kSnookerPyramidGap away), rows toward the top
 /// cushion, then the six colours on their spots; listed red1 (the apex),
 /// red2 ... red15 row by row (toward +y within a row), yellow, green,
-/// brown, blue, pink, black. Throws std::invalid_argument for an unknown
-/// game or a rack on the wrong table.
+/// brown, blue, pink, black. Three-cushion: UMB's starting position, the
+/// red on the top spot, the yellow (the opponent's ball) on the bottom
+/// spot and the white (the breaker's) on the starting spot the seed draws
+/// (CaromMarks::starting_spots), exactly on the spots; listed white,
+/// yellow, red. Throws std::invalid_argument for an unknown game or a rack
+/// on the wrong table.
 std::vector<RackedBall> make_rack(const std::string& game, const Table& table, double radius,
                                   std::uint64_t seed);
 
@@ -44,7 +50,10 @@ Vec2 snooker_break_off_spot();
 /// snooker_break_off_spot(), then red1 ... red15 and the colours as
 /// make_rack lists them, and a level centre-ball strike that takes a
 /// quarter of red11 (the yellow-side end of the back row) on its outer
-/// side. Throws std::invalid_argument for an unknown game or size.
+/// side. For "three_cushion" (size "10ft"): the carom table and balls,
+/// white, yellow and red as make_rack lists them, and a level centre-ball
+/// strike of the white straight at the red. Throws std::invalid_argument
+/// for an unknown game or size.
 Scenario make_break_scenario(const std::string& game, const std::string& size,
                              std::uint64_t seed, double cue_speed);
 

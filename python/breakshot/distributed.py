@@ -198,6 +198,13 @@ def _check_names(game, names, table) -> None:
     if game == "snooker":
         if table != "12ft":
             raise ValueError(f"table: unknown table size {table!r} (snooker: 12ft)")
+    elif game == "three_cushion":
+        if table != "10ft":
+            raise ValueError(f"table: unknown table size {table!r} (three_cushion: 10ft)")
+        for name in names:
+            if name != "baseline":
+                raise ValueError(f"players: player {name!r} does not play three_cushion "
+                                 "(players of three_cushion: baseline)")
     else:
         _core.pool_table(table)  # ValueError naming an unknown table size
 
@@ -286,7 +293,8 @@ def match_json(client, game: str, players: Sequence[str], games: int, seed: int 
     if not all(isinstance(n, str) for n in names):
         raise ValueError("players: expected two player names")
     if table is None:
-        table = "12ft" if game == "snooker" else "9ft"  # the game's table, as breakshot match
+        # the game's table, as breakshot match
+        table = {"snooker": "12ft", "three_cushion": "10ft"}.get(game, "9ft")
     _check_names(game, names, table)
     check_workers(client)
     expected = identity()
@@ -619,7 +627,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     m.add_argument("--games", type=int, required=True)
     m.add_argument("--seed", type=int, required=True)
     m.add_argument("--noise", required=True)
-    m.add_argument("--table", default=None, help="the table size (default: the game's, 9ft or snooker's 12ft)")
+    m.add_argument("--table", default=None, help="the table size (default: the game's, 9ft, snooker's 12ft or three_cushion's 10ft)")
     m.add_argument("--records", help="write each game's record to DIR/game-NNNN.json")
     m.add_argument("--first-game", type=int, default=0)
     m.add_argument("--chunk", type=int, default=None, help="games per task")

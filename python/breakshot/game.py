@@ -58,8 +58,10 @@ class Shot:
     9-ball. ``safety`` declares an 8-ball safety, ``push_out`` a 9-ball
     push-out. ``nominate`` (snooker only) is the ball number nominated as
     the ball on: required after a red (a colour, 16 yellow ... 21 black,
-    see ``LegalActions.must_nominate``) and to take a free ball. JSON type
-    ``"shoot"``.
+    see ``LegalActions.must_nominate``) and to take a free ball.
+    ``cue_ball`` (three-cushion only) names the ball the cue strikes; None
+    strikes the player's own (another ball is played, and is a foul). JSON
+    type ``"shoot"``.
     """
 
     phi: float
@@ -71,6 +73,7 @@ class Shot:
     safety: bool = False
     push_out: bool = False
     nominate: Optional[int] = None
+    cue_ball: Optional[int] = None
 
     def __post_init__(self):
         if self.call is not None and not isinstance(self.call, Call):
@@ -88,6 +91,8 @@ class Shot:
             "push_out": bool(self.push_out),
             # snooker only, and only when given (the records' form)
             **({} if self.nominate is None else {"nominate": int(self.nominate)}),
+            # three-cushion only, and only when given
+            **({} if self.cue_ball is None else {"cue_ball": int(self.cue_ball)}),
         }
 
 
@@ -133,7 +138,7 @@ def action_from_dict(d: dict) -> Action:
         raise ValueError(f"action: expected a dict, not {type(d).__name__}")
     t = d.get("type")
     if t == "shoot":
-        _only(d, {"type", "strike", "call", "safety", "push_out", "nominate"})
+        _only(d, {"type", "strike", "call", "safety", "push_out", "nominate", "cue_ball"})
         s = d.get("strike")
         if not isinstance(s, dict):
             raise ValueError("action.strike: expected a dict with speed, phi, theta, a, b")
@@ -148,7 +153,7 @@ def action_from_dict(d: dict) -> Action:
         return Shot(phi=s["phi"], theta=s.get("theta", 0.0), speed=s["speed"],
                     a=s.get("a", 0.0), b=s.get("b", 0.0), call=call,
                     safety=d.get("safety", False), push_out=d.get("push_out", False),
-                    nominate=d.get("nominate"))
+                    nominate=d.get("nominate"), cue_ball=d.get("cue_ball"))
     if t == "place_cue_ball":
         _only(d, {"type", "position"})
         p = d.get("position")
@@ -216,6 +221,12 @@ class State:
     restores, or None); ``snooker_figures`` what the table leaves:
     ``balls_on``, ``points_remaining`` and ``snookers_required`` (by seat).
     Both are None in the other games.
+
+    Three-cushion (balls 0 the white, the breaker's cue ball, 1 the yellow,
+    the other player's, 2 the red): ``carom`` is the records' carom part,
+    a dict with ``score`` (by seat), ``run`` (the points of the inning in
+    progress), ``innings`` (begun by each seat) and ``equalizing`` (the
+    inning in progress is the equalizing inning); None in the other games.
     """
 
     game: str
@@ -240,6 +251,7 @@ class State:
     targets: Tuple[int, ...] = ()
     snooker: Optional[dict] = field(default=None, hash=False)
     snooker_figures: Optional[dict] = field(default=None, hash=False)
+    carom: Optional[dict] = field(default=None, hash=False)
 
     @classmethod
     def from_dict(cls, d: dict, targets: Sequence[int] = (),
@@ -255,7 +267,7 @@ class State:
             shots=d["shots"], innings=d["innings"], rack_seed=int(d["rack_seed"]),
             racks=d["racks"], position=tuple((p[0], p[1]) for p in d["position"]),
             on_table=tuple(bool(f) for f in d["on_table"]), targets=tuple(targets),
-            snooker=d.get("snooker"), snooker_figures=snooker_figures)
+            snooker=d.get("snooker"), snooker_figures=snooker_figures, carom=d.get("carom"))
 
     def to_dict(self) -> dict:
         """The records' JSON form (rack_seed as a decimal string, on_table as 0/1)."""
@@ -273,11 +285,15 @@ class State:
         }
         if self.snooker is not None:
             d["snooker"] = self.snooker
+        if self.carom is not None:
+            d["carom"] = self.carom
         return d
 
     @property
     def score(self) -> Optional[Tuple[int, int]]:
-        """Snooker: the score by seat; None in the other games."""
+        """Snooker and three-cushion: the score by seat; None in the other games."""
+        if self.carom is not None:
+            return tuple(self.carom["score"])
         return None if self.snooker is None else tuple(self.snooker["score"])
 
     @property
@@ -426,9 +442,10 @@ class Game:
     ``Game(game="eight_ball", table=None, seed=0, breaker=0,
     players=("Player 1", "Player 2"), noise="none", max_shots=None)``.
     ``game`` is one of :func:`games` (``"eight_ball"``, ``"nine_ball"``,
-    ``"snooker"``); ``table`` the table size: ``"7ft"``, ``"8ft"`` or
-    ``"9ft"`` (None: ``"9ft"``), in snooker ``"12ft"`` (None: that one,
-    with snooker balls); ``seed`` (0 to 2^64 - 1) gives the
+    ``"snooker"``, ``"three_cushion"``); ``table`` the table size: ``"7ft"``,
+    ``"8ft"`` or ``"9ft"`` (None: ``"9ft"``), in snooker ``"12ft"`` (None:
+    that one, with snooker balls), in three-cushion ``"10ft"`` (None: that
+    one, the carom table with carom balls; only the ``"baseline"`` plays it); ``seed`` (0 to 2^64 - 1) gives the
     rack and the noise of every action, so the same seed and the same
     actions give the same game; ``breaker`` (0 or 1) breaks. ``players``
     are the seats' names in the record, or :class:`Player` objects (their
@@ -531,7 +548,9 @@ class Game:
         the pockets (name, centre, radius) in the index order calls use;
         in snooker also ``snooker``: the markings (``baulk_line``, the x of
         the baulk line; ``d_centre`` and ``d_radius``, the D; ``spots``, the
-        six colour spots by colour)."""
+        six colour spots by colour); in three-cushion also ``carom``: the
+        markings (``top_spot``, ``centre_spot``, ``bottom_spot``, the two
+        ``starting_spots`` and the ``diamonds`` on the cushion lines)."""
         return self._g.table()
 
     @property
@@ -756,8 +775,8 @@ def mix_seed(a: int, b: int) -> int:
 
 def _default_table(game) -> str:
     """The table a game is played on when none is named: snooker's 12 ft
-    table, else the 9 ft pool table."""
-    return "12ft" if game == "snooker" else "9ft"
+    table, three-cushion's 10 ft carom table, else the 9 ft pool table."""
+    return {"snooker": "12ft", "three_cushion": "10ft"}.get(game, "9ft")
 
 
 def _physics(physics: Optional[dict]) -> Optional[str]:

@@ -32,6 +32,7 @@
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/session.hpp"
 #include "breakshot/simulation.hpp"
+#include "breakshot/carom.hpp"
 #include "breakshot/snooker.hpp"
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
@@ -42,11 +43,17 @@ namespace {
 
 using json_io::ojson;
 
-/// A table size of `game`: "7ft", "8ft" or "9ft"; snooker "12ft".
+/// A table size of `game`: "7ft", "8ft" or "9ft"; snooker "12ft";
+/// three-cushion "10ft".
 void check_table(GameType game, const std::string& table) {
   if (game == GameType::snooker) {
     if (table != "12ft") {
       throw std::invalid_argument("table: unknown table size '" + table + "' (snooker: 12ft)");
+    }
+  } else if (game == GameType::three_cushion) {
+    if (table != "10ft") {
+      throw std::invalid_argument("table: unknown table size '" + table +
+                                  "' (three_cushion: 10ft)");
     }
   } else if (table != "7ft" && table != "8ft" && table != "9ft") {
     throw std::invalid_argument("table: unknown table size '" + table + "' (7ft, 8ft or 9ft)");
@@ -334,6 +341,20 @@ class GameCore {
       k["spots"] = spots;
       d["snooker"] = k;
     }
+    if (rules.config().game == GameType::three_cushion) {
+      // The markings (carom.hpp's CaromMarks).
+      const CaromMarks m = carom_marks();
+      const auto xy = [](Vec2 v) { return py::make_tuple(v.x, v.y); };
+      py::dict k;
+      k["top_spot"] = xy(m.top_spot);
+      k["centre_spot"] = xy(m.centre_spot);
+      k["bottom_spot"] = xy(m.bottom_spot);
+      k["starting_spots"] = py::make_tuple(xy(m.starting_spots[0]), xy(m.starting_spots[1]));
+      py::list diamonds;
+      for (const Vec2 p : m.diamonds) diamonds.append(xy(p));
+      k["diamonds"] = diamonds;
+      d["carom"] = k;
+    }
     return d;
   }
 
@@ -353,8 +374,11 @@ class GameCore {
   static GameConfig config(const std::string& game, const std::string& table, int max_shots,
                            const std::optional<std::string>& physics) {
     const GameType g = game_arg(game);
-    // Snooker: the 12 ft table and snooker balls.
-    GameConfig c = g == GameType::snooker ? snooker_config() : GameConfig{};
+    // Snooker: the 12 ft table and snooker balls; three-cushion: the carom
+    // table and balls.
+    GameConfig c = g == GameType::snooker         ? snooker_config()
+                   : g == GameType::three_cushion ? three_cushion_config()
+                                                  : GameConfig{};
     c.physics = physics_arg(physics);
     c.game = g;
     check_table(g, table);
@@ -458,6 +482,9 @@ MatchOptions match_options(const std::string& game, const std::array<std::string
   opt.noise = noise_arg(noise, "noise");
   check_table(opt.game, table);
   opt.table_size = table;
+  for (const std::string& name : players) {
+    if (auto why = check_player(name, opt.game)) throw std::invalid_argument("players: " + *why);
+  }
   return opt;
 }
 
@@ -572,7 +599,8 @@ std::string determinism_hash() {
 
 void bind_game(py::module_& m) {
   m.def("game_names", &game_type_names, "The games the library plays (GameType names).");
-  m.def("player_names", &player_names, "The computer players: 'baseline', then the AI levels.");
+  m.def("player_names", static_cast<std::vector<std::string> (*)()>(&player_names),
+        "The computer players: 'baseline', then the AI levels.");
   m.def("mix_seed", &mix_seed, py::arg("a"), py::arg("b"),
         "SplitMix64 seed mixing (noise.hpp): game g of a match has seed mix_seed(seed, g).");
   m.def("player_seed", &GameSeeds::player, py::arg("game_seed"), py::arg("action"),

@@ -150,18 +150,23 @@ def test_not_json_text(run_cli, tmp_path):
     assert r.stderr == f"breakshot: {info.value}\n"
 
 
-def test_unsupported_feature(run_cli, tmp_path):
+def test_carom_table(run_cli, tmp_path):
+    # The carom table with its default (carom) balls: the bytes of the command.
     d = good()
     d["table"] = {"shape": "carom"}
+    d["balls"][0]["position"] = [0.5, 0.7]
+    d["balls"][1]["position"] = [1.5, 0.7]
     f = tmp_path / "carom.json"
     f.write_text(json.dumps(d))
     r = run_cli("simulate", f)
-    assert r.returncode == 1
+    assert r.returncode == 0, r.stderr
+    assert breakshot.simulate(d).to_json() == r.stdout
+    # A ball off the carom table is an invalid scenario, as everywhere.
+    d["balls"][0]["position"] = [-0.5, 0.0]
     with pytest.raises(breakshot.ScenarioError) as info:
         breakshot.simulate(d)
-    assert info.value.unsupported
-    assert info.value.path == "table.shape"
-    assert r.stderr == f"breakshot: {info.value}\n"
+    assert not info.value.unsupported
+    assert info.value.path == "balls[0].position"
 
 
 def test_dict_that_is_not_json():

@@ -231,6 +231,10 @@ class AiPlayer final : public Player {
   std::optional<NoiseModel> noise() const override { return level_.noise; }
 
   Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) override {
+    if (state.game == GameType::three_cushion) {
+      throw std::invalid_argument("the " + level_.name +
+                                  " level does not play three_cushion (only the baseline does)");
+    }
     Budget budget(level_.simulation_budget, level_.time_budget);
     const LegalActions la = rules.legal_actions(state);
     if (state.game == GameType::snooker) return snooker_action(rules, state, la, seed, budget);

@@ -47,6 +47,9 @@
 // With the cue ball in hand it places it in the D as for a pot. After a
 // foul it plays on; it concedes the frame when it needs snookers.
 //
+// Three-cushion: one-ball-first system shots from the mirror
+// construction, refined on the engine (baseline_carom.cpp).
+//
 // Everything is deterministic: no randomness is used at all, so the seed
 // is ignored.
 #include <algorithm>
@@ -60,6 +63,7 @@
 #include <string_view>
 #include <vector>
 
+#include "baseline_carom.hpp"
 #include "breakshot/ai.hpp"
 #include "breakshot/detmath.hpp"
 #include "breakshot/game.hpp"
@@ -562,6 +566,7 @@ class BaselinePlayer final : public Player {
   Action decide(const Rules& rules, const GameState& state, std::uint64_t /*seed*/) override {
     const LegalActions la = rules.legal_actions(state);
     if (state.game == GameType::snooker) return snooker(rules, state, la);
+    if (state.game == GameType::three_cushion) return ai::three_cushion_shot(rules, state);
     if (!la.choices.empty()) return Decide{choose(rules, state, la)};
     if (state.phase == Phase::break_shot) return break_action(rules, state, la);
     if (la.place != BallInHand::none) {

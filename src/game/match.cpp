@@ -53,6 +53,9 @@ const GameState& state_before(const GameRecord& record, std::size_t i) {
 /// before and off after, and those the ruling spotted (they were on the
 /// table before the shot, so they fell during it).
 int pocketed_by_shot(const GameState& before, const RecordedAction& ra) {
+  // Three-cushion has no pockets: the balls its rulings spot again left
+  // the table or touched another ball.
+  if (before.game == GameType::three_cushion) return 0;
   int n = 0;
   for (std::size_t b = 1; b < before.on_table.size() && b < ra.after.on_table.size(); ++b) {
     if (before.on_table[b] && !ra.after.on_table[b]) ++n;
@@ -104,6 +107,35 @@ void add_snooker(MatchSummary& summary, const GameRecord& record, const GameStat
   close();
 }
 
+/// Three-cushion's figures of a finished game (PlayerStats::carom): the
+/// points, and the runs of its innings (an inning ends with a shot after
+/// which the turn does not continue, or with the game).
+void add_carom(MatchSummary& summary, const GameRecord& record, const GameState& end) {
+  std::array<CaromStats*, 2> st{&*summary.players[0].carom, &*summary.players[1].carom};
+  if (end.carom) {
+    for (std::size_t p = 0; p < 2; ++p) st[p]->points += end.carom->score[p];
+  }
+  int run = 0;
+  int shooter = -1;
+  const auto close = [&] {
+    if (shooter >= 0 && run > 0) {
+      CaromStats& c = *st[static_cast<std::size_t>(shooter)];
+      c.scoring_innings += 1;
+      c.highest_run = std::max(c.highest_run, run);
+    }
+    run = 0;
+    shooter = -1;
+  };
+  for (const RecordedAction& ra : record.actions) {
+    if (!std::holds_alternative<Shoot>(ra.action) || !ra.ruling.carom) continue;
+    if (shooter != ra.player) close();
+    shooter = ra.player;
+    if (ra.ruling.carom->point) run += 1;
+    if (!ra.ruling.turn_continues || ra.after.phase == Phase::game_over) close();
+  }
+  close();
+}
+
 /// The noise `p`'s shots are played with: its own, else the match's.
 NoiseModel effective_noise(const Player& p, const NoiseModel& match_noise) {
   return p.noise().value_or(match_noise);
@@ -117,6 +149,7 @@ MatchSummary empty_summary_with(const MatchOptions& options,
   s.game = options.game;
   s.table_size = options.table_size;
   s.physics = options.physics;
+  s.carom = options.carom;
   s.seed = options.seed;
   s.noise = options.noise;
   for (std::size_t p = 0; p < 2; ++p) {
@@ -125,15 +158,19 @@ MatchSummary empty_summary_with(const MatchOptions& options,
     // Every foul kind of the game, so that a summary lists them all, 0 included.
     for (const Foul f : fouls) s.players[p].fouls[std::string(to_string(f))] = 0;
     if (options.game == GameType::snooker) s.players[p].snooker = SnookerStats{};
+    if (options.game == GameType::three_cushion) s.players[p].carom = CaromStats{};
   }
   return s;
 }
 
 GameConfig config_of(const MatchOptions& options) {
-  GameConfig config = options.game == GameType::snooker ? snooker_config() : GameConfig{};
+  GameConfig config = options.game == GameType::snooker         ? snooker_config()
+                      : options.game == GameType::three_cushion ? three_cushion_config()
+                                                                : GameConfig{};
   config.game = options.game;
   config.table_size = options.table_size;
   config.physics = options.physics;
+  if (options.game == GameType::three_cushion) config.carom = options.carom;
   return config;
 }
 
@@ -208,6 +245,11 @@ double SnookerStats::mean_break() const {
              : 0.0;
 }
 
+double PlayerStats::general_average() const {
+  return carom && innings > 0 ? static_cast<double>(carom->points) / static_cast<double>(innings)
+                              : 0.0;
+}
+
 double PlayerStats::balls_per_inning() const {
   return innings > 0 ? static_cast<double>(balls_pocketed) / static_cast<double>(innings) : 0.0;
 }
@@ -260,6 +302,7 @@ void add_game(MatchSummary& summary, const GameRecord& record) {
   }
 
   if (summary.players[0].snooker && summary.players[1].snooker) add_snooker(summary, record, end);
+  if (summary.players[0].carom && summary.players[1].carom) add_carom(summary, record, end);
 
   if (end.winner >= 0 && any_break && record.actions[last_break].player == end.winner) {
     bool opponent_shot = false;
@@ -334,6 +377,11 @@ void add_summary(MatchSummary& into, const MatchSummary& part) {
     throw std::invalid_argument(
         "physics: the summaries are of different matches (played with different physics)");
   }
+  if (!(into.carom == part.carom)) {
+    throw std::invalid_argument(
+        "carom: the summaries are of different matches (another target, innings limit or "
+        "equalizing inning)");
+  }
   same("seed", std::to_string(into.seed), std::to_string(part.seed));
   same("noise", to_string(into.noise), to_string(part.noise));
   for (std::size_t p = 0; p < 2; ++p) {
@@ -384,6 +432,13 @@ void add_summary(MatchSummary& into, const MatchSummary& part) {
       add(a.break_points, b.break_points, "snooker.break_points");
       add(a.foul_points_given, b.foul_points_given, "snooker.foul_points_given");
       add(a.misses, b.misses, "snooker.misses");
+    }
+    if (to.carom && from.carom) {
+      CaromStats& a = *to.carom;
+      const CaromStats& b = *from.carom;
+      add(a.points, b.points, "carom.points");
+      a.highest_run = std::max(a.highest_run, b.highest_run);
+      add(a.scoring_innings, b.scoring_innings, "carom.scoring_innings");
     }
     to.decision_seconds.insert(to.decision_seconds.end(), from.decision_seconds.begin(),
                                from.decision_seconds.end());

@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "breakshot/carom.hpp"
 #include "breakshot/detmath.hpp"
 #include "breakshot/snooker.hpp"
 
@@ -142,8 +143,29 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
   // balls[i] is the number of the ball on lattice spot i.
   std::vector<Vec2> spots;
   std::vector<int> balls;
-  if ((game == "eight_ball" || game == "nine_ball") && table.shape == "snooker") {
+  if ((game == "eight_ball" || game == "nine_ball") &&
+      (table.shape == "snooker" || table.shape == "carom")) {
     throw std::invalid_argument("the " + game + " rack needs a pool table");
+  }
+  if (game == "three_cushion") {
+    if (table.shape != "carom") {
+      throw std::invalid_argument("the three_cushion rack needs the carom table");
+    }
+    // UMB's starting position: the red on the top spot, the opponent's
+    // ball (yellow) on the bottom spot, the breaker's (white) on a starting
+    // spot beside it. The rules leave the side to the breaker; the two are
+    // mirror images, and the seed draws one.
+    const CaromMarks m = carom_marks();
+    const Vec2 white = m.starting_spots[static_cast<std::size_t>(draws.below(2))];
+    for (const Vec2 p : {white, m.bottom_spot, m.top_spot}) {
+      if (wall_clearance(table, p, radius) < 0.0) {
+        throw std::invalid_argument("the rack does not fit on the table");
+      }
+    }
+    if (norm(white - m.bottom_spot) < 2.0 * radius) {
+      throw std::invalid_argument("the balls are too large for the starting spots");
+    }
+    return {{"white", white}, {"yellow", m.bottom_spot}, {"red", m.top_spot}};
   }
   if (game == "eight_ball") {
     // Rows of 1-2-3-4-5. Spot 4 is the middle of the third row, spots 10
@@ -184,8 +206,9 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
     }
     return snooker_rack(table, radius, draws);
   } else {
-    throw std::invalid_argument("unknown game \"" + game +
-                                "\" (expected \"eight_ball\", \"nine_ball\" or \"snooker\")");
+    throw std::invalid_argument(
+        "unknown game \"" + game +
+        "\" (expected \"eight_ball\", \"nine_ball\", \"snooker\" or \"three_cushion\")");
   }
 
   for (std::size_t i = 1; i < spots.size(); ++i) spots[i] += draws.in_disk() * kJitter;
@@ -256,11 +279,48 @@ Scenario snooker_break_scenario(const std::string& size, std::uint64_t seed, dou
   return s;
 }
 
+/// The three-cushion break: the UMB starting position from `seed` on the
+/// carom table, carom balls, and a level centre-ball strike of the white
+/// straight at the red (the break must hit the red first).
+Scenario three_cushion_break_scenario(const std::string& size, std::uint64_t seed,
+                                      double cue_speed) {
+  if (size != "10ft") {
+    throw std::invalid_argument("unknown carom table size \"" + size +
+                                "\" (expected \"10ft\", the 2840 x 1420 mm match table)");
+  }
+  constexpr double kRadius = kCaromBallRadius;
+  constexpr double kMass = kCaromBallMass;
+  Scenario s;
+  s.physics = default_physics(Model::pool);
+  s.physics.ball_clusters = true;  // as every game's shots
+  s.table = make_carom_table();
+  const double e = CushionParams{}.restitution;
+  Vec2 white;
+  Vec2 red;
+  for (const RackedBall& b : make_rack("three_cushion", s.table, kRadius, seed)) {
+    BallState st;
+    st.position = b.position;
+    if (b.id == "white") white = b.position;
+    if (b.id == "red") red = b.position;
+    s.balls.push_back({b.id, kRadius, kMass, e});
+    s.start.push_back(st);
+  }
+  const Vec2 d = red - white;
+  CueSpec strike_spec;
+  strike_spec.ball = 0;
+  strike_spec.strike.speed = cue_speed;
+  strike_spec.strike.phi = dm::atan2(d.y, d.x) * (180.0 / 3.14159265358979323846);
+  s.cue = strike_spec;
+  s.until.rest = true;
+  return s;
+}
+
 }  // namespace
 
 Scenario make_break_scenario(const std::string& game, const std::string& size,
                              std::uint64_t seed, double cue_speed) {
   if (game == "snooker") return snooker_break_scenario(size, seed, cue_speed);
+  if (game == "three_cushion") return three_cushion_break_scenario(size, seed, cue_speed);
   constexpr double kRadius = kPoolBallRadius;
   constexpr double kMass = kPoolBallMass;
   Scenario s;

@@ -4,6 +4,7 @@
 // rules_eight.cpp and rules_nine.cpp; docs/rules.md lists the clauses.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -122,6 +123,8 @@ std::shared_ptr<const detail::Ruleset> make_ruleset(GameType game) {
       return detail::make_nine_ball_ruleset();
     case GameType::snooker:
       return detail::make_snooker_ruleset();
+    case GameType::three_cushion:
+      return detail::make_three_cushion_ruleset();
   }
   throw std::invalid_argument("unknown game type");
 }
@@ -159,6 +162,20 @@ Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_rule
     throw std::invalid_argument("snooker is played on the \"12ft\" table, not \"" +
                                 config_.table_size + "\"");
   }
+  if (config_.game == GameType::three_cushion) {
+    if (config_.table_size != "10ft") {
+      throw std::invalid_argument("three_cushion is played on the \"10ft\" carom table, not \"" +
+                                  config_.table_size + "\"");
+    }
+    if (config_.carom.target < 1) {
+      throw std::invalid_argument("carom.target must be at least 1 point, not " +
+                                  std::to_string(config_.carom.target));
+    }
+    if (config_.carom.innings_limit < 0) {
+      throw std::invalid_argument("carom.innings_limit must be 0 (none) or more, not " +
+                                  std::to_string(config_.carom.innings_limit));
+    }
+  }
   base_ = make_break_scenario(std::string(to_string(config_.game)), config_.table_size, 0, 1.0);
   table_ = base_.table;
   if (4.0 * config_.ball_radius >= table_.width) {
@@ -184,13 +201,17 @@ Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_rule
   base_.cue.reset();
   base_.balls.clear();
   base_.start.clear();
+  static constexpr const char* kCaromIds[] = {"white", "yellow", "red"};
+  const bool carom = config_.game == GameType::three_cushion;
   for (int n = 0; n < ball_count(); ++n) {
-    base_.balls.push_back(
-        {n == 0 ? "cue" : std::to_string(n), config_.ball_radius, config_.ball_mass, e});
+    const std::string id = carom ? kCaromIds[n] : n == 0 ? "cue" : std::to_string(n);
+    base_.balls.push_back({id, config_.ball_radius, config_.ball_mass, e});
   }
 }
 
 int Rules::ball_count() const { return ruleset_->ball_count(); }
+
+int Rules::cue_ball(const GameState& s) const { return ruleset_->cue_ball(s); }
 
 std::vector<Foul> Rules::foul_kinds() const {
   std::vector<Foul> kinds = ruleset_->foul_kinds();
@@ -294,6 +315,16 @@ std::optional<std::string> Rules::check(const GameState& s, const Action& action
     return "a decision is due (phase " + std::string(to_string(s.phase)) + "), not a shot";
   }
   if (!s.on_table[0]) return "the cue ball is in hand: place it first";
+  if (shot.cue_ball) {
+    if (config_.game != GameType::three_cushion) {
+      return "only three-cushion shots name the ball they strike (cue_ball)";
+    }
+    const int b = *shot.cue_ball;
+    if (b < 0 || b >= ball_count() || !s.on_table[static_cast<std::size_t>(b)]) {
+      return "cue_ball " + std::to_string(b) + " is not a ball on the table (0-" +
+             std::to_string(ball_count() - 1) + ")";
+    }
+  }
   const CueStrike& c = shot.strike;
   if (!std::isfinite(c.speed) || c.speed <= 0.0 || c.speed > kMaxCueSpeed) {
     return "strike speed must be in (0, 20] m/s";
@@ -313,41 +344,50 @@ std::optional<std::string> Rules::check(const GameState& s, const Action& action
 
 Scenario Rules::shot_scenario(const GameState& s, const CueStrike& strike,
                               std::vector<int>* numbers) const {
+  return shot_scenario(s, strike, cue_ball(s), numbers);
+}
+
+Scenario Rules::shot_scenario(const GameState& s, const CueStrike& strike, int cue_number,
+                              std::vector<int>* numbers) const {
   Scenario sc;
   sc.physics = base_.physics;
   sc.table = table_;
   sc.until.rest = true;
   if (numbers) numbers->clear();
+  std::int32_t cue_index = 0;
   for (std::size_t b = 0; b < s.on_table.size(); ++b) {
     if (!s.on_table[b]) continue;
+    if (static_cast<int>(b) == cue_number) cue_index = static_cast<std::int32_t>(sc.balls.size());
     sc.balls.push_back(base_.balls[b]);
     BallState st;
     st.position = s.position[b];
     sc.start.push_back(st);
     if (numbers) numbers->push_back(static_cast<int>(b));
   }
+  // A cue ball off the table (in hand) leaves the strike on the first
+  // ball, as it always has: the caller places it first.
   CueSpec cue;
-  cue.ball = 0;
+  cue.ball = cue_index;
   cue.strike = strike;
   sc.cue = cue;
   return sc;
 }
 
-ShotFacts Rules::facts(const std::vector<Event>& events) const {
+ShotFacts Rules::facts(const std::vector<Event>& events, int cue) const {
   ShotFacts f;
   double contact_time = -1.0;
   std::vector<int> to_cushion;
   for (const Event& e : events) {
     switch (e.type) {
       case EventType::ball_ball:
-        if (f.first_hit < 0 && (e.ball == 0 || e.other == 0)) {
-          f.first_hit = e.ball == 0 ? e.other : e.ball;
+        if (f.first_hit < 0 && (e.ball == cue || e.other == cue)) {
+          f.first_hit = e.ball == cue ? e.other : e.ball;
           contact_time = e.time;
         }
         break;
       case EventType::ball_cushion:
         if (f.first_hit >= 0 && e.time >= contact_time) f.cushion_after_contact = true;
-        if (e.ball != 0 && !has(to_cushion, e.ball)) to_cushion.push_back(e.ball);
+        if (e.ball != cue && !has(to_cushion, e.ball)) to_cushion.push_back(e.ball);
         break;
       case EventType::ball_pocket:
         f.pocketed.push_back(e.ball);
@@ -425,7 +465,8 @@ Outcome Rules::apply(const GameState& state, const Action& action) const {
   // A shot: simulate it and read what happened.
   const Shoot& shot = std::get<Shoot>(action);
   std::vector<int> numbers;
-  Simulation sim(shot_scenario(state, shot.strike, &numbers));
+  const int cue = shot.cue_ball.value_or(cue_ball(state));
+  Simulation sim(shot_scenario(state, shot.strike, cue, &numbers));
   sim.advance_to_rest();
   if (!sim.at_rest()) {
     throw std::logic_error("the shot did not come to rest within the event limit");
@@ -435,7 +476,7 @@ Outcome Rules::apply(const GameState& state, const Action& action) const {
     if (e.ball >= 0) e.ball = numbers[static_cast<std::size_t>(e.ball)];
     if (e.other >= 0) e.other = numbers[static_cast<std::size_t>(e.other)];
   }
-  out.facts = facts(out.events);
+  out.facts = facts(out.events, cue);
   out.facts.miscue = sim.cue_result() && sim.cue_result()->miscue;
   for (std::size_t k = 0; k < numbers.size(); ++k) {
     const auto b = static_cast<std::size_t>(numbers[k]);
@@ -470,7 +511,7 @@ Outcome Rules::apply_events(const GameState& state, const Shoot& shot, std::vect
   out.state = state;
   GameState& s = out.state;
   out.events = std::move(events);
-  out.facts = facts(out.events);
+  out.facts = facts(out.events, shot.cue_ball.value_or(cue_ball(state)));
   out.facts.miscue = miscue;
   for (std::size_t b = 0; b < s.on_table.size(); ++b) {
     if (!s.on_table[b]) continue;

@@ -18,7 +18,8 @@ std::optional<E> parse(std::string_view s, const std::array<std::string_view, N>
   return std::nullopt;
 }
 
-constexpr std::array<std::string_view, 3> kGameNames{"eight_ball", "nine_ball", "snooker"};
+constexpr std::array<std::string_view, 4> kGameNames{"eight_ball", "nine_ball", "snooker",
+                                                     "three_cushion"};
 constexpr std::array<std::string_view, 3> kGroupNames{"none", "solids", "stripes"};
 constexpr std::array<std::string_view, 7> kPhaseNames{
     "break_shot", "shot", "push_out_choice", "illegal_break_choice", "eight_on_break_choice",
@@ -27,10 +28,10 @@ constexpr std::array<std::string_view, 4> kBallInHandNames{"none", "kitchen", "a
 constexpr std::array<std::string_view, 10> kChoiceNames{
     "shoot",   "pass_back",      "accept_table",  "rerack_and_break", "rerack_opponent_breaks",
     "respot_eight", "play_on", "offender_again", "replace_balls", "concede"};
-constexpr std::array<std::string_view, 10> kFoulNames{
-    "scratch",        "no_contact",         "wrong_ball_first", "no_rail",
-    "illegal_break",  "behind_head_string", "ball_off_table",   "in_off",
-    "wrong_ball_potted", "free_ball_snooker"};
+constexpr std::array<std::string_view, 12> kFoulNames{
+    "scratch",           "no_contact",         "wrong_ball_first", "no_rail",
+    "illegal_break",     "behind_head_string", "ball_off_table",   "in_off",
+    "wrong_ball_potted", "free_ball_snooker",  "wrong_cue_ball",   "push_through"};
 
 }  // namespace
 

@@ -6,7 +6,7 @@
 // (placing the cue ball, simulating a shot, reading its facts, spotting,
 // the stalemate limit) is written once in rules.cpp; what one game decides
 // is a Ruleset, one file a game (rules_eight.cpp, rules_nine.cpp,
-// rules_snooker.cpp). A new game is a new Ruleset and an entry in
+// rules_snooker.cpp, rules_carom.cpp). A new game is a new Ruleset and an entry in
 // make_ruleset.
 #pragma once
 
@@ -86,6 +86,8 @@ class Ruleset {
   virtual ~Ruleset() = default;
   /// Balls including the cue ball.
   virtual int ball_count() const = 0;
+  /// The ball the player to act strikes (Rules::cue_ball).
+  virtual int cue_ball(const GameState& /*s*/) const { return 0; }
   /// The foul kinds this game knows, in the order summaries list them.
   virtual std::vector<Foul> foul_kinds() const = 0;
   /// Balls the shooter may legally hit first.
@@ -139,5 +141,6 @@ std::vector<Foul> pool_foul_kinds();
 std::shared_ptr<const Ruleset> make_eight_ball_ruleset();
 std::shared_ptr<const Ruleset> make_nine_ball_ruleset();
 std::shared_ptr<const Ruleset> make_snooker_ruleset();
+std::shared_ptr<const Ruleset> make_three_cushion_ruleset();
 
 }  // namespace breakshot::detail

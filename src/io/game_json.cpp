@@ -12,7 +12,8 @@ namespace breakshot::json_io {
 namespace {
 
 // Every value of each enum, for the messages that list them.
-constexpr GameType kGameTypes[] = {GameType::eight_ball, GameType::nine_ball, GameType::snooker};
+constexpr GameType kGameTypes[] = {GameType::eight_ball, GameType::nine_ball, GameType::snooker,
+                                   GameType::three_cushion};
 constexpr Phase kPhases[] = {Phase::break_shot,           Phase::shot,
                              Phase::push_out_choice,      Phase::illegal_break_choice,
                              Phase::eight_on_break_choice, Phase::game_over,
@@ -30,13 +31,23 @@ constexpr Choice kChoices[] = {Choice::shoot,
                                Choice::offender_again,
                                Choice::replace_balls,
                                Choice::concede};
-constexpr Foul kFouls[] = {Foul::scratch,       Foul::no_contact,    Foul::wrong_ball_first,
-                           Foul::no_rail,       Foul::illegal_break, Foul::behind_head_string,
-                           Foul::ball_off_table, Foul::in_off,       Foul::wrong_ball_potted,
-                           Foul::free_ball_snooker};
+constexpr Foul kFouls[] = {Foul::scratch,           Foul::no_contact,     Foul::wrong_ball_first,
+                           Foul::no_rail,           Foul::illegal_break,  Foul::behind_head_string,
+                           Foul::ball_off_table,    Foul::in_off,         Foul::wrong_ball_potted,
+                           Foul::free_ball_snooker, Foul::wrong_cue_ball, Foul::push_through};
 
 /// The highest ball number of a game (a bound for the numbers a record names).
-int last_ball(GameType g) { return g == GameType::snooker ? 21 : 15; }
+int last_ball(GameType g) {
+  return g == GameType::snooker ? 21 : g == GameType::three_cushion ? 2 : 15;
+}
+
+/// The game named by the "game" member of `v`, if it names one.
+std::optional<GameType> game_of(const nlohmann::json& v) {
+  if (!v.is_object()) return std::nullopt;
+  const auto it = v.find("game");
+  if (it == v.end() || !it->is_string()) return std::nullopt;
+  return parse_game_type(it->get_ref<const std::string&>());
+}
 
 ojson positions_json(const std::vector<Vec2>& position);
 ojson flags_json(const std::vector<std::uint8_t>& on_table);
@@ -61,7 +72,7 @@ ojson strike_json(const CueStrike& s) {
 }
 
 ojson config_json(const GameConfig& c) {
-  const auto& [game, table_size, ball_radius, ball_mass, max_shots, physics] = c;
+  const auto& [game, table_size, ball_radius, ball_mass, max_shots, physics, carom] = c;
   // The physics is not part of this object (physics_json): the config
   // keeps the form version 1 records and the web facade give it.
   (void)physics;
@@ -71,6 +82,15 @@ ojson config_json(const GameConfig& c) {
   j["ball_radius"] = ball_radius;
   j["ball_mass"] = ball_mass;
   j["max_shots"] = max_shots;
+  // Three-cushion's options, only in three-cushion: the other games'
+  // configs keep their bytes.
+  if (game == GameType::three_cushion) {
+    ojson k = ojson::object();
+    k["target"] = carom.target;
+    k["innings_limit"] = carom.innings_limit;
+    k["equalizing_inning"] = carom.equalizing_inning;
+    j["carom"] = std::move(k);
+  }
   return j;
 }
 
@@ -149,9 +169,9 @@ ojson snooker_state_json(const SnookerState& k) {
 ojson state_json(const GameState& s) {
   // Structured bindings name every member: when GameState gains or loses
   // one, this stops compiling instead of writing records that miss it.
-  const auto& [game, position, on_table, phase, player, breaker, ball_in_hand, kitchen_shot,
-               group, fouls_in_a_row, push_out_allowed, after_push_out, scratch_on_break,
-               winner, result, shots, innings, rack_seed, racks, snooker] = s;
+  const auto& [game, position, on_table, phase, player, breaker, ball_in_hand, kitchen_shot, group,
+               fouls_in_a_row, push_out_allowed, after_push_out, scratch_on_break, winner, result,
+               shots, innings, rack_seed, racks, snooker, carom] = s;
   ojson j = ojson::object();
   j["game"] = to_string(game);
   j["phase"] = to_string(phase);
@@ -174,12 +194,22 @@ ojson state_json(const GameState& s) {
   j["on_table"] = flags_json(on_table);
   // Snooker's part, only in snooker: the other games' states keep their bytes.
   if (snooker) j["snooker"] = snooker_state_json(*snooker);
+  // Three-cushion's part, only in three-cushion.
+  if (carom) {
+    const auto& [score, run, carom_innings, equalizing] = *carom;
+    ojson k = ojson::object();
+    k["score"] = ojson::array({score[0], score[1]});
+    k["run"] = run;
+    k["innings"] = ojson::array({carom_innings[0], carom_innings[1]});
+    k["equalizing"] = equalizing;
+    j["carom"] = std::move(k);
+  }
   return j;
 }
 
 ojson ruling_json(const Ruling& r) {
   const auto& [fouls, legal_break, turn_continues, assigned, spotted, winner, text, call_made,
-               snooker] = r;
+               snooker, carom] = r;
   ojson j = ojson::object();
   ojson names = ojson::array();
   for (const Foul f : fouls) names.push_back(to_string(f));
@@ -202,6 +232,17 @@ ojson ruling_json(const Ruling& r) {
     k["nominated"] = nominated;
     j["snooker"] = std::move(k);
   }
+  if (carom) {
+    // Three-cushion's part, only in three-cushion shot rulings.
+    const auto& [point, cue_ball, hit, cushions, kiss] = *carom;
+    ojson k = ojson::object();
+    k["point"] = point;
+    k["cue_ball"] = cue_ball;
+    k["hit"] = hit;
+    k["cushions"] = cushions;
+    k["kiss"] = kiss;
+    j["carom"] = std::move(k);
+  }
   return j;
 }
 
@@ -211,7 +252,7 @@ ojson action_json(const Action& a) {
     j["type"] = "place_cue_ball";
     j["position"] = vec2_json(place->position);
   } else if (const auto* shoot = std::get_if<Shoot>(&a)) {
-    const auto& [strike, call, safety, push_out, nominate] = *shoot;
+    const auto& [strike, call, safety, push_out, nominate, cue_ball] = *shoot;
     j["type"] = "shoot";
     j["strike"] = strike_json(strike);
     if (call) {
@@ -225,6 +266,7 @@ ojson action_json(const Action& a) {
     j["safety"] = safety;
     j["push_out"] = push_out;
     if (nominate) j["nominate"] = *nominate;  // snooker only
+    if (cue_ball) j["cue_ball"] = *cue_ball;  // three-cushion only
   } else {
     j["type"] = "decide";
     j["choice"] = to_string(std::get<Decide>(a).choice);
@@ -237,18 +279,35 @@ ojson action_json(const Action& a) {
 // Decoding
 
 bool GameReader::config(const json& v, const std::string& path, GameConfig& c) {
-  if (!exact_object(v, path, {"game", "table_size", "ball_radius", "ball_mass", "max_shots"})) {
+  // Three-cushion's configs have a "carom" object, the other games' none.
+  const bool carom = game_of(v) == GameType::three_cushion;
+  if (carom ? !exact_object(
+                  v, path, {"game", "table_size", "ball_radius", "ball_mass", "max_shots", "carom"})
+            : !exact_object(v, path,
+                            {"game", "table_size", "ball_radius", "ball_mass", "max_shots"})) {
     return false;
   }
   const auto at = [&](std::string_view key) { return member_path(path, key); };
   if (!game_type(v["game"], at("game"), c.game)) return false;
   game_context = c.game;
-  return table_size(v["table_size"], at("table_size"), c.table_size) &&
-         number(v["ball_radius"], at("ball_radius"), c.ball_radius) &&
-         positive(c.ball_radius, at("ball_radius")) &&
-         number(v["ball_mass"], at("ball_mass"), c.ball_mass) &&
-         positive(c.ball_mass, at("ball_mass")) &&
-         integer(v["max_shots"], at("max_shots"), 0, INT_MAX, c.max_shots);
+  if (!(table_size(v["table_size"], at("table_size"), c.table_size) &&
+        number(v["ball_radius"], at("ball_radius"), c.ball_radius) &&
+        positive(c.ball_radius, at("ball_radius")) &&
+        number(v["ball_mass"], at("ball_mass"), c.ball_mass) &&
+        positive(c.ball_mass, at("ball_mass")) &&
+        integer(v["max_shots"], at("max_shots"), 0, INT_MAX, c.max_shots))) {
+    return false;
+  }
+  c.carom = CaromRules{};
+  if (!carom) return true;
+  const json& k = v["carom"];
+  const std::string kp = at("carom");
+  return exact_object(k, kp, {"target", "innings_limit", "equalizing_inning"}) &&
+         integer(k["target"], member_path(kp, "target"), 1, INT_MAX, c.carom.target) &&
+         integer(k["innings_limit"], member_path(kp, "innings_limit"), 0, INT_MAX,
+                 c.carom.innings_limit) &&
+         boolean(k["equalizing_inning"], member_path(kp, "equalizing_inning"),
+                 c.carom.equalizing_inning);
 }
 
 bool GameReader::physics(const json& v, const std::string& path, GamePhysics& p) {
@@ -320,22 +379,33 @@ bool GameReader::strike(const json& v, const std::string& path, CueStrike& s) {
 }
 
 bool GameReader::state(const json& v, const std::string& path, GameState& s) {
-  // Snooker's states have a "snooker" object, the other games' none.
-  const json* game_field = v.is_object() ? find(v, "game") : nullptr;
-  const bool snooker =
-      game_field != nullptr && game_field->is_string() && game_field->get<std::string>() == "snooker";
-  if (snooker ? !exact_object(v, path,
-                              {"game", "phase", "player", "breaker", "ball_in_hand",
-                               "kitchen_shot", "group", "fouls_in_a_row", "push_out_allowed",
-                               "after_push_out", "scratch_on_break", "winner", "result", "shots",
-                               "innings", "rack_seed", "racks", "position", "on_table", "snooker"})
-              : !exact_object(v, path,
-                              {"game", "phase", "player", "breaker", "ball_in_hand",
-                               "kitchen_shot", "group", "fouls_in_a_row", "push_out_allowed",
-                               "after_push_out", "scratch_on_break", "winner", "result", "shots",
-                               "innings", "rack_seed", "racks", "position", "on_table"})) {
-    return false;
-  }
+  // Snooker's states have a "snooker" object, three-cushion's a "carom"
+  // one, the other games' neither.
+  const std::optional<GameType> g = game_of(v);
+  const bool snooker = g == GameType::snooker;
+  const bool carom = g == GameType::three_cushion;
+  std::vector<std::string_view> keys{"game",
+                                     "phase",
+                                     "player",
+                                     "breaker",
+                                     "ball_in_hand",
+                                     "kitchen_shot",
+                                     "group",
+                                     "fouls_in_a_row",
+                                     "push_out_allowed",
+                                     "after_push_out",
+                                     "scratch_on_break",
+                                     "winner",
+                                     "result",
+                                     "shots",
+                                     "innings",
+                                     "rack_seed",
+                                     "racks",
+                                     "position",
+                                     "on_table"};
+  if (snooker) keys.push_back("snooker");
+  if (carom) keys.push_back("carom");
+  if (!exact_object(v, path, keys)) return false;
   const auto at = [&](std::string_view key) { return member_path(path, key); };
   if (!game_type(v["game"], at("game"), s.game) ||
       !name(v["phase"], at("phase"), "phase", parse_phase, kPhases, s.phase) ||
@@ -391,6 +461,29 @@ bool GameReader::state(const json& v, const std::string& path, GameState& s) {
     SnookerState k;
     if (!snooker_state(v["snooker"], at("snooker"), k)) return false;
     s.snooker = std::move(k);
+  }
+  s.carom.reset();
+  if (carom) {
+    const json& k = v["carom"];
+    const std::string kp = at("carom");
+    CaromState cs;
+    if (!exact_object(k, kp, {"score", "run", "innings", "equalizing"})) return false;
+    const json& score = k["score"];
+    const json& inn = k["innings"];
+    if (!array(score, member_path(kp, "score"), 2) || !array(inn, member_path(kp, "innings"), 2)) {
+      return false;
+    }
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (!integer(score[i], index_path(member_path(kp, "score"), i), 0, INT_MAX, cs.score[i]) ||
+          !integer(inn[i], index_path(member_path(kp, "innings"), i), 0, INT_MAX, cs.innings[i])) {
+        return false;
+      }
+    }
+    if (!integer(k["run"], member_path(kp, "run"), 0, INT_MAX, cs.run) ||
+        !boolean(k["equalizing"], member_path(kp, "equalizing"), cs.equalizing)) {
+      return false;
+    }
+    s.carom = cs;
   }
   return true;
 }
@@ -458,14 +551,15 @@ bool GameReader::ruling(const json& v, const std::string& path, Ruling& r) {
   if (snooker && game_context && *game_context != GameType::snooker) {
     return fail(member_path(path, "snooker"), "only snooker rulings have this field");
   }
-  if (snooker ? !exact_object(v, path,
-                              {"fouls", "legal_break", "turn_continues", "assigned", "spotted",
-                               "winner", "text", "call_made", "snooker"})
-              : !exact_object(v, path,
-                              {"fouls", "legal_break", "turn_continues", "assigned", "spotted",
-                               "winner", "text", "call_made"})) {
-    return false;
+  const bool carom = v.is_object() && find(v, "carom") != nullptr;
+  if (carom && game_context && *game_context != GameType::three_cushion) {
+    return fail(member_path(path, "carom"), "only three-cushion rulings have this field");
   }
+  std::vector<std::string_view> keys{"fouls",   "legal_break", "turn_continues", "assigned",
+                                     "spotted", "winner",      "text",           "call_made"};
+  if (snooker) keys.push_back("snooker");
+  if (carom) keys.push_back("carom");
+  if (!exact_object(v, path, keys)) return false;
   const auto at = [&](std::string_view key) { return member_path(path, key); };
   const json& fouls = v["fouls"];
   if (!array(fouls, at("fouls"))) return false;
@@ -495,6 +589,27 @@ bool GameReader::ruling(const json& v, const std::string& path, Ruling& r) {
     return false;
   }
   r.snooker.reset();
+  r.carom.reset();
+  if (carom) {
+    const json& k = v["carom"];
+    const std::string kp = at("carom");
+    CaromRuling cr;
+    if (!exact_object(k, kp, {"point", "cue_ball", "hit", "cushions", "kiss"}) ||
+        !boolean(k["point"], member_path(kp, "point"), cr.point) ||
+        !integer(k["cue_ball"], member_path(kp, "cue_ball"), 0, 2, cr.cue_ball) ||
+        !integer(k["cushions"], member_path(kp, "cushions"), 0, INT_MAX, cr.cushions) ||
+        !boolean(k["kiss"], member_path(kp, "kiss"), cr.kiss)) {
+      return false;
+    }
+    const json& hit = k["hit"];
+    if (!array(hit, member_path(kp, "hit"))) return false;
+    if (hit.size() > 2) return fail(member_path(kp, "hit"), "at most two object balls");
+    cr.hit.resize(hit.size());
+    for (std::size_t i = 0; i < hit.size(); ++i) {
+      if (!integer(hit[i], index_path(member_path(kp, "hit"), i), 0, 2, cr.hit[i])) return false;
+    }
+    r.carom = std::move(cr);
+  }
   if (!snooker) return true;
   const json& k = v["snooker"];
   const std::string kp = at("snooker");
@@ -530,11 +645,18 @@ bool GameReader::action(const json& v, const std::string& path, Action& a) {
   if (t == "shoot") {
     Shoot shoot;
     const bool nominates = find(v, "nominate") != nullptr;
-    if (!(nominates ? exact_object(v, path, {"type", "strike", "call", "safety", "push_out",
-                                             "nominate"})
-                    : exact_object(v, path, {"type", "strike", "call", "safety", "push_out"})) ||
+    const bool names_cue = find(v, "cue_ball") != nullptr;
+    std::vector<std::string_view> keys{"type", "strike", "call", "safety", "push_out"};
+    if (nominates) keys.push_back("nominate");
+    if (names_cue) keys.push_back("cue_ball");
+    if (!exact_object(v, path, keys) ||
         !strike(v["strike"], member_path(path, "strike"), shoot.strike)) {
       return false;
+    }
+    if (names_cue) {
+      int ball = 0;
+      if (!integer(v["cue_ball"], member_path(path, "cue_ball"), 0, 2, ball)) return false;
+      shoot.cue_ball = ball;
     }
     if (nominates) {
       int ball = 0;
@@ -576,8 +698,12 @@ bool GameReader::game_type(const json& v, const std::string& path, GameType& out
 }
 
 bool GameReader::table_size(const json& v, const std::string& path, std::string& out) {
-  // Snooker's table is the 12 ft one; the pool games' are the others.
+  // Snooker's table is the 12 ft one, three-cushion's the 10 ft carom
+  // table; the pool games' are the others.
   if (game_context == GameType::snooker) return text_of(v, path, "table size", {"12ft"}, out);
+  if (game_context == GameType::three_cushion) {
+    return text_of(v, path, "table size", {"10ft"}, out);
+  }
   return text_of(v, path, "table size", {"7ft", "8ft", "9ft"}, out);
 }
 

@@ -2,7 +2,9 @@
 // records (record_json.cpp) and by the web facade (web/api).
 // Internal: not installed.
 //
-//   GameConfig  {"game", "table_size", "ball_radius", "ball_mass", "max_shots"}
+//   GameConfig  {"game", "table_size", "ball_radius", "ball_mass", "max_shots",
+//                three-cushion only: "carom": {"target", "innings_limit",
+//                "equalizing_inning"}}
 //               (its physics is an object of its own, GamePhysics)
 //   GamePhysics {"cushion_model", "ball_ball_model",
 //                "ball_ball_friction": {"a", "b", "c"} | number}
@@ -13,24 +15,30 @@
 //                "after_push_out", "scratch_on_break", "winner", "result", "shots",
 //                "innings", "rack_seed": "DECIMAL", "racks",
 //                "position": [[x, y] by ball number], "on_table": [0 or 1 by ball number],
-//                snooker only: "snooker": SNOOKER}
+//                snooker only: "snooker": SNOOKER,
+//                three-cushion only: "carom": {"score": [2], "run", "innings": [2],
+//                "equalizing"}}
 //   SNOOKER     {"score": [2], "break", "colour_on", "free_ball", "respotted_black",
 //                "misses", "replace": null | {"position", "on_table", "colour_on",
 //                "free_ball"}}
 //   Ruling      {"fouls": [names], "legal_break", "turn_continues", "assigned",
 //                "spotted": [ball numbers], "winner", "text", "call_made",
 //                a snooker shot's only: "snooker": {"points", "penalty", "miss",
-//                "free_ball", "nominated"}}
+//                "free_ball", "nominated"},
+//                a three-cushion shot's only: "carom": {"point", "cue_ball",
+//                "hit": [balls], "cushions", "kiss"}}
 //   Action      {"type": "place_cue_ball", "position": [x, y]}
 //               {"type": "shoot", "strike": CueStrike, "call": null | {"ball", "pocket"},
-//                "safety", "push_out", snooker only and when given: "nominate"}
+//                "safety", "push_out", snooker only and when given: "nominate",
+//                three-cushion only and when given: "cue_ball"}
 //               {"type": "decide", "choice"}
 //
 // Every field is always written (null for an empty optional) and always
-// required on reading, but snooker's, which the other games never have
-// (so that their records keep their bytes): "snooker" in a snooker state
-// is required, in a shot's ruling written, "nominate" written when the
-// shot nominates. Enum values are the names of game.hpp's
+// required on reading, but snooker's and three-cushion's, which the other
+// games never have (so that their records keep their bytes): "snooker" in
+// a snooker state and "carom" in a three-cushion state and config are
+// required, in a shot's ruling written, "nominate" and "cue_ball" written
+// when the shot gives them. Enum values are the names of game.hpp's
 // to_string. Seeds are decimal strings (64-bit integers do not survive
 // readers that keep numbers in doubles). The encoders give
 // nlohmann::ordered_json trees, which keep their keys in the order
@@ -83,10 +91,10 @@ class GameReader : public Reader {
   bool ruling(const json& v, const std::string& path, Ruling& r);
   bool action(const json& v, const std::string& path, Action& a);
 
-  /// A game name: "eight_ball", "nine_ball" or "snooker".
+  /// A game name: "eight_ball", "nine_ball", "snooker" or "three_cushion".
   bool game_type(const json& v, const std::string& path, GameType& out);
   /// A table size: "7ft", "8ft" or "9ft"; "12ft" when game_context is
-  /// snooker.
+  /// snooker, "10ft" when it is three_cushion.
   bool table_size(const json& v, const std::string& path, std::string& out);
   /// A choice name (Decide).
   bool choice(const json& v, const std::string& path, Choice& out);

@@ -288,6 +288,25 @@ bool Reader::exact_object(const json& v, const std::string& path,
   return true;
 }
 
+bool Reader::exact_object(const json& v, const std::string& path,
+                          const std::vector<std::string_view>& names) {
+  if (!require_object(v, path)) return false;
+  for (const auto& [key, value] : v.items()) {
+    if (!free_key_.empty() && key == free_key_) continue;
+    if (std::find(names.begin(), names.end(), key) != names.end()) continue;
+    std::string list;
+    for (std::string_view k : names) {
+      if (!list.empty()) list += ", ";
+      list += k;
+    }
+    return fail(member_path(path, key), "unknown field (known: " + list + ")");
+  }
+  for (std::string_view name : names) {
+    if (!v.contains(name)) return fail(member_path(path, name), "missing required field");
+  }
+  return true;
+}
+
 bool Reader::required(const json& obj, const std::string& path, std::string_view key,
                       const json*& out) {
   out = find(obj, key);

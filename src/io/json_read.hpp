@@ -133,6 +133,9 @@ class Reader {
   /// An object with exactly the members `names`, each required.
   bool exact_object(const json& v, const std::string& path,
                     std::initializer_list<std::string_view> names);
+  /// The same with the names in a list built at run time.
+  bool exact_object(const json& v, const std::string& path,
+                    const std::vector<std::string_view>& names);
   /// The member `key` of the object `obj` at `path`, which must be there.
   bool required(const json& obj, const std::string& path, std::string_view key,
                 const json*& out);

@@ -74,6 +74,14 @@ std::string match_summary_json(const MatchSummary& s) {
   // The physics only when it is not the engine's default, so that a
   // default match's summary reads as it always has.
   if (!(s.physics == GamePhysics{})) j["physics"] = json_io::physics_json(s.physics);
+  if (s.game == GameType::three_cushion) {
+    // Three-cushion's options, only in three-cushion summaries.
+    ojson k = ojson::object();
+    k["target"] = s.carom.target;
+    k["innings_limit"] = s.carom.innings_limit;
+    k["equalizing_inning"] = s.carom.equalizing_inning;
+    j["carom"] = std::move(k);
+  }
   j["seed"] = json_io::seed_json(s.seed);  // a string, as in records: 64 bits survive any reader
   j["noise"] = to_string(s.noise);
   // The games covered, unless they are 0 .. games_played - 1 (a match from
@@ -136,6 +144,16 @@ std::string match_summary_json(const MatchSummary& s) {
       sk["misses"] = k.misses;
       o["snooker"] = std::move(sk);
     }
+    if (p.carom) {
+      // Three-cushion's figures, only in three-cushion summaries.
+      const CaromStats& k = *p.carom;
+      ojson c = ojson::object();
+      c["points"] = k.points;
+      c["general_average"] = p.general_average();
+      c["highest_run"] = k.highest_run;
+      c["scoring_innings"] = k.scoring_innings;
+      o["carom"] = std::move(c);
+    }
     players.push_back(std::move(o));
   }
   j["players"] = std::move(players);
@@ -155,8 +173,9 @@ class SummaryReader : public json_io::GameReader {
   bool read(const json& doc, MatchSummary& s) {
     const std::string top;
     if (!require_object(doc, top)) return false;
-    if (!known_fields(doc, top, {"game", "table_size", "physics", "seed", "noise", "first_game",
-                                 "game_ranges", "games_played", "draws", "players"})) {
+    if (!known_fields(doc, top,
+                      {"game", "table_size", "physics", "carom", "seed", "noise", "first_game",
+                       "game_ranges", "games_played", "draws", "players"})) {
       return false;
     }
     const json* v = nullptr;
@@ -174,8 +193,22 @@ class SummaryReader : public json_io::GameReader {
     if (!required(doc, top, "table_size", v) ||
         !(s.game == GameType::snooker
               ? text_of(*v, "table_size", "table size", {"12ft"}, s.table_size)
+          : s.game == GameType::three_cushion
+              ? text_of(*v, "table_size", "table size", {"10ft"}, s.table_size)
               : text_of(*v, "table_size", "table size", {"7ft", "8ft", "9ft"}, s.table_size))) {
       return false;
+    }
+    if (s.game == GameType::three_cushion) {
+      if (!required(doc, top, "carom", v)) return false;
+      const json& k = *v;
+      if (!exact_object(k, "carom", {"target", "innings_limit", "equalizing_inning"}) ||
+          !integer(k["target"], "carom.target", 1, kIntMax, s.carom.target) ||
+          !integer(k["innings_limit"], "carom.innings_limit", 0, kIntMax, s.carom.innings_limit) ||
+          !boolean(k["equalizing_inning"], "carom.equalizing_inning", s.carom.equalizing_inning)) {
+        return false;
+      }
+    } else if (find(doc, "carom")) {
+      return fail("carom", "only three-cushion summaries have this field");
     }
     if (const json* ph = find(doc, "physics")) {
       if (!physics(*ph, "physics", s.physics)) return false;
@@ -198,7 +231,9 @@ class SummaryReader : public json_io::GameReader {
 
     std::vector<Foul> kinds;
     try {
-      GameConfig config = s.game == GameType::snooker ? snooker_config() : GameConfig{};
+      GameConfig config = s.game == GameType::snooker         ? snooker_config()
+                          : s.game == GameType::three_cushion ? three_cushion_config()
+                                                              : GameConfig{};
       config.game = s.game;
       config.table_size = s.table_size;
       config.physics = s.physics;  // airborne physics adds ball_off_table
@@ -310,16 +345,14 @@ class SummaryReader : public json_io::GameReader {
                   "their quantiles, which do not add up");
     }
     const bool snooker = game_ == GameType::snooker;
-    if (snooker ? !exact_object(v, path,
-                                {"name", "noise", "games_won", "breaks", "break_and_runs",
-                                 "innings", "shots", "balls_pocketed", "balls_per_inning",
-                                 "pot_attempts", "pots_made", "pot_rate", "fouls", "snooker"})
-                : !exact_object(v, path,
-                                {"name", "noise", "games_won", "breaks", "break_and_runs",
-                                 "innings", "shots", "balls_pocketed", "balls_per_inning",
-                                 "pot_attempts", "pots_made", "pot_rate", "fouls"})) {
-      return false;
-    }
+    const bool carom = game_ == GameType::three_cushion;
+    std::vector<std::string_view> keys{
+        "name",      "noise",    "games_won",      "breaks",           "break_and_runs",
+        "innings",   "shots",    "balls_pocketed", "balls_per_inning", "pot_attempts",
+        "pots_made", "pot_rate", "fouls"};
+    if (snooker) keys.push_back("snooker");
+    if (carom) keys.push_back("carom");
+    if (!exact_object(v, path, keys)) return false;
     if (snooker && !snooker_stats(v["snooker"], member_path(path, "snooker"), p)) return false;
     if (!text(v["name"], member_path(path, "name"), p.name)) return false;
     if (p.name.empty()) return fail(member_path(path, "name"), "must not be empty");
@@ -336,6 +369,7 @@ class SummaryReader : public json_io::GameReader {
         !rate(v, path, "pot_rate", p.pot_rate())) {
       return false;
     }
+    if (carom && !carom_stats(v["carom"], member_path(path, "carom"), p)) return false;
     const std::string at = member_path(path, "fouls");
     const json& fouls = v["fouls"];
     if (!require_object(fouls, at)) return false;
@@ -373,6 +407,21 @@ class SummaryReader : public json_io::GameReader {
     }
     p.snooker = k;
     return true;
+  }
+
+  /// Three-cushion's figures; read after the innings, from which the
+  /// general average is derived.
+  bool carom_stats(const json& v, const std::string& path, PlayerStats& p) {
+    if (!exact_object(v, path, {"points", "general_average", "highest_run", "scoring_innings"})) {
+      return false;
+    }
+    CaromStats k;
+    if (!count(v, path, "points", k.points) || !count(v, path, "highest_run", k.highest_run) ||
+        !count(v, path, "scoring_innings", k.scoring_innings)) {
+      return false;
+    }
+    p.carom = k;
+    return rate(v, path, "general_average", p.general_average());
   }
 
   GameType game_ = GameType::eight_ball;

@@ -7,7 +7,9 @@
 //     "format": "breakshot-game-record",
 //     "version": 2,
 //     "engine": {"version": "0.1.0"},
-//     "config": {"game", "table_size", "ball_radius", "ball_mass", "max_shots"},
+//     "config": {"game", "table_size", "ball_radius", "ball_mass", "max_shots",
+//                three-cushion only: "carom": {"target", "innings_limit",
+//                "equalizing_inning"}},
 //     "physics": {"cushion_model", "ball_ball_model",
 //                 "ball_ball_friction": {"a", "b", "c"} | number},
 //     "players": [NAME, NAME],
@@ -38,23 +40,29 @@
 //            "on_table": [0 or 1 by ball number],
 //            snooker only: "snooker": {"score": [2], "break", "colour_on", "free_ball",
 //            "respotted_black", "misses", "replace": null | {"position", "on_table",
-//            "colour_on", "free_ball"}}}
+//            "colour_on", "free_ball"}},
+//            three-cushion only: "carom": {"score": [2], "run", "innings": [2],
+//            "equalizing"}}
 //   action  {"type": "place_cue_ball", "position": [x, y]}
 //           {"type": "shoot", "strike": STRIKE, "call": null | {"ball", "pocket"},
-//            "safety", "push_out", snooker only, when the shot nominates: "nominate"}
+//            "safety", "push_out", snooker only, when the shot nominates: "nominate",
+//            three-cushion only, when the shot names its ball: "cue_ball"}
 //           {"type": "decide", "choice"}
 //   STRIKE  {"speed", "phi", "theta", "a", "b"}; "intended" is a STRIKE or null
 //   ruling  {"fouls": [names], "legal_break", "turn_continues", "assigned",
 //            "spotted": [ball numbers], "winner", "text", "call_made",
 //            a snooker shot's only: "snooker": {"points", "penalty", "miss",
-//            "free_ball", "nominated"}}
+//            "free_ball", "nominated"},
+//            a three-cushion shot's only: "carom": {"point", "cue_ball", "hit": [balls],
+//            "cushions", "kiss"}}
 //
 // The config and the NOISE, STATE, action, STRIKE and ruling objects are
 // the one JSON of those types (io/game_json.hpp), which the web facade
 // uses too. Every field is always written (null for an empty optional)
 // and always required on reading, so a record cannot lose a field without
-// notice; snooker's fields exist in snooker records only, so the other
-// games' records keep their bytes.
+// notice; snooker's fields exist in snooker records only and
+// three-cushion's in three-cushion records only, so the other games'
+// records keep their bytes.
 // Enum values are the names of game.hpp's to_string. Seeds are decimal
 // strings (64-bit integers do not survive readers that keep numbers in
 // doubles). Doubles are printed by nlohmann::json in a form that reads

@@ -22,6 +22,7 @@
 #include <variant>
 #include <vector>
 
+#include "breakshot/carom.hpp"
 #include "breakshot/rack.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/scenario_io.hpp"
@@ -57,13 +58,17 @@ constexpr double kMaxSamples = 1e7;
 /// count as touching: validate()'s tolerance (src/physics/validate.cpp).
 constexpr double kTouchTolerance = 1e-9;
 
-/// The default ball of a table: the snooker ball on the snooker table
-/// (docs/scenario.md, "Defaults"), else the pool ball.
+/// The default ball of a table: the snooker ball on the snooker table,
+/// the carom ball on the carom table (docs/scenario.md, "Defaults"), else
+/// the pool ball.
 BallSpec default_ball(const Table& table) {
   BallSpec spec;
   if (table.shape == "snooker") {
     spec.radius = kSnookerBallRadius;
     spec.mass = kSnookerBallMass;
+  } else if (table.shape == "carom") {
+    spec.radius = kCaromBallRadius;
+    spec.mass = kCaromBallMass;
   }
   return spec;
 }
@@ -421,7 +426,13 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
   }
 
   if (shape == "carom") {
-    return fail_unsupported(shape_path, "the " + shape + " table is not implemented yet");
+    if (!known_fields(*t, path,
+                      {"shape", "cushion_restitution", "cushion_friction", "nose_height",
+                       "cushion_model", "cushion_height"})) {
+      return false;
+    }
+    s.table = make_carom_table();
+    return read_cushion(*t, s);
   }
   return fail(shape_path, "unknown shape \"" + shape +
                               "\" (expected rectangle, polygon, pool, snooker or carom)");
@@ -435,13 +446,13 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 /// the physics model is "pool" (the lab's tables); elsewhere they are
 /// errors rather than values silently unused.
 bool ScenarioReader::read_cushion(const json& t, Scenario& s) {
-  const bool pool_cushions =
-      s.table.shape == "pool" || s.table.shape == "snooker" || s.physics.model == Model::pool;
+  const bool pool_cushions = s.table.shape == "pool" || s.table.shape == "snooker" ||
+                             s.table.shape == "carom" || s.physics.model == Model::pool;
   for (const char* key : {"cushion_friction", "nose_height", "cushion_model", "cushion_height"}) {
     if (find(t, key) != nullptr && !pool_cushions) {
       return fail(member_path("table", key),
-                  "only the pool model's cushions have this field (a pool or snooker "
-                  "table, or \"physics\": {\"model\": \"pool\"})");
+                  "only the pool model's cushions have this field (a pool, snooker or "
+                  "carom table, or \"physics\": {\"model\": \"pool\"})");
     }
   }
   CushionParams& cp = s.table.cushion;
@@ -516,39 +527,52 @@ bool ScenarioReader::read_balls(const json& doc, Scenario& s) {
 }
 
 /// "rack": the regulation rack on a pool table, and a cue ball "cue" on
-/// the head spot unless one is given; or the snooker rack on the snooker
-/// table, and "cue" on the break-off spot in the D. The placed balls come
-/// after the given ones: "cue" (if placed), then "1", "2", ... in numeric
-/// order, or "red1" ... "red15", "yellow" ... "black".
+/// the head spot unless one is given; the snooker rack on the snooker
+/// table, and "cue" on the break-off spot in the D; or the three-cushion
+/// starting position on the carom table (white, yellow and red, no "cue").
+/// The placed balls come after the given ones: "cue" (if placed), then
+/// "1", "2", ... in numeric order, or "red1" ... "red15", "yellow" ...
+/// "black", or "white", "yellow", "red".
 bool ScenarioReader::read_rack(const json& v, Scenario& s) {
   const std::string path = "rack";
   if (!require_object(v, path)) return false;
-  if (s.table.shape != "pool" && s.table.shape != "snooker") {
+  if (s.table.shape != "pool" && s.table.shape != "snooker" && s.table.shape != "carom") {
     return fail(path,
-                "a rack needs a pool table (\"table\": {\"shape\": \"pool\", ...}) or "
-                "the snooker table (\"table\": {\"shape\": \"snooker\"})");
+                "a rack needs a pool table (\"table\": {\"shape\": \"pool\", ...}), "
+                "the snooker table (\"table\": {\"shape\": \"snooker\"}) or the carom "
+                "table (\"table\": {\"shape\": \"carom\"})");
   }
   if (!known_fields(v, path, {"game", "seed"})) return false;
 
   const json* game_v = find(v, "game");
   const std::string game_path = "rack.game";
   if (game_v == nullptr) {
-    return fail(game_path, "missing required field (\"eight_ball\", \"nine_ball\" or \"snooker\")");
+    return fail(game_path,
+                "missing required field (\"eight_ball\", \"nine_ball\", \"snooker\" or "
+                "\"three_cushion\")");
   }
   if (!game_v->is_string()) return fail(game_path, expected("a string", *game_v));
   const std::string game = game_v->get<std::string>();
-  if (game != "eight_ball" && game != "nine_ball" && game != "snooker") {
+  if (game != "eight_ball" && game != "nine_ball" && game != "snooker" && game != "three_cushion") {
     return fail(game_path, "unknown game \"" + game +
-                               "\" (expected \"eight_ball\", \"nine_ball\" or \"snooker\")");
+                               "\" (expected \"eight_ball\", \"nine_ball\", \"snooker\" "
+                               "or \"three_cushion\")");
   }
   const bool snooker = game == "snooker";
+  const bool carom = game == "three_cushion";
   if (snooker && s.table.shape != "snooker") {
     return fail(game_path,
                 "the snooker rack needs the snooker table (\"table\": {\"shape\": "
                 "\"snooker\"}), not a " +
                     s.table.shape + " table");
   }
-  if (!snooker && s.table.shape != "pool") {
+  if (carom && s.table.shape != "carom") {
+    return fail(game_path,
+                "the three_cushion rack needs the carom table (\"table\": {\"shape\": "
+                "\"carom\"}), not a " +
+                    s.table.shape + " table");
+  }
+  if (!snooker && !carom && s.table.shape != "pool") {
     return fail(game_path, "the " + game +
                                " rack needs a pool table (\"table\": {\"shape\": "
                                "\"pool\", ...}), not the " +
@@ -584,8 +608,8 @@ bool ScenarioReader::read_rack(const json& v, Scenario& s) {
   // make_rack lists the pool balls in rack order; the scenario lists them
   // by number, so a result reads "1", "2", ... whatever the rack. The
   // snooker rack is already in its order: red1 ... red15, then the colours
-  // from yellow to black.
-  if (!snooker) {
+  // from yellow to black; the three-cushion one too: white, yellow, red.
+  if (!snooker && !carom) {
     std::sort(racked.begin(), racked.end(), [](const RackedBall& a, const RackedBall& b) {
       return a.id.size() < b.id.size() || (a.id.size() == b.id.size() && a.id < b.id);
     });
@@ -600,8 +624,9 @@ bool ScenarioReader::read_rack(const json& v, Scenario& s) {
                       "'; give this ball another id");
     }
   }
-  if (index_of_.find("cue") == index_of_.end()) {
-    // Pool: the head spot; snooker: the break-off spot in the D.
+  if (!carom && index_of_.find("cue") == index_of_.end()) {
+    // Pool: the head spot; snooker: the break-off spot in the D. The
+    // three-cushion rack has its own cue balls.
     add_placed_ball("cue", snooker ? snooker_break_off_spot() : s.table.head_spot, s);
   }
   for (RackedBall& rb : racked) add_placed_ball(std::move(rb.id), rb.position, s);

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "breakshot/carom.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/plot.hpp"
 #include "breakshot/snooker.hpp"
@@ -846,6 +847,21 @@ std::string trajectories_svg(const Scenario& scenario, const std::vector<Sample>
     out += "<g fill=\"#2f5d2f\">\n";
     for (const Vec2 spot : {m.yellow, m.green, m.brown, m.blue, m.pink, m.black}) {
       out += "<circle cx=\"" + px(p.X(spot.x)) + "\" cy=\"" + px(p.Y(spot.y)) + "\" r=\"1.5\"/>\n";
+    }
+    out += "</g>\n";
+  }
+
+  // The carom table's markings: the three spots on the long string, the
+  // two starting spots and the diamonds (drawn on the cushion lines).
+  if (scenario.table.shape == "carom") {
+    const CaromMarks m = carom_marks();
+    out += "<g fill=\"#2f5d2f\">\n";
+    for (const Vec2 spot :
+         {m.top_spot, m.centre_spot, m.bottom_spot, m.starting_spots[0], m.starting_spots[1]}) {
+      out += "<circle cx=\"" + px(p.X(spot.x)) + "\" cy=\"" + px(p.Y(spot.y)) + "\" r=\"1.5\"/>\n";
+    }
+    for (const Vec2 d : m.diamonds) {
+      out += "<circle cx=\"" + px(p.X(d.x)) + "\" cy=\"" + px(p.Y(d.y)) + "\" r=\"2.5\"/>\n";
     }
     out += "</g>\n";
   }

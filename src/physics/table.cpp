@@ -175,8 +175,8 @@ bool contains(const Table& table, Vec2 p) {
   // the cushion noses and out around the pockets (a test checks it against
   // the crossing-number test below): the common case without the walk
   // around the outline's hundreds of points.
-  if ((table.shape == "pool" || table.shape == "snooker") && p.x > 0.0 && p.x < table.length &&
-      p.y > 0.0 && p.y < table.width) {
+  if ((table.shape == "pool" || table.shape == "snooker" || table.shape == "carom") && p.x > 0.0 &&
+      p.x < table.length && p.y > 0.0 && p.y < table.width) {
     return true;
   }
   // Crossing-number test on the outline.

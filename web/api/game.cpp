@@ -172,10 +172,16 @@ std::int64_t web_budget(std::string_view level) {
 }
 
 bs::GameType game_type(const json& v, const std::string& path) {
+  // The games of the page: three-cushion is not played in the browser.
+  if (v.is_string() && v.get_ref<const std::string&>() == "three_cushion") {
+    bad(path,
+        "three_cushion is not played in the browser (the page has eight_ball, nine_ball "
+        "and snooker)");
+  }
   Reader r;
-  bs::GameType g{};
-  r.must(r.game_type(v, path, g));
-  return g;
+  std::string name;
+  r.must(r.text_of(v, path, "game", {"eight_ball", "nine_ball", "snooker"}, name));
+  return *bs::parse_game_type(name);
 }
 
 std::string table_size(const json& v, const std::string& path, bs::GameType game) {
