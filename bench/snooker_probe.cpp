@@ -2,14 +2,17 @@
 // open tables, many more of them than frames give, in less time.
 //
 //   snooker_probe [--player NAME] [--tables N] [--from T] [--reds K]
-//                 [--seed S] [--noise SPEC] [--verbose]
+//                 [--seed S] [--noise SPEC] [--shoot-noise SPEC] [--verbose]
 //
 // Each table has K reds (default 15) placed at random, uniformly over the
 // bed, clear of each other, of the colour spots and of the pocket mouths,
 // the colours on their spots and the cue ball at random: an open table,
 // the kind a break is built on, with the player on a red at 0-0. The
 // player (seat 0, with its own noise, else SPEC, default tournament)
-// plays until its visit ends; the opponent never shoots. A visit ends:
+// plays until its visit ends; the opponent never shoots. --shoot-noise
+// gives an AI level another noise to shoot with and to plan for (its
+// searches then estimate their pots with it), to see what the noise costs.
+// A visit ends:
 //
 //   - cleared: the table is cleared (the frame is over);
 //   - missed pot: a shot that passes the table without a foul whose
@@ -35,6 +38,7 @@
 #include <variant>
 #include <vector>
 
+#include "breakshot/ai.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
@@ -191,7 +195,7 @@ bool parse_int(std::string_view s, long long* out) {
 int usage() {
   std::fprintf(stderr,
                "usage: snooker_probe [--player NAME] [--tables N] [--from T] [--reds K] [--seed S] "
-               "[--noise SPEC] [--verbose]\n");
+               "[--noise SPEC] [--shoot-noise SPEC] [--verbose]\n");
   return 2;
 }
 
@@ -205,6 +209,7 @@ int main(int argc, char** argv) {
   long long seed = 7;
   bool verbose = false;
   std::string noise_spec = "tournament";
+  std::string shoot_noise;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--verbose") {
@@ -237,13 +242,28 @@ int main(int argc, char** argv) {
       }
     } else if (arg == "--noise") {
       noise_spec = std::string(val);
+    } else if (arg == "--shoot-noise") {
+      shoot_noise = std::string(val);
     } else {
       return usage();
     }
   }
   try {
     const Rules rules(snooker_config());
-    const std::unique_ptr<Player> player = make_player(name);
+    std::unique_ptr<Player> player;
+    if (shoot_noise.empty()) {
+      player = make_player(name);
+    } else {
+      const std::vector<std::string> levels = ai_level_names();
+      if (std::find(levels.begin(), levels.end(), name) == levels.end()) {
+        std::fprintf(stderr, "snooker_probe: --shoot-noise is for the AI levels, not \"%s\"\n",
+                     name.c_str());
+        return 2;
+      }
+      AiLevel level = ai_level(name);
+      level.noise = parse_noise(shoot_noise);
+      player = make_ai_player(level);
+    }
     const NoiseModel noise = player->noise().value_or(parse_noise(noise_spec));
     std::array<int, kEndNames.size()> ends{};
     std::vector<int> breaks;
@@ -274,7 +294,8 @@ int main(int argc, char** argv) {
       fifty += b >= 50 ? 1 : 0;
       hundred += b >= 100 ? 1 : 0;
     }
-    std::printf("%s, %lld tables of %lld reds, seed %lld\n", name.c_str(), tables, reds, seed);
+    std::printf("%s, %lld tables of %lld reds, seed %lld%s%s\n", name.c_str(), tables, reds, seed,
+                shoot_noise.empty() ? "" : ", shooting with ", shoot_noise.c_str());
     for (std::size_t k = 0; k < kEndNames.size(); ++k) {
       if (ends[k] > 0 || k < 4) std::printf("  %-12s %5d\n", kEndNames[k], ends[k]);
     }

@@ -105,6 +105,10 @@ struct AiLevel {
   std::string name;
   NoiseModel noise;         ///< the noise this player's shots are played with
   ShotGenOptions generation;
+  /// Snooker's shot generation where set (else `generation`): its colours
+  /// sit a metre from pockets that take a ball only within about 0.15 m
+  /// of the line, so finer speed and spin variants pay more there.
+  std::optional<ShotGenOptions> snooker_generation;
   int candidates = 12;      ///< candidates evaluated by sampling (best priors first)
   int samples = 16;         ///< noisy simulations per evaluated candidate
   /// Value the table left by the opponent's or the player's next shot
