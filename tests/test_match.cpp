@@ -578,8 +578,6 @@ TEST_F(MatchCli, BadArgumentsExitTwoNamingTheProblem) {
       {"--game eight_ball --players baseline,baseline --games 1 --table 10ft", "--table: "},
       {"--game three_cushion --players baseline,baseline --games 1 --table 9ft",
        "--table: three_cushion is played on the 10ft carom table"},
-      {"--game three_cushion --players baseline,club --games 1",
-       "--players: player \"club\" does not play three_cushion"},
       {"--game three_cushion --players baseline,baseline --games 1 --target 0", "--target: "},
       {"--game three_cushion --players baseline,baseline --games 1 --target x", "--target: "},
       {"--game three_cushion --players baseline,baseline --games 1 --innings-limit -1",

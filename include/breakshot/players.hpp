@@ -26,9 +26,8 @@ std::unique_ptr<Player> make_player(std::string_view name);
 /// The names make_player knows: "baseline", then the AI levels.
 std::vector<std::string> player_names();
 
-/// The names of the players that play `game`: every player, but only
-/// "baseline" in three_cushion (the AI levels refuse it with
-/// std::invalid_argument).
+/// The names of the players that play `game`: every player plays every
+/// game.
 std::vector<std::string> player_names(GameType game);
 
 /// Why the player `name` cannot play `game` (an unknown name, or a player

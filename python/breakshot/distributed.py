@@ -201,10 +201,6 @@ def _check_names(game, names, table) -> None:
     elif game == "three_cushion":
         if table != "10ft":
             raise ValueError(f"table: unknown table size {table!r} (three_cushion: 10ft)")
-        for name in names:
-            if name != "baseline":
-                raise ValueError(f"players: player {name!r} does not play three_cushion "
-                                 "(players of three_cushion: baseline)")
     else:
         _core.pool_table(table)  # ValueError naming an unknown table size
 

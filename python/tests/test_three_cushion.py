@@ -64,15 +64,13 @@ def test_a_match_from_python_is_the_commands(cli):
     assert summary["table_size"] == "10ft"
     for p in summary["players"]:
         assert "general_average" in p["carom"]
-    with pytest.raises(ValueError, match="does not play three_cushion"):
-        breakshot.match_json("three_cushion", ["baseline", "club"], games=1)
 
 
-def test_the_baseline_plays_and_the_levels_refuse():
+def test_the_baseline_and_the_levels_play():
     g = Game("three_cushion", seed=5, noise="tournament")
     g.play([breakshot.Player("baseline"), breakshot.Player("baseline")], max_actions=12)
     assert g.state.shots == 12 or g.over
     total = sum(g.state.score)
     assert total >= 0
-    with pytest.raises(ValueError, match="three_cushion"):
-        breakshot.Player("club").decide(Game("three_cushion"))
+    action = breakshot.Player("beginner").decide(Game("three_cushion"))
+    assert action is not None

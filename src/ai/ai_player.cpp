@@ -68,6 +68,7 @@
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/snooker.hpp"
+#include "carom_ai.hpp"
 #include "evaluate.hpp"
 
 namespace breakshot {
@@ -233,8 +234,7 @@ class AiPlayer final : public Player {
 
   Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) override {
     if (state.game == GameType::three_cushion) {
-      throw std::invalid_argument("the " + level_.name +
-                                  " level does not play three_cushion (only the baseline does)");
+      return ai_detail::carom_action(level_, rules, state, seed);
     }
     Budget budget(level_.simulation_budget, level_.time_budget);
     const LegalActions la = rules.legal_actions(state);

@@ -35,33 +35,9 @@
 
 namespace breakshot::ai {
 
-namespace {
-
-/// Simulations one decision may run at most.
-constexpr int kBudget = 240;
-/// Candidates refined on the engine at most.
-constexpr int kCandidates = 10;
-/// Speed kept per cushion (a rough figure for the default cushion law at
-/// the angles these paths take).
-constexpr double kCushionKeep = 0.8;
-/// Pace the cue ball should still have at the second ball (m/s).
-constexpr double kArrival = 0.5;
-/// Cue ball speed per unit of cue speed, a centre hit of a carom ball with
-/// the default cue (2 / (1 + m/M)); only for the speed estimate.
-constexpr double kLaunch = 2.0 / (1.0 + 0.210 / 0.567);
-
-struct Candidate {
-  int first = -1;
-  double phi = 0.0;    // degrees
-  double speed = 0.0;  // cue speed, m/s
-  double cost = 0.0;   // lower is easier
-};
-
-double phi_of(Vec2 d) { return dm::atan2(d.y, d.x) / kDeg; }
-
 /// The centre of the image (i, j) of `p` in the unfolded table of ball
 /// centres [lo.x, hi.x] x [lo.y, hi.y].
-Vec2 image(Vec2 p, Vec2 lo, Vec2 hi, int i, int j) {
+Vec2 carom_image(Vec2 p, Vec2 lo, Vec2 hi, int i, int j) {
   const auto coord = [](double v, double a, double b, int k) {
     const double span = b - a;
     const double off = (k % 2 == 0) ? v - a : b - v;
@@ -73,12 +49,12 @@ Vec2 image(Vec2 p, Vec2 lo, Vec2 hi, int i, int j) {
 /// The cue ball's departure direction (not normalised) from a contact
 /// with normal n, travelling along u (both unit): the tangent line bent
 /// forward by its roll.
-Vec2 departure(Vec2 u, Vec2 n) { return u - n * (5.0 / 7.0 * dot(u, n)); }
+Vec2 carom_departure(Vec2 u, Vec2 n) { return u - n * (5.0 / 7.0 * dot(u, n)); }
 
 /// The contacts on F from which a cue ball at C departs toward `target`
 /// (the angle of n from C's side), found where the departure's direction
 /// crosses the wanted one.
-std::vector<double> contact_angles(Vec2 C, Vec2 F, Vec2 target, double R) {
+std::vector<double> carom_contact_angles(Vec2 C, Vec2 F, Vec2 target, double R, int steps) {
   std::vector<double> out;
   const auto miss = [&](double a, double* along) {
     Vec2 n{0.0, 0.0};
@@ -89,17 +65,16 @@ std::vector<double> contact_angles(Vec2 C, Vec2 F, Vec2 target, double R) {
     if (len < 1e-9) return std::nan("");
     const Vec2 u = cg / len;
     if (dot(u, n) < 0.08) return std::nan("");  // no hit, or a hair
-    const Vec2 e = departure(u, n);
+    const Vec2 e = carom_departure(u, n);
     const Vec2 d = target - G;
     *along = dot(e, d);
     return cross(e, d);
   };
-  constexpr int kSteps = 360;
   double prev_a = 0.0;
   double prev = std::nan("");
   double prev_along = 0.0;
-  for (int k = 0; k <= kSteps; ++k) {
-    const double a = 2.0 * kPi * k / kSteps;
+  for (int k = 0; k <= steps; ++k) {
+    const double a = 2.0 * kPi * k / steps;
     double along = 0.0;
     const double m = miss(a, &along);
     if (std::isfinite(m) && std::isfinite(prev) && (m > 0.0) != (prev > 0.0) && along > 0.0 &&
@@ -128,6 +103,30 @@ std::vector<double> contact_angles(Vec2 C, Vec2 F, Vec2 target, double R) {
   return out;
 }
 
+namespace {
+
+/// Simulations one decision may run at most.
+constexpr int kBudget = 240;
+/// Candidates refined on the engine at most.
+constexpr int kCandidates = 10;
+/// Speed kept per cushion (a rough figure for the default cushion law at
+/// the angles these paths take).
+constexpr double kCushionKeep = 0.8;
+/// Pace the cue ball should still have at the second ball (m/s).
+constexpr double kArrival = 0.5;
+/// Cue ball speed per unit of cue speed, a centre hit of a carom ball with
+/// the default cue (2 / (1 + m/M)); only for the speed estimate.
+constexpr double kLaunch = 2.0 / (1.0 + 0.210 / 0.567);
+
+struct Candidate {
+  int first = -1;
+  double phi = 0.0;    // degrees
+  double speed = 0.0;  // cue speed, m/s
+  double cost = 0.0;   // lower is easier
+};
+
+double phi_of(Vec2 d) { return dm::atan2(d.y, d.x) / kDeg; }
+
 std::vector<Candidate> candidates(const Rules& rules, const GameState& state) {
   const Table& table = rules.table();
   const double R = rules.config().ball_radius;
@@ -149,8 +148,8 @@ std::vector<Candidate> candidates(const Rules& rules, const GameState& state) {
       for (int j = -4; j <= 4; ++j) {
         const int rails = std::abs(i) + std::abs(j);
         if (rails < 3 || rails > 4) continue;
-        const Vec2 target = image(S, lo, hi, i, j);
-        for (const double a : contact_angles(C, F, target, R)) {
+        const Vec2 target = carom_image(S, lo, hi, i, j);
+        for (const double a : carom_contact_angles(C, F, target, R, 360)) {
           Vec2 n{0.0, 0.0};
           dm::sincos(a, n.y, n.x);
           const Vec2 G = F - n * (2.0 * R);
@@ -159,7 +158,7 @@ std::vector<Candidate> candidates(const Rules& rules, const GameState& state) {
           if (segment_distance(S, C, G) < 2.0 * R + kBallMargin) continue;
           const Vec2 u = (G - C) / norm(G - C);
           const double full = dot(u, n);  // 1: full ball, 0: a graze
-          const Vec2 e = departure(u, n);
+          const Vec2 e = carom_departure(u, n);
           const double keep = norm(e);  // of the cue ball's speed
           const double l1 = norm(G - C);
           const double l2 = norm(target - G);

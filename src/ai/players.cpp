@@ -17,10 +17,7 @@ std::vector<std::string> player_names() {
   return names;
 }
 
-std::vector<std::string> player_names(GameType game) {
-  if (game == GameType::three_cushion) return {"baseline"};
-  return player_names();
-}
+std::vector<std::string> player_names(GameType /*game*/) { return player_names(); }
 
 std::optional<std::string> check_player(std::string_view name, GameType game) {
   const std::vector<std::string> all = player_names();
