@@ -28,9 +28,11 @@
 
 #include "../web/compat/portable_charconv.hpp"
 #include "breakshot/ai.hpp"
+#include "breakshot/carom.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/match.hpp"
+#include "breakshot/players.hpp"
 #include "breakshot/record.hpp"
 #include "breakshot/record_io.hpp"
 #include "breakshot/scenario_io.hpp"
@@ -362,7 +364,14 @@ TEST(WebApi, LinkErrorsNameTheActionRefused) {
        "link.t: unknown table size \"9ft\" (expected \"12ft\")"},
       {R"({"g":"snooker","t":"12ft","s":"1","b":0,"p":["human","shark"],"a":[]})", "link.p[1]: "},
       {R"({"g":"bowls","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
-       "link.g: unknown game \"bowls\" (expected \"eight_ball\", \"nine_ball\" or \"snooker\")"},
+       "link.g: unknown game \"bowls\" (expected \"eight_ball\", \"nine_ball\", \"snooker\" or "
+       "\"three_cushion\")"},
+      {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"c":{"target":5},"a":[]})",
+       "link.c: unknown field"},
+      {R"({"g":"three_cushion","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
+       "link.t: unknown table size \"9ft\" (expected \"10ft\")"},
+      {R"({"g":"three_cushion","t":"10ft","s":"1","b":0,"p":["human","club"],"a":[]})",
+       "link.p[1]: \"human\" or a player of three_cushion ("},
       {R"({"g":"eight_ball","t":"9ft","s":"x1","b":0,"p":["human","human"],"a":[]})",
        "link.s: expected a seed: a decimal integer in [0, 2^64), not \"x1\""},
   };
@@ -951,6 +960,132 @@ TEST(WebApi, SnookerGameShowsTheScoreTheBallOnAndTheTable) {
   const auto rec = bs::read_record(record_of(g.get()));
   ASSERT_TRUE(std::holds_alternative<bs::GameRecord>(rec));
   EXPECT_TRUE(bs::replay(std::get<bs::GameRecord>(rec)).identical);
+}
+
+TEST(WebApi, ThreeCushionGameShowsTheScoreTheInningsAndTheTable) {
+  // Who plays three-cushion: the baseline, and the AI levels that do
+  // (players.hpp decides); the other games' players are unchanged.
+  const json players = J(bs_game_players("three_cushion"));
+  EXPECT_EQ(players["game"], "three_cushion");
+  ASSERT_FALSE(players["players"].empty());
+  EXPECT_EQ(players["players"].back(), "baseline");
+  for (const auto& p : players["players"]) {
+    EXPECT_FALSE(bs::check_player(p.get<std::string>(), bs::GameType::three_cushion).has_value())
+        << p;
+  }
+  EXPECT_EQ(J(bs_game_players("snooker"))["players"], J(bs_version())["snooker_players"]);
+  EXPECT_EQ(J(bs_game_players("eight_ball"))["players"], J(bs_version())["levels"]);
+  EXPECT_TRUE(starts_with(error_of(bs_game_players("bowls")), "game: unknown game \"bowls\""));
+  EXPECT_TRUE(starts_with(error_of(bs_game_players(nullptr)), "game: "));
+
+  // Bad configs name the field.
+  const std::pair<const char*, const char*> configs[] = {
+      {R"({"game": "three_cushion", "players": ["human", "human"], "table": "9ft"})",
+       "table: unknown table size \"9ft\" (expected \"10ft\")"},
+      {R"({"game": "three_cushion", "players": ["human", "shark"]})",
+       "players[1]: \"human\" or a player of three_cushion ("},
+      {R"({"game": "three_cushion", "players": ["human", "human"], "carom": {"target": 0}})",
+       "carom.target: "},
+      {R"({"game": "three_cushion", "players": ["human", "human"], "carom": {"points": 3}})",
+       "carom.points: unknown field"},
+      {R"({"game": "three_cushion", "players": ["human", "human"], "carom": {"equalizing_inning": 1}})",
+       "carom.equalizing_inning: expected true or false"},
+      {R"({"game": "eight_ball", "players": ["human", "human"], "carom": {"target": 5}})",
+       "carom: unknown field (known: game, table, seed, breaker, players, ai_budget, physics)"},
+  };
+  for (const auto& [config, prefix] : configs) {
+    EXPECT_EQ(bs_game_new(config), nullptr) << config;
+    EXPECT_TRUE(starts_with(error_of(bs_last_error()), prefix))
+        << config << " -> " << bs_last_error();
+  }
+
+  GamePtr g = new_game(
+      R"({"game": "three_cushion", "seed": "40", "players": ["human", "baseline"],
+          "carom": {"target": 3, "innings_limit": 4}})");
+  // The carom table: no pockets, its spots and diamonds (carom.hpp).
+  const json t = J(bs_game_table(g.get()));
+  const bs::CaromMarks m = bs::carom_marks();
+  EXPECT_EQ(t["pockets"].size(), 0u);
+  EXPECT_EQ(t["ball_radius"].get<double>(), bs::kCaromBallRadius);
+  EXPECT_EQ(t["carom"]["top_spot"][0].get<double>(), m.top_spot.x);
+  EXPECT_EQ(t["carom"]["starting_spots"].size(), 2u);
+  EXPECT_EQ(t["carom"]["diamonds"].size(), m.diamonds.size());
+  EXPECT_FALSE(t.contains("snooker"));
+  // The other games have neither.
+  GamePtr pool = new_game(R"({"game": "nine_ball", "players": ["human", "human"]})");
+  EXPECT_FALSE(J(bs_game_table(pool.get())).contains("carom"));
+  EXPECT_FALSE(J(bs_game_state(pool.get())).contains("carom_figures"));
+
+  // The start: the breaker plays the white, the score and the figures at 0.
+  json s = J(bs_game_state(g.get()));
+  EXPECT_EQ(s["game"], "three_cushion");
+  EXPECT_EQ(s["carom"]["score"], json::array({0, 0}));
+  EXPECT_EQ(s["carom_figures"]["cue_ball"], 0);
+  EXPECT_EQ(s["carom_figures"]["general_average"], json::array({0.0, 0.0}));
+  EXPECT_EQ(s["carom_figures"]["highest_run"], json::array({0, 0}));
+  EXPECT_EQ(s["legal"]["place"], "none");
+  const json rec = J(bs_game_record(g.get()));
+  EXPECT_EQ(rec["config"]["carom"]["target"], 3);
+  EXPECT_EQ(rec["config"]["carom"]["innings_limit"], 4);
+
+  // A human shot at the red: its ruling has the carom part; the shot's
+  // playback has the struck ball's events.
+  const json r =
+      act(g.get(), shoot_json(R"("speed": 3.0, "phi": 0.0, "theta": 0, "a": 0, "b": 0)"));
+  ASSERT_TRUE(r["ruling"].contains("carom")) << r.dump();
+  EXPECT_EQ(r["ruling"]["carom"]["cue_ball"], 0);
+  PlaybackPtr pb(bs_game_shot_playback(g.get(), 0));
+  ASSERT_NE(pb, nullptr) << bs_last_error();
+  EXPECT_TRUE(starts_with(bs_playback_events(pb.get(), 0), R"({"from":0,"events":[)"));
+  // A hint from the baseline; a level that does not play the game is
+  // refused by name.
+  for (int k = 0; k < 200; ++k) {
+    s = J(bs_game_state(g.get()));
+    if (s["phase"] == "game_over") break;
+    const bool human = s["players"][s["player"].get<std::size_t>()] == "human";
+    EXPECT_EQ(s["carom_figures"]["cue_ball"], s["player"] == s["breaker"] ? 0 : 1);
+    if (human && !bs::check_player("club", bs::GameType::three_cushion)) {
+      EXPECT_EQ(error_of(bs_game_ai_action(g.get(), "club")), "");
+    } else if (human) {
+      EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "club")), "level: ")) << k;
+    }
+    step_ai(g.get(), "baseline");
+  }
+  s = J(bs_game_state(g.get()));
+  ASSERT_EQ(s["phase"], "game_over");
+  // The figures: points over innings begun; the highest run as the match
+  // summary counts it.
+  for (std::size_t p = 0; p < 2; ++p) {
+    const int innings = s["carom"]["innings"][p].get<int>();
+    const int score = s["carom"]["score"][p].get<int>();
+    EXPECT_EQ(s["carom_figures"]["general_average"][p].get<double>(),
+              innings > 0 ? static_cast<double>(score) / innings : 0.0);
+    EXPECT_LE(s["carom_figures"]["highest_run"][p].get<int>(), score);
+  }
+
+  // The link holds the rules and reproduces the game; the record replays.
+  const std::string link = link_of(g.get());
+  GamePtr h(bs_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_last_error();
+  EXPECT_EQ(record_of(h.get()), record_of(g.get()));
+  EXPECT_EQ(state_of(h.get()), state_of(g.get()));
+  const auto back = bs::read_record(record_of(g.get()));
+  ASSERT_TRUE(std::holds_alternative<bs::GameRecord>(back));
+  EXPECT_TRUE(bs::replay(std::get<bs::GameRecord>(back)).identical);
+}
+
+TEST(WebApi, ThreeCushionLinkKeepsTheBallStruck) {
+  // A shot that names the ball struck (here the opponent's: a foul) is
+  // kept by the link.
+  GamePtr g = new_game(R"({"game": "three_cushion", "seed": "3", "players": ["human", "human"]})");
+  const json r = act(
+      g.get(),
+      R"({"type": "shoot", "strike": {"speed": 2.0, "phi": 90.0, "theta": 0, "a": 0, "b": 0}, "call": null, "safety": false, "push_out": false, "cue_ball": 1})");
+  EXPECT_EQ(r["ruling"]["carom"]["cue_ball"], 1);
+  const std::string link = link_of(g.get());
+  GamePtr h(bs_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_last_error();
+  EXPECT_EQ(record_of(h.get()), record_of(g.get()));
 }
 
 // ---------------------------------------------------------------------------

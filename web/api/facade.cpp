@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
+#include "breakshot/players.hpp"
 
 namespace facade {
 
@@ -109,6 +110,16 @@ std::string seat_name(const json& v, const std::string& path) {
 }
 
 std::vector<std::string> computer_players(bs::GameType game) {
+  if (game == bs::GameType::three_cushion) {
+    // Whoever plays three-cushion (players.hpp): the AI levels that do,
+    // then the baseline.
+    std::vector<std::string> out;
+    for (const std::string& l : bs::ai_level_names()) {
+      if (!bs::check_player(l, game)) out.push_back(l);
+    }
+    out.emplace_back("baseline");
+    return out;
+  }
   std::vector<std::string> out = bs::ai_level_names();
   if (game == bs::GameType::snooker) out.push_back("baseline");
   return out;
@@ -117,6 +128,17 @@ std::vector<std::string> computer_players(bs::GameType game) {
 bool is_baseline(std::string_view name) { return name == "baseline"; }
 
 std::string seat_name(const json& v, const std::string& path, bs::GameType game) {
+  if (game == bs::GameType::three_cushion) {
+    const std::string& s = text(v, path);
+    if (s == kHuman) return s;
+    const std::vector<std::string> known = computer_players(game);
+    for (const std::string& k : known) {
+      if (k == s) return s;
+    }
+    std::string list;
+    for (const std::string& k : known) list += (list.empty() ? "\"" : ", \"") + k + "\"";
+    bad(path, "\"human\" or a player of three_cushion (" + list + "), not \"" + s + "\"");
+  }
   if (game == bs::GameType::snooker && is_baseline(text(v, path))) return text(v, path);
   return seat_name(v, path);
 }

@@ -161,7 +161,8 @@ std::string seat_name(const json& v, const std::string& path);
 std::string seat_name(const json& v, const std::string& path, bs::GameType game);
 
 /// The computer players a seat of `game` may be, by name: the AI levels,
-/// and in snooker also the baseline player (players.hpp).
+/// and in snooker also the baseline player; in three-cushion the AI
+/// levels that play it (players.hpp's check_player), then the baseline.
 std::vector<std::string> computer_players(bs::GameType game);
 /// The player `name` (one of computer_players) makes decisions with.
 bool is_baseline(std::string_view name);
@@ -248,6 +249,14 @@ inline constexpr std::int64_t kMaxBudget = 1'000'000'000;
 bs::GameType game_type(const json& v, const std::string& path);
 /// A table size of `game`: "7ft", "8ft" or "9ft"; snooker "12ft".
 std::string table_size(const json& v, const std::string& path, bs::GameType game);
+/// The config of a game type with its own defaults (snooker_config,
+/// three_cushion_config).
+bs::GameConfig game_config(bs::GameType game);
+/// Three-cushion's rules ({"target", "innings_limit",
+/// "equalizing_inning"}, each optional); any other game refuses them.
+bs::CaromRules carom_rules(const json& v, const std::string& path, bs::GameType game);
+/// {"game": game, "players": computer_players(game)}.
+std::string players_json(const char* game);
 /// bs_game_new's config: {"game", "table", "seed", "breaker", "players",
 /// "ai_budget", "physics": {"airborne"}}. Snooker starts from
 /// snooker_config (the 12 ft table, snooker balls).

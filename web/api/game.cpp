@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
+#include "breakshot/carom.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/players.hpp"
@@ -149,6 +150,61 @@ ojson snooker_marks_json() {
   return j;
 }
 
+/// The markings of the carom table (carom.hpp).
+ojson carom_marks_json() {
+  const bs::CaromMarks m = bs::carom_marks();
+  ojson j = ojson::object();
+  j["top_spot"] = vec2_json(m.top_spot);
+  j["centre_spot"] = vec2_json(m.centre_spot);
+  j["bottom_spot"] = vec2_json(m.bottom_spot);
+  j["starting_spots"] =
+      ojson::array({vec2_json(m.starting_spots[0]), vec2_json(m.starting_spots[1])});
+  ojson diamonds = ojson::array();
+  for (const bs::Vec2 d : m.diamonds) diamonds.push_back(vec2_json(d));
+  j["diamonds"] = diamonds;
+  return j;
+}
+
+/// What the three-cushion page shows beside the score: the ball the
+/// player to act strikes, and each player's general average (points per
+/// inning begun) and highest run, the inning in progress included. Runs
+/// as the match summary counts them (match.cpp's add_carom): an inning
+/// ends with a shot after which the turn does not continue.
+ojson carom_figures_json(const BsGame& g) {
+  const bs::GameState& s = g.state();
+  std::array<int, 2> highest{0, 0};
+  int run = 0;
+  int shooter = -1;
+  const auto close = [&] {
+    if (shooter >= 0) {
+      auto& h = highest[static_cast<std::size_t>(shooter)];
+      if (run > h) h = run;
+    }
+    run = 0;
+    shooter = -1;
+  };
+  for (const bs::RecordedAction& ra : g.record().actions) {
+    if (!std::holds_alternative<bs::Shoot>(ra.action) || !ra.ruling.carom) continue;
+    if (shooter != ra.player) close();
+    shooter = ra.player;
+    if (ra.ruling.carom->point) run += 1;
+    if (!ra.ruling.turn_continues || ra.after.phase == bs::Phase::game_over) close();
+  }
+  close();
+  ojson j = ojson::object();
+  j["cue_ball"] = g.rules().cue_ball(s);
+  ojson average = ojson::array();
+  for (std::size_t p = 0; p < 2; ++p) {
+    const int innings = s.carom ? s.carom->innings[p] : 0;
+    const int score = s.carom ? s.carom->score[p] : 0;
+    average.push_back(innings > 0 ? static_cast<double>(score) / static_cast<double>(innings)
+                                  : 0.0);
+  }
+  j["general_average"] = average;
+  j["highest_run"] = ojson::array({highest[0], highest[1]});
+  return j;
+}
+
 bs::AiLevel web_level(const std::string& name, const std::optional<std::int64_t>& budget) {
   bs::AiLevel l = bs::ai_level(name);
   l.threads = 1;
@@ -172,16 +228,46 @@ std::int64_t web_budget(std::string_view level) {
 }
 
 bs::GameType game_type(const json& v, const std::string& path) {
-  // The games of the page: three-cushion is not played in the browser.
-  if (v.is_string() && v.get_ref<const std::string&>() == "three_cushion") {
-    bad(path,
-        "three_cushion is not played in the browser (the page has eight_ball, nine_ball "
-        "and snooker)");
-  }
   Reader r;
   std::string name;
-  r.must(r.text_of(v, path, "game", {"eight_ball", "nine_ball", "snooker"}, name));
+  r.must(r.text_of(v, path, "game", {"eight_ball", "nine_ball", "snooker", "three_cushion"}, name));
   return *bs::parse_game_type(name);
+}
+
+bs::GameConfig game_config(bs::GameType game) {
+  if (game == bs::GameType::snooker) return bs::snooker_config();
+  if (game == bs::GameType::three_cushion) return bs::three_cushion_config();
+  bs::GameConfig c;
+  c.game = game;
+  return c;
+}
+
+bs::CaromRules carom_rules(const json& v, const std::string& path, bs::GameType game) {
+  if (game != bs::GameType::three_cushion) bad(path, "only three_cushion games have this field");
+  const json& k = object(v, path, {"target", "innings_limit", "equalizing_inning"});
+  bs::CaromRules c;
+  if (const json* t = find(k, "target")) {
+    c.target = static_cast<int>(integer(*t, path + ".target", 1, 10000));
+  }
+  if (const json* n = find(k, "innings_limit")) {
+    c.innings_limit = static_cast<int>(integer(*n, path + ".innings_limit", 0, 10000));
+  }
+  if (const json* e = find(k, "equalizing_inning")) {
+    if (!e->is_boolean()) bad(path + ".equalizing_inning", "expected true or false");
+    c.equalizing_inning = e->get<bool>();
+  }
+  return c;
+}
+
+std::string players_json(const char* game) {
+  if (game == nullptr) bad("game", "missing (a null pointer)");
+  const bs::GameType type = game_type(json(std::string(game)), "game");
+  ojson j = ojson::object();
+  j["game"] = bs::to_string(type);
+  ojson players = ojson::array();
+  for (const std::string& p : computer_players(type)) players.push_back(p);
+  j["players"] = players;
+  return j.dump();
 }
 
 std::string table_size(const json& v, const std::string& path, bs::GameType game) {
@@ -193,10 +279,20 @@ std::string table_size(const json& v, const std::string& path, bs::GameType game
 }
 
 GameConfigInput read_config(const json& doc) {
-  object(doc, "", {"game", "table", "seed", "breaker", "players", "ai_budget", "physics"});
+  // "carom" is a key of three-cushion's configs only: the other games'
+  // messages keep their list of keys.
+  const json* game = doc.is_object() ? find(doc, "game") : nullptr;
+  if (game != nullptr && game->is_string() &&
+      game->get_ref<const std::string&>() == "three_cushion") {
+    object(doc, "", {"game", "table", "seed", "breaker", "players", "ai_budget", "physics", "carom"});
+  } else {
+    object(doc, "", {"game", "table", "seed", "breaker", "players", "ai_budget", "physics"});
+  }
   GameConfigInput in;
-  in.config.game = game_type(required(doc, "", "game"), "game");
-  if (in.config.game == bs::GameType::snooker) in.config = bs::snooker_config();
+  in.config = game_config(game_type(required(doc, "", "game"), "game"));
+  if (const json* k = find(doc, "carom")) {
+    in.config.carom = carom_rules(*k, "carom", in.config.game);
+  }
   if (const json* t = find(doc, "table")) {
     in.config.table_size = table_size(*t, "table", in.config.game);
   }
@@ -233,6 +329,7 @@ ojson state_json(const BsGame& g) {
   j["actions"] = g.record().actions.size();
   j["legal"] = legal_json(g.rules().legal_actions(s), s.game);
   if (s.game == bs::GameType::snooker) j["snooker_figures"] = snooker_figures_json(s);
+  if (s.game == bs::GameType::three_cushion) j["carom_figures"] = carom_figures_json(g);
   return j;
 }
 
@@ -270,6 +367,7 @@ ojson table_json(const BsGame& g) {
   }
   j["pockets"] = pockets;
   if (g.rules().config().game == bs::GameType::snooker) j["snooker"] = snooker_marks_json();
+  if (g.rules().config().game == bs::GameType::three_cushion) j["carom"] = carom_marks_json();
   return j;
 }
 
@@ -321,7 +419,10 @@ std::string ai_action_json(BsGame& g, const char* level) {
   if (level != nullptr && level[0] != '\0') {
     name = level;
     if (name == kHuman) bad("level", "\"human\" is not an AI level");
-    if (!(snooker && is_baseline(name))) {
+    if (state.game == bs::GameType::three_cushion) {
+      // a player of three-cushion (players.hpp), by the seats' rule
+      (void)seat_name(json(name), "level", state.game);
+    } else if (!(snooker && is_baseline(name))) {
       try {
         (void)bs::ai_level(name);
       } catch (const std::invalid_argument& e) {

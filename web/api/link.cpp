@@ -3,7 +3,9 @@
 //   {"e": "engine version", "g": game, "t": table,
 //    "ph": {"cushion_model", "ball_ball_model", "ball_ball_friction"},
 //    "s": "seed (decimal)", "b": breaker, "p": [seat0, seat1],
-//    "n": ai_budget (only when set), "a": [action, ...]}
+//    "n": ai_budget (only when set), "c": three-cushion's rules
+//    {"target", "innings_limit", "equalizing_inning"} (three-cushion
+//    only), "a": [action, ...]}
 // "e" is the library version that wrote the link (version.hpp) and "ph"
 // the game's physics, as in a game record (record_json.cpp). A "v1." link
 // (before issue 22) has neither and is read as played with the legacy
@@ -13,7 +15,9 @@
 //   ["p", X, Y]                                      place the cue ball
 //   ["s", SPEED, PHI, THETA, A, B, ball, pocket, f]  shoot; ball and
 //        pocket -1 without a call; f = 1 safety + 2 push-out; a snooker
-//        shot that nominates a ball has that ball number as a 10th entry
+//        shot that nominates a ball has that ball number as a 10th entry,
+//        a three-cushion shot that names the ball struck (Shoot::cue_ball)
+//        that ball
 //   ["d", "choice"]                                  decide
 // where the capitals are doubles written as the hexadecimal of their IEEE
 // bits, without leading zeros ("0" for +0, "8000000000000000" for -0,
@@ -151,6 +155,14 @@ std::string link_text(const BsGame& g) {
   j["b"] = g.record().start.breaker;
   j["p"] = ojson::array({g.seats[0], g.seats[1]});
   if (g.ai_budget) j["n"] = *g.ai_budget;
+  if (g.record().config.game == bs::GameType::three_cushion) {
+    const bs::CaromRules& c = g.record().config.carom;
+    ojson k = ojson::object();
+    k["target"] = c.target;
+    k["innings_limit"] = c.innings_limit;
+    k["equalizing_inning"] = c.equalizing_inning;
+    j["c"] = k;
+  }
   ojson actions = ojson::array();
   for (const bs::RecordedAction& ra : g.record().actions) {
     if (const auto* p = std::get_if<bs::PlaceCueBall>(&ra.action)) {
@@ -162,6 +174,7 @@ std::string link_text(const BsGame& g) {
            double_hex(k.b), s->call ? s->call->ball : -1, s->call ? s->call->pocket : -1,
            (s->safety ? 1 : 0) + (s->push_out ? 2 : 0)}));
       if (s->nominate) actions.back().push_back(*s->nominate);
+      if (s->cue_ball) actions.back().push_back(*s->cue_ball);
     } else {
       actions.push_back(ojson::array({"d", bs::to_string(std::get<bs::Decide>(ra.action).choice)}));
     }
@@ -170,7 +183,7 @@ std::string link_text(const BsGame& g) {
   return std::string(kLinkPrefix) + base64url(j.dump());
 }
 
-bs::Action link_action(const json& v, const std::string& path) {
+bs::Action link_action(const json& v, const std::string& path, bs::GameType game) {
   if (!v.is_array() || v.empty() || !v[0].is_string()) bad(path, "expected an action array [\"p\"|\"s\"|\"d\", ...]");
   const std::string& k = v[0].get_ref<const std::string&>();
   if (k == "p") {
@@ -181,7 +194,7 @@ bs::Action link_action(const json& v, const std::string& path) {
     if (v.size() != 9 && v.size() != 10) {
       bad(path,
           "expected [\"s\", SPEED, PHI, THETA, A, B, ball, pocket, flags] and, in snooker, "
-          "the nominated ball");
+          "the nominated ball (three_cushion: the ball struck)");
     }
     bs::Shoot s;
     s.strike.speed = hex_double(v[1], index_path(path, 1));
@@ -196,7 +209,11 @@ bs::Action link_action(const json& v, const std::string& path) {
     const auto flags = integer(v[8], index_path(path, 8), 0, 3);
     s.safety = (flags & 1) != 0;
     s.push_out = (flags & 2) != 0;
-    if (v.size() == 10) s.nominate = static_cast<int>(integer(v[9], index_path(path, 9), 1, 21));
+    if (v.size() == 10 && game == bs::GameType::three_cushion) {
+      s.cue_ball = static_cast<int>(integer(v[9], index_path(path, 9), 0, 2));
+    } else if (v.size() == 10) {
+      s.nominate = static_cast<int>(integer(v[9], index_path(path, 9), 1, 21));
+    }
     return s;
   }
   if (k == "d") {
@@ -242,7 +259,14 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
     object(doc, "link", {"g", "t", "s", "b", "p", "n", "a"});
     in.config.physics = bs::kLegacyGamePhysics;
   } else {
-    object(doc, "link", {"e", "g", "t", "ph", "s", "b", "p", "n", "a"});
+    // "c" is a key of three-cushion's links only: the other games'
+    // messages keep their list of keys.
+    const json* g = doc.is_object() ? find(doc, "g") : nullptr;
+    if (g != nullptr && g->is_string() && g->get_ref<const std::string&>() == "three_cushion") {
+      object(doc, "link", {"e", "g", "t", "ph", "s", "b", "p", "n", "c", "a"});
+    } else {
+      object(doc, "link", {"e", "g", "t", "ph", "s", "b", "p", "n", "a"});
+    }
     const std::string engine = text(required(doc, "link", "e"), "link.e");
     Reader r;
     if (!r.physics(required(doc, "link", "ph"), "link.ph", in.config.physics)) {
@@ -250,12 +274,12 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
                              ") cannot replay this v2 link made by breakshot " + engine);
     }
   }
-  in.config.game = game_type(required(doc, "link", "g"), "link.g");
-  if (in.config.game == bs::GameType::snooker) {
+  {
     const bs::GamePhysics physics = in.config.physics;
-    in.config = bs::snooker_config();
+    in.config = game_config(game_type(required(doc, "link", "g"), "link.g"));
     in.config.physics = physics;
   }
+  if (const json* c = find(doc, "c")) in.config.carom = carom_rules(*c, "link.c", in.config.game);
   in.config.table_size = table_size(required(doc, "link", "t"), "link.t", in.config.game);
   {
     Reader r;
@@ -273,7 +297,7 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
   std::unique_ptr<BsGame> g = make_game(in);
   for (std::size_t i = 0; i < actions.size(); ++i) {
     const std::string path = index_path("link.a", i);
-    const bs::Action a = link_action(actions[i], path);
+    const bs::Action a = link_action(actions[i], path, in.config.game);
     std::string why;
     if (!play(*g, a, why)) bad(path, "refused: " + why);
   }

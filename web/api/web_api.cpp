@@ -90,6 +90,11 @@ const char* bs_version(void) {
   return reply.c_str();
 }
 
+const char* bs_game_players(const char* game) {
+  static thread_local std::string reply;
+  return keep(reply, guarded([&] { return players_json(game); }));
+}
+
 char* bs_simulate(const char* scenario_json) {
   return copy_out(guarded([&] {
     const bs::Scenario s = scenario_from(scenario_json);

@@ -33,6 +33,12 @@ typedef struct BsGame BsGame;
  * where "physics" is default_physics(model) (physics.hpp) field by field. */
 const char* bs_version(void);
 
+/* The computer players a seat of `game` ("eight_ball", "nine_ball",
+ * "snooker" or "three_cushion") may be: {"game": game, "players":
+ * [names]} (the AI levels that play the game, and "baseline" where it
+ * plays), or {"error"}. Valid until the next call of bs_game_players. */
+const char* bs_game_players(const char* game);
+
 /* The result file of a scenario (docs/contract.md),
  * exactly as `breakshot simulate` writes it, or {"error"}. Release the
  * text with bs_free. */

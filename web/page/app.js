@@ -86,7 +86,7 @@ function formConfig() {
     seedCounter += 1;
     seed = String(Date.now() * 16 + (seedCounter % 16));
   }
-  return {
+  const config = {
     game: $('game-type').value,
     table: $('table-size').value,
     seed,
@@ -94,6 +94,10 @@ function formConfig() {
     players: ['human', opponent === 'friend' ? 'human' : opponent],
     physics: { airborne: $('airborne').checked },
   };
+  // three-cushion: the distance; the innings limit and the equalizing
+  // inning keep the engine's defaults
+  if (config.game === 'three_cushion') config.carom = { target: Number($('carom-target-points').value) };
+  return config;
 }
 
 /** The engine's default of a game's physics.airborne (GamePhysics), from
@@ -143,9 +147,21 @@ function route() {
   return false;
 }
 
+/** The computer players of `game` as the engine gives them
+ *  (bs_game_players), else `fallback`. */
+function computerPlayers(game, fallback) {
+  try {
+    const list = engine && engine.gamePlayers ? engine.gamePlayers(game) : null;
+    if (Array.isArray(list) && list.length) return list;
+  } catch (e) { /* an engine that cannot say: the fallback */ }
+  return fallback;
+}
+
 /** The opponents and tables the form offers for the chosen game: the AI
  *  levels and the pool tables; in snooker the engine's snooker players
- *  (bs_version's "snooker_players") and the 12 ft table. */
+ *  (bs_version's "snooker_players") and the 12 ft table; in three-cushion
+ *  the players the engine says play it (bs_game_players; the baseline
+ *  when it cannot say), the strongest chosen, and the 10 ft carom table. */
 let poolOpponents = null;
 let poolTables = null;
 function gameOptions() {
@@ -155,11 +171,22 @@ function gameOptions() {
     poolOpponents = [...opp.options].map((o) => [o.value, o.text, o.defaultSelected]);
     poolTables = [...table.options].map((o) => [o.value, o.text, o.defaultSelected]);
   }
-  const snooker = $('game-type').value === 'snooker';
-  const want = snooker
-    ? [...((engine && engine.snookerPlayers) || ['club']).map((p) => [p, p === 'baseline' ? 'Computer: baseline' : `AI: ${p}`, p === 'club']), ['friend', 'A friend (same screen)', false]]
-    : poolOpponents;
-  const tables = snooker ? [['12ft', '12 ft', true]] : poolTables;
+  const game = $('game-type').value;
+  const snooker = game === 'snooker';
+  const carom = game === 'three_cushion';
+  let want = poolOpponents;
+  if (snooker) {
+    want = [...((engine && engine.snookerPlayers) || ['club']).map((p) => [p, p === 'baseline' ? 'Computer: baseline' : `AI: ${p}`, p === 'club']), ['friend', 'A friend (same screen)', false]];
+  } else if (carom) {
+    // the AI levels that play three-cushion run from the weakest; with
+    // none, the baseline is the only computer player (and the strongest)
+    const players = computerPlayers('three_cushion', ['baseline']);
+    const levels = players.filter((p) => p !== 'baseline');
+    const strongest = levels.length ? levels[levels.length - 1] : 'baseline';
+    want = [...players.map((p) => [p, p === 'baseline' ? 'Computer: baseline' : `AI: ${p}`, p === strongest]),
+      ['friend', 'A friend (same screen)', false]];
+  }
+  const tables = snooker ? [['12ft', '12 ft', true]] : carom ? [['10ft', '10 ft carom', true]] : poolTables;
   const fill = (sel, list) => {
     const key = list.map((x) => x[0]).join(',');
     if (sel.dataset.key === key) return;
@@ -171,6 +198,7 @@ function gameOptions() {
   };
   fill(opp, want);
   fill(table, tables);
+  $('carom-target-box').hidden = !carom;
 }
 
 function syncForm() {
@@ -181,7 +209,12 @@ function syncForm() {
   if (st.players && st.players[1]) $('opponent').value = st.players[1] === 'human' ? 'friend' : st.players[1];
   const physics = ui.physics();
   if (physics) $('airborne').checked = !!physics.airborne;
-  if (ui.table && st.game !== 'snooker') {
+  if (st.game === 'three_cushion') {
+    const rules = ui.caromRules();
+    const sel = $('carom-target-points');
+    if (rules && [...sel.options].some((o) => o.value === String(rules.target))) sel.value = String(rules.target);
+  }
+  if (ui.table && st.game !== 'snooker' && st.game !== 'three_cushion') {
     const size = Math.abs(ui.table.length - 2.54) < 0.01 ? '9ft' : Math.abs(ui.table.length - 2.34) < 0.01 ? '8ft' : '7ft';
     $('table-size').value = size;
   }

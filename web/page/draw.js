@@ -91,6 +91,16 @@ export function snookerName(n) {
   return SNOOKER_NAMES[n] || `ball ${n}`;
 }
 
+// Three-cushion's balls by number (docs/rules.md): 0 the white (the
+// breaker's cue ball), 1 the yellow (the other player's), 2 the red.
+export const CAROM_COLOURS = ['#f6f3ea', '#f2c81a', '#c8141e'];
+export const CAROM_NAMES = ['white', 'yellow', 'red'];
+
+export function caromColour(n) { return CAROM_COLOURS[n] || '#888'; }
+
+/** A carom ball's name: "white", "yellow", "red". */
+export function caromName(n) { return CAROM_NAMES[n] || `ball ${n}`; }
+
 /** Draws ball n at (cx, cy) in the current canvas units with radius r. */
 export function drawBall(ctx, n, cx, cy, r, opts = {}) {
   const alpha = opts.alpha ?? 1;
@@ -106,10 +116,11 @@ export function drawBall(ctx, n, cx, cy, r, opts = {}) {
   ctx.arc(cx, cy, r, 0, Math.PI * 2);
   ctx.save();
   ctx.clip();
-  // snooker balls: plain colours, no numbers
-  const plain = !!opts.snooker;
+  // snooker and carom balls: plain colours, no numbers
+  const plain = !!opts.snooker || !!opts.carom;
   const stripe = !plain && n >= 9;
-  ctx.fillStyle = stripe ? '#f6f3ea' : (opts.colour || (plain ? snookerColour(n) : ballColour(n)));
+  const plainColour = opts.carom ? caromColour(n) : snookerColour(n);
+  ctx.fillStyle = stripe ? '#f6f3ea' : (opts.colour || (plain ? plainColour : ballColour(n)));
   ctx.fillRect(cx - r, cy - r, 2 * r, 2 * r);
   if (stripe) {
     ctx.fillStyle = ballColour(n);
@@ -232,6 +243,8 @@ export class TableView {
     this.staticLayer = null;
     // the snooker table's markings (bs_game_table's "snooker"), or null
     this.snooker = table && table.snooker ? table.snooker : null;
+    // the carom table's markings (bs_game_table's "carom"), or null
+    this.carom = table && table.carom ? table.carom : null;
   }
 
   /** Width over height of the whole table, rails included. */
@@ -353,7 +366,7 @@ export class TableView {
     }
 
     // cushions: the band out to CUSHION beyond the noses, cut by the cloth
-    ctx.fillStyle = '#15603c';
+    ctx.fillStyle = this.carom ? '#1d4a8c' : '#15603c';
     ctx.fillRect(this.sx(-CUSHION), this.sy(W + CUSHION), this.px(L + 2 * CUSHION), this.px(W + 2 * CUSHION));
     ctx.strokeStyle = 'rgba(0, 0, 0, 0.45)';
     ctx.lineWidth = Math.max(1, s * 0.003);
@@ -363,8 +376,9 @@ export class TableView {
     this.pathOutline(ctx);
     const cloth = ctx.createRadialGradient(this.sx(L / 2), this.sy(W / 2), this.px(0.1),
       this.sx(L / 2), this.sy(W / 2), this.px(L * 0.62));
-    cloth.addColorStop(0, '#22925c');
-    cloth.addColorStop(1, '#1a7a4b');
+    // carom cloth is blue, pool and snooker cloth green
+    cloth.addColorStop(0, this.carom ? '#2f6cc4' : '#22925c');
+    cloth.addColorStop(1, this.carom ? '#255aa8' : '#1a7a4b');
     ctx.fillStyle = cloth;
     ctx.fill();
     // the noses' shadow on the cloth
@@ -418,6 +432,11 @@ export class TableView {
       this.staticLayer = layer;
       return;
     }
+    if (this.carom) {
+      this.drawCaromMarks(ctx);
+      this.staticLayer = layer;
+      return;
+    }
 
     // diamonds: 1/8 of the length on the long rails, 1/4 of the width on the short
     const d = CUSHION + (FRAME - CUSHION) * 0.5;
@@ -463,6 +482,47 @@ export class TableView {
     if (t.foot_spot) spot(t.foot_spot, 0.006);
     if (t.head_spot) spot(t.head_spot, 0.004);
     this.staticLayer = layer;
+  }
+
+  /** The carom table's diamonds (on the rails, level with the engine's
+   *  points on the cushion noses) and its five spots: top, centre, bottom
+   *  and the two starting spots. */
+  drawCaromMarks(ctx) {
+    const m = this.carom;
+    const L = this.table.length;
+    const W = this.table.width;
+    const d = CUSHION + (FRAME - CUSHION) * 0.5;
+    const eps = 1e-6;
+    for (const [px, py] of m.diamonds || []) {
+      let x = px;
+      let y = py;
+      if (py <= eps) y = -d;
+      else if (py >= W - eps) y = W + d;
+      else if (px <= eps) x = -d;
+      else if (px >= L - eps) x = L + d;
+      const cx = this.sx(x);
+      const cy = this.sy(y);
+      const r = Math.max(2, this.px(DIAMOND));
+      ctx.beginPath();
+      ctx.moveTo(cx, cy - r);
+      ctx.lineTo(cx + r * 0.62, cy);
+      ctx.lineTo(cx, cy + r);
+      ctx.lineTo(cx - r * 0.62, cy);
+      ctx.closePath();
+      ctx.fillStyle = '#efe8d6';
+      ctx.fill();
+      ctx.strokeStyle = 'rgba(0, 0, 0, 0.35)';
+      ctx.lineWidth = 0.75;
+      ctx.stroke();
+    }
+    const spots = [m.top_spot, m.centre_spot, m.bottom_spot, ...(m.starting_spots || [])];
+    ctx.fillStyle = 'rgba(255, 255, 255, 0.7)';
+    for (const p of spots) {
+      if (!p) continue;
+      ctx.beginPath();
+      ctx.arc(this.sx(p[0]), this.sy(p[1]), Math.max(1.6, this.px(0.0055)), 0, Math.PI * 2);
+      ctx.fill();
+    }
   }
 
   /** The baulk line, the D and the six colour spots (snooker), to scale. */
@@ -556,6 +616,7 @@ export class TableView {
     const callBall = scene.call ? scene.call.ball : null;
     const nom = scene.nominated && scene.nominated.ball != null ? scene.nominated : null;
     const snooker = !!this.snooker;
+    const carom = !!this.carom;
     const ringOf = (n) => {
       if (callBall != null && n === callBall) return scene.call.ballAuto ? 'rgba(255, 214, 90, 0.6)' : '#ffd65a';
       if (nom && n === nom.ball) return nom.auto ? 'rgba(255, 214, 90, 0.6)' : '#ffd65a';
@@ -572,13 +633,14 @@ export class TableView {
         alpha: b.alpha,
         ring: ringOf(b.n),
         snooker,
+        carom,
       });
     }
     flying.sort((p, q) => p.z - q.z);
     for (const b of flying) drawFlightShadow(ctx, this.sx(b.x), this.sy(b.y), rpx, b.z);
     for (const b of flying) {
       drawBall(ctx, b.n, this.sx(b.x), this.sy(b.y) - this.px(flightLift(b.z)),
-        rpx * (b.scale ?? 1) * flightScale(b.z), { alpha: b.alpha, shadow: false, snooker });
+        rpx * (b.scale ?? 1) * flightScale(b.z), { alpha: b.alpha, shadow: false, snooker, carom });
     }
     // What the last frame drew in flight (the page's tests read it).
     this.flight = { count: flying.length, maxZ: flying.reduce((m, b) => Math.max(m, b.z), 0) };
@@ -604,6 +666,24 @@ export class TableView {
     }
 
     if (aim && aim.stick) this.drawStick(aim, rpx);
+
+    // three-cushion: the cushions of the struck ball so far, while it runs
+    if (scene.counter) {
+      ctx.save();
+      const fs = Math.max(13, Math.min(22, this.cssW / 45));
+      ctx.font = `700 ${fs}px system-ui, -apple-system, "Segoe UI", Arial, sans-serif`;
+      ctx.textAlign = 'left';
+      ctx.textBaseline = 'middle';
+      const w = ctx.measureText(scene.counter.text).width + fs;
+      const x = this.sx(0) + fs * 0.5;
+      const y = this.sy(this.table.width) + fs * 1.1;
+      ctx.fillStyle = 'rgba(10, 14, 18, 0.7)';
+      roundRect(ctx, x, y - fs * 0.8, w, fs * 1.6, fs * 0.35);
+      ctx.fill();
+      ctx.fillStyle = scene.counter.colour || '#ffe9a8';
+      ctx.fillText(scene.counter.text, x + fs * 0.5, y + 1);
+      ctx.restore();
+    }
 
     if (scene.banner) {
       ctx.save();

@@ -93,6 +93,7 @@ function rawApi(M) {
   const c = (name, ret, args) => M.cwrap(name, ret, args);
   const fn = {
     version: c('bs_version', 'number', []),
+    gamePlayers: c('bs_game_players', 'number', ['number']),
     simulate: c('bs_simulate', 'number', ['number']),
     free: c('bs_free', null, ['number']),
     playbackNew: c('bs_playback_new', 'number', ['number']),
@@ -136,6 +137,7 @@ function rawApi(M) {
   };
   return {
     version: () => str(fn.version()),
+    gamePlayers: (game) => withStrings([game], (p) => str(fn.gamePlayers(p))),
     simulate: (text) =>
       withStrings([text], (p) => {
         const out = fn.simulate(p);
@@ -287,6 +289,9 @@ async function instantiate(options) {
     aiBudgets: info.ai_budgets,
     // the computer players of a snooker seat
     snookerPlayers: info.snooker_players,
+    // the computer players a seat of `game` may be (bs_game_players): the
+    // AI levels that play it, and "baseline" where it plays
+    gamePlayers: (game) => parse(raw.gamePlayers(String(game))).players,
     // The engine's defaults (default_physics per model, the default ball):
     // the one home of them, so the page never keeps its own copy.
     defaults: info.defaults,

@@ -1,12 +1,13 @@
-// The game tab: a game of 8-ball, 9-ball or snooker against an AI level
-// (snooker: the baseline player) or a friend on the same screen. The
+// The game tab: a game of 8-ball, 9-ball, snooker or three-cushion
+// against an AI level or the baseline player (the computer players the
+// engine says play the game) or a friend on the same screen. The
 // engine (engine.js over the wasm build) does every bit of physics and
 // every ruling; this file takes input, draws the engine's positions and
 // keeps the log. Nothing here reaches
 // the engine through Math.random: the seed comes from the URL, the form
 // or the clock at new-game time, and the link keeps it.
 
-import { TableView, aimGeometry, drawBall, snookerName } from './draw.js';
+import { TableView, aimGeometry, drawBall, snookerName, caromName } from './draw.js';
 
 export const AI_LEVELS = ['beginner', 'amateur', 'club', 'expert', 'champion'];
 
@@ -45,6 +46,8 @@ const FOUL_WORDS = {
   in_off: 'in-off (the cue ball fell)',
   wrong_ball_potted: 'a ball not on was potted',
   free_ball_snooker: 'the free ball snookered the opponent',
+  wrong_cue_ball: 'the wrong cue ball was struck',
+  push_through: 'pushed through (the tip still on the ball)',
 };
 
 const CHOICE_WORDS = {
@@ -67,7 +70,46 @@ const PHASE_WORDS = {
   foul_choice: 'after the foul: play on, or have the other player play again',
 };
 
-const GAME_NAMES = { eight_ball: '8-ball', nine_ball: '9-ball', snooker: 'Snooker' };
+const GAME_NAMES = { eight_ball: '8-ball', nine_ball: '9-ball', snooker: 'Snooker', three_cushion: 'Three-cushion' };
+
+const CAROM_BALL = { white: 0, yellow: 1, red: 2 };
+
+/** Three-cushion's count as the ball goes, from the playback's events
+ *  (result-file form: carom balls are "white", "yellow", "red"): the
+ *  cushions the struck ball touched before its first contact with the
+ *  second object ball, and the object balls it touched, in order. The
+ *  rules count the same way (docs/rules.md, "Three-cushion"). */
+export function caromCount(events, struck, count = { cushions: 0, hit: [], done: false }) {
+  for (const e of events) {
+    if (count.done) break;
+    const balls = (e.balls || []).map((id) => CAROM_BALL[id]);
+    if (e.type === 'ball_cushion' && balls[0] === struck) {
+      count.cushions += 1;
+    } else if (e.type === 'ball_ball' && balls.includes(struck)) {
+      const other = balls[0] === struck ? balls[1] : balls[0];
+      if (other != null && other !== struck && !count.hit.includes(other)) {
+        count.hit.push(other);
+        if (count.hit.length === 2) count.done = true;
+      }
+    }
+  }
+  return count;
+}
+
+/** The live count in words: "2 cushions", "3 cushions · red, then yellow". */
+/** A shot's ruling in a word or two: "Point", "No point", "Foul: no point". */
+function caromCall(ruling) {
+  const k = ruling.carom || {};
+  if (k.point) return 'Point';
+  if (ruling.fouls && ruling.fouls.length) return 'Foul: no point';
+  return 'No point';
+}
+
+function countWords(c) {
+  const n = `${c.cushions} cushion${c.cushions === 1 ? '' : 's'}`;
+  if (!c.hit.length) return n;
+  return `${n} · ${c.hit.map(caromName).join(', then ')}`;
+}
 
 /** The #power slider's value is the cue speed in m/s. */
 export function speedFromPower(p) {
@@ -301,6 +343,15 @@ export class GameUI {
 
   snooker() { return !!this.st && this.st.game === 'snooker'; }
 
+  carom() { return !!this.st && this.st.game === 'three_cushion'; }
+
+  /** The ball the player to act strikes: the cue ball (0); in
+   *  three-cushion the player's own ball (the state's carom_figures). */
+  cueN() {
+    if (this.carom() && this.st.carom_figures) return this.st.carom_figures.cue_ball;
+    return 0;
+  }
+
   /** The decisions on offer now (snooker's concede, which a shooter may
    *  always take, aside while a shot is due). */
   decisions() {
@@ -345,15 +396,16 @@ export class GameUI {
   objectBalls() {
     const out = [];
     if (!this.st) return out;
+    const cue = this.cueN();
     this.st.position.forEach((p, n) => {
-      if (n > 0 && this.st.on_table[n]) out.push({ n, x: p[0], y: p[1] });
+      if (n !== cue && this.st.on_table[n]) out.push({ n, x: p[0], y: p[1] });
     });
     return out;
   }
 
   cuePos() {
     if (this.placePos) return this.placePos;
-    const c = ballOf(this.st, 0);
+    const c = ballOf(this.st, this.cueN());
     if (c && c.on) return { x: c.x, y: c.y };
     return null;
   }
@@ -369,7 +421,7 @@ export class GameUI {
     if (legal.place && legal.place !== 'none') this.placePos = this.defaultPlacement(legal);
     if (!this.st) return;
     if (this.st.phase === 'break_shot') {
-      this.aim.speed = this.snooker() ? SNOOKER_BREAK_SPEED : BREAK_SPEED;
+      this.aim.speed = this.snooker() ? SNOOKER_BREAK_SPEED : this.carom() ? DEFAULT_SPEED : BREAK_SPEED;
     } else if (fresh || this.aim.speed > 6.5) {
       this.aim.speed = DEFAULT_SPEED;
     }
@@ -419,7 +471,8 @@ export class GameUI {
     const cue = this.cuePos();
     if (!cue) return;
     const legal = this.legal();
-    const targets = new Set(legal.targets || []);
+    // three-cushion: the break is played at the red (2), directly
+    const targets = new Set(this.carom() ? (this.st.phase === 'break_shot' ? [2] : []) : legal.targets || []);
     let best = null;
     let bestD = Infinity;
     for (const b of this.objectBalls()) {
@@ -586,7 +639,7 @@ export class GameUI {
       this.maybeAI();
     };
     if (reply.kind === 'shoot') {
-      this.animate(reply.index, reply.numbers, settle);
+      this.animate(reply.index, reply.numbers, settle, false, entry.ruling);
     } else {
       settle();
     }
@@ -692,7 +745,7 @@ export class GameUI {
 
   // ---- animation ----
 
-  animate(index, numbers, done, replay = false) {
+  animate(index, numbers, done, replay = false, ruling = null) {
     let pb;
     try {
       pb = this.g.shotPlayback(index);
@@ -702,6 +755,12 @@ export class GameUI {
       return;
     }
     this.anim = { pb, numbers: numbers || [], t: 0, last: null, frame: null, done, index, gone: new Map(), replay: !!replay };
+    // three-cushion: the struck ball's cushions counted as the events come
+    const k = ruling && ruling.carom;
+    if (this.carom() && k) {
+      this.anim.carom = { struck: k.cue_ball, seen: 0, count: caromCount([], k.cue_ball), ruling };
+      this.showCount(this.anim.carom);
+    }
     try {
       this.anim.frame = pb.frame(0);
     } catch (e) {
@@ -740,6 +799,12 @@ export class GameUI {
         }
       });
     }
+    if (a.carom && a.frame.events > a.carom.seen) {
+      const evs = a.pb.events(a.carom.seen).events || [];
+      a.carom.seen = a.frame.events;
+      caromCount(evs, a.carom.struck, a.carom.count);
+      this.showCount(a.carom);
+    }
     const fading = [...a.gone.values()].some((g) => a.t - g.t < FADE);
     if (a.frame.at_rest && !fading) this.finishAnimation(null);
   }
@@ -754,10 +819,34 @@ export class GameUI {
     return best;
   }
 
+  /** Three-cushion's live count in the score panel; once the balls stop,
+   *  the engine's ruling: its cushions and point or no point. */
+  showCount(c, final = false) {
+    const el = $('carom-cushions');
+    const call = $('carom-call');
+    if (!el || !call) return;
+    const k = c.ruling.carom;
+    if (final) {
+      el.textContent = countWords({ cushions: k.cushions, hit: k.hit || [] });
+      call.textContent = caromCall(c.ruling);
+      call.className = k.point ? 'point' : 'no-point';
+    } else {
+      el.textContent = countWords(c.count);
+      call.textContent = c.count.done ? (c.count.cushions >= 3 ? 'three cushions first…' : 'too few cushions…') : 'running…';
+      call.className = '';
+    }
+  }
+
   finishAnimation(err) {
     const a = this.anim;
     if (!a) return;
     this.anim = null;
+    if (a.carom) {
+      // what the page counted as the ball went (the tests compare it with
+      // the engine's ruling)
+      this.lastCount = { cushions: a.carom.count.cushions, hit: [...a.carom.count.hit] };
+      this.showCount(a.carom, true);
+    }
     try { a.pb.free(); } catch (e) { /* gone */ }
     if (err) this.showError(`Playback: ${message(err)}`);
     a.done();
@@ -781,7 +870,7 @@ export class GameUI {
       this.updatePanel();
       this.requestRender();
       this.maybeAI();
-    }, true);
+    }, true, entry.ruling);
   }
 
   // ---- drawing ----
@@ -862,7 +951,9 @@ export class GameUI {
           }
         }
       });
-      scene.balls.sort((p, q) => (p.n === 0) - (q.n === 0));
+      const cue = this.anim.carom ? this.anim.carom.struck : 0;
+      scene.balls.sort((p, q) => (p.n === cue) - (q.n === cue));
+      if (this.anim.carom) scene.counter = { text: countWords(this.anim.carom.count) };
       return scene;
     }
     this.st.position.forEach((p, n) => {
@@ -984,6 +1075,7 @@ export class GameUI {
     }
     this.drawTray();
     this.updateScore();
+    this.updateCaromScore();
     if (st.phase === 'game_over') {
       const who = st.winner >= 0 ? `${this.seatName(st.winner)} wins` : 'Draw';
       turn.textContent = `Game over: ${who}.${st.result ? ` ${capital(st.result)}.` : ''}`;
@@ -998,6 +1090,7 @@ export class GameUI {
         if (legal.place === 'kitchen') what += ' — cue ball in hand behind the head string';
         else if (legal.place === 'anywhere') what += ' — cue ball in hand anywhere';
         else if (legal.place === 'd') what += ' — cue ball in hand in the D';
+        if (this.carom() && st.carom_figures) what += ` — plays the ${caromName(st.carom_figures.cue_ball)}`;
       }
       turn.textContent = what;
     }
@@ -1008,13 +1101,17 @@ export class GameUI {
       else bits.push(`${this.shortName(0)}: ${g[0]}, ${this.shortName(1)}: ${g[1]}`);
     } else if (st.game === 'snooker') {
       if (st.phase !== 'game_over') bits.push(`on: ${this.ballOnWords()}`);
+    } else if (st.game === 'three_cushion') {
+      const k = st.carom || { score: [0, 0], innings: [0, 0] };
+      bits.push(`score ${k.score[0]} – ${k.score[1]}`);
+      if (k.equalizing && st.phase !== 'game_over') bits.push('the equalizing inning');
     } else {
       const lowest = (legal.targets && legal.targets.length) ? legal.targets[0] : null;
       if (lowest != null && st.phase !== 'game_over') bits.push(`ball on: ${lowest}`);
       if (st.push_out_allowed && st.phase !== 'game_over') bits.push('push-out allowed');
     }
     const f = st.fouls_in_a_row || [0, 0];
-    if (st.game !== 'snooker') bits.push(`fouls in a row: ${f[0]} – ${f[1]}`);
+    if (st.game !== 'snooker' && st.game !== 'three_cushion') bits.push(`fouls in a row: ${f[0]} – ${f[1]}`);
     bits.push(`shots: ${st.shots}`);
     if (this.shareNote) bits.push(this.shareNote);
     info.textContent = bits.join(' · ');
@@ -1061,6 +1158,58 @@ export class GameUI {
     $('score-snookers').textContent = needs.length ? needs.join(', ') : 'none';
   }
 
+  /** Three-cushion's score panel: each player's points, innings, general
+   *  average and highest run (the state's carom part and carom_figures),
+   *  the target, the run in progress. */
+  updateCaromScore() {
+    const box = $('carom-score');
+    const st = this.st;
+    if (!box) return;
+    const carom = !!st && st.game === 'three_cushion' && !!st.carom;
+    box.hidden = !carom;
+    if (!carom) return;
+    const k = st.carom;
+    const fig = st.carom_figures || { cue_ball: 0, general_average: [0, 0], highest_run: [0, 0] };
+    for (const seat of [0, 1]) {
+      // the breaker plays the white, the other player the yellow
+      const ball = seat === st.breaker ? 0 : 1;
+      const dot = $(`carom-ball-${seat}`);
+      dot.style.background = ball === 0 ? '#f6f3ea' : '#f2c81a';
+      dot.title = caromName(ball);
+      $(`carom-name-${seat}`).textContent = this.shortName(seat);
+      $(`carom-points-${seat}`).textContent = String(k.score[seat]);
+      $(`carom-innings-${seat}`).textContent = String(k.innings[seat]);
+      $(`carom-average-${seat}`).textContent = fig.general_average[seat].toFixed(3);
+      $(`carom-high-${seat}`).textContent = String(fig.highest_run[seat]);
+      $(`carom-row-${seat}`).classList.toggle('to-play', st.phase !== 'game_over' && st.player === seat);
+    }
+    const rules = this.caromRules();
+    $('carom-target').textContent = rules ? `${rules.target} points${rules.innings_limit ? `, ${rules.innings_limit} innings` : ''}` : '—';
+    $('carom-run').textContent = st.phase === 'game_over' ? '—' : String(k.run);
+    // the last shot's count and ruling (the live count while a shot runs)
+    const last = [...this.log].reverse().find((e) => e.kind === 'shoot' && e.ruling && e.ruling.carom);
+    if (last) {
+      this.showCount({ ruling: last.ruling }, true);
+    } else {
+      $('carom-cushions').textContent = '–';
+      $('carom-call').textContent = '–';
+      $('carom-call').className = '';
+    }
+  }
+
+  /** The game's three-cushion rules (the record's config "carom"), or null. */
+  caromRules() {
+    if (this.caromRulesOf === this.g) return this.caromRulesCache;
+    let rules = null;
+    try {
+      const rec = this.g.record();
+      rules = (rec.config && rec.config.carom) || null;
+    } catch (e) { /* none */ }
+    this.caromRulesOf = this.g;
+    this.caromRulesCache = rules;
+    return rules;
+  }
+
   fillNominateSelect() {
     const sel = $('nominate');
     const list = this.legal().nominate || [];
@@ -1082,7 +1231,7 @@ export class GameUI {
   drawTray() {
     const c = $('tray');
     if (!c || !this.st) return;
-    c.hidden = this.st.game === 'snooker';
+    c.hidden = this.st.game === 'snooker' || this.st.game === 'three_cushion';
     if (c.hidden) return;
     const dpr = Math.min(3, window.devicePixelRatio || 1);
     const W = 320;
@@ -1199,7 +1348,8 @@ export class GameUI {
       w.textContent = `${this.shortName(r.winner)} wins. `;
       li.appendChild(w);
     } else if (e.kind === 'shoot' && !/(shoots again|plays on|to shoot|to break|breaks|cue ball in hand|wins|drawn|passes|decides|chooses|may push out|shoots from here)/.test(text)
-      && !(this.snooker() && /(to play|is on |may play on|awarded)/.test(text))) {
+      && !(this.snooker() && /(to play|is on |may play on|awarded)/.test(text))
+      && !(this.carom() && /(plays inning|plays on|equalizing)/.test(text))) {
       // the ruling's words usually say whose turn it is; if not, say it
       const m = document.createElement('span');
       m.className = 'meta';

@@ -356,6 +356,151 @@ test('snooker: the D, a red potted, the score panel and the nomination of a colo
   await context.close();
 });
 
+// Three-cushion's panel against the state: points, innings, general
+// average (3 decimals) and highest run of each player.
+// An aim from the player's ball that meets no ball (the page's aim geometry).
+const missPhi = (page) => page.evaluate(() => {
+  const ui = window.breakshot.ui;
+  const keep = ui.aim.phi;
+  let phi = null;
+  for (let p = 0; p < 360 && phi == null; p += 7.5) {
+    ui.aim.phi = p;
+    if (!ui.geometry().hit) phi = p;
+  }
+  ui.aim.phi = keep;
+  return phi;
+});
+
+async function checkCaromPanel(page, what) {
+  const st = await page.evaluate(() => window.breakshot.state());
+  for (const seat of [0, 1]) {
+    const got = await page.evaluate((s) => ['points', 'innings', 'average', 'high'].map((k) => document.getElementById(`carom-${k}-${s}`).textContent), seat);
+    const want = [String(st.carom.score[seat]), String(st.carom.innings[seat]),
+      st.carom_figures.general_average[seat].toFixed(3), String(st.carom_figures.highest_run[seat])];
+    check(JSON.stringify(got) === JSON.stringify(want), `${what}: the panel shows ${got} for player ${seat + 1}, the engine ${want}`);
+  }
+  return st;
+}
+
+test('three-cushion: the carom table, a point counted cushion by cushion, the score, innings and average, a link', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  // Three-cushion in the form: its opponents are the players the engine
+  // says play it (the strongest chosen), its table the 10 ft carom table.
+  await page.click('#new-game');
+  await page.selectOption('#game-type', 'three_cushion');
+  const players = await page.evaluate(() => window.breakshot.engine.gamePlayers('three_cushion'));
+  check(players.includes('baseline'), 'the engine has no baseline for three-cushion: ' + players);
+  const opponents = await page.$$eval('#opponent option', (os) => os.map((o) => o.value));
+  check(JSON.stringify(opponents) === JSON.stringify([...players, 'friend']), 'three-cushion opponents: ' + opponents);
+  const levels = players.filter((p) => p !== 'baseline');
+  const strongest = levels.length ? levels[levels.length - 1] : 'baseline';
+  check(await page.inputValue('#opponent') === strongest, 'the opponent chosen is not the strongest: ' + await page.inputValue('#opponent'));
+  check(JSON.stringify(await page.$$eval('#table-size option', (os) => os.map((o) => o.value))) === '["10ft"]',
+    'three-cushion tables are not 10ft only');
+  check(await page.isVisible('#carom-target-points'), 'no target for three-cushion in the form');
+  await page.selectOption('#carom-target-points', '10');
+  await page.fill('#seed', '11');
+  await newGame(page, { game: 'three_cushion', opponent: 'friend', table: '10ft' });
+  await page.selectOption('#playback-speed', '0.5');
+
+  // The carom table: no pockets, its spots and diamonds; carom balls.
+  const t = await page.evaluate(() => window.breakshot.game.table());
+  check(t.pockets.length === 0 && t.carom && t.carom.diamonds.length === 20, 'the table is not the carom table: ' + JSON.stringify(t.carom));
+  check(t.ball_radius === 0.03075, 'the balls are not 61.5 mm: ' + t.ball_radius);
+  let st = await checkCaromPanel(page, 'at the start');
+  check(await page.isVisible('#carom-score') && !(await page.isVisible('#score')) && !(await page.isVisible('#tray')),
+    'the three-cushion panel is not the one shown');
+  check(await page.textContent('#carom-target') === '10 points, 50 innings', 'the target shows ' + await page.textContent('#carom-target'));
+  check(/plays the white/.test(await page.textContent('#status-turn')), 'the status does not say the breaker plays the white: ' + await page.textContent('#status-turn'));
+  check(await page.evaluate(() => window.breakshot.ui.cuePos().x === window.breakshot.state().position[0][0]), 'the aim is not from the white');
+
+  // A scoring shot: the baseline's choice for this human seat (no noise),
+  // played through the page's aim and Shoot button.
+  const hint = await page.evaluate(() => window.breakshot.game.aiAction('baseline').action);
+  await page.evaluate((s) => {
+    const ui = window.breakshot.ui;
+    ui.aim = { ...s };
+    ui.syncControls();
+    ui.requestRender();
+  }, hint.strike);
+  await page.click('#shoot');
+  // While the balls run the cushions are counted as the events come.
+  await page.waitForFunction(() => window.breakshot.busy() && /^[1-9]\d* cushion/.test(document.getElementById('carom-cushions').textContent), null, { timeout: 20000 });
+  const live = await page.textContent('#carom-cushions');
+  check(await page.textContent('#carom-call') !== 'Point' && await page.textContent('#carom-call') !== 'No point',
+    'the ruling is shown before the balls stop');
+  await page.screenshot({ path: path.join(shots, 'carom-running.png') });
+  await idle(page);
+  let rec = await page.evaluate(() => window.breakshot.game.record());
+  let k = rec.actions[0].ruling.carom;
+  check(k && k.cue_ball === 0, 'the shot did not strike the white: ' + JSON.stringify(k));
+  const counted = await page.evaluate(() => window.breakshot.ui.lastCount);
+  check(counted.cushions === k.cushions && JSON.stringify(counted.hit) === JSON.stringify(k.hit),
+    `the page counted ${JSON.stringify(counted)} as the ball went, the engine ruled ${JSON.stringify(k)} (live: ${live})`);
+  check(k.point, 'the baseline\'s shot did not score: ' + rec.actions[0].ruling.text);
+  check((await page.textContent('#carom-cushions')).startsWith(`${k.cushions} cushion`), 'the count after the shot: ' + await page.textContent('#carom-cushions'));
+  check(await page.textContent('#carom-call') === 'Point', 'the ruling in words: ' + await page.textContent('#carom-call'));
+  st = await checkCaromPanel(page, 'after the point');
+  check(st.carom.score[0] === 1 && st.carom_figures.highest_run[0] === 1 && st.player === 0, 'a point did not score 1 and keep the turn');
+  check(await page.textContent('#carom-run') === '1', 'the run: ' + await page.textContent('#carom-run'));
+  const log = await page.textContent('#ruling-log');
+  check(/point/i.test(log), 'the log has no point: ' + log);
+
+  // A shot that touches nothing ends the inning: the other player plays
+  // the yellow, and the averages follow.
+  const away = await missPhi(page);
+  check(away != null, 'no aim misses every ball');
+  const miss = await page.evaluate((phi) => window.breakshot.act({ type: 'shoot', strike: { speed: 0.4, phi, theta: 0, a: 0, b: 0 }, call: null, safety: false, push_out: false }), away);
+  check(!miss.error, 'the miss was refused: ' + miss.error);
+  await idle(page);
+  st = await checkCaromPanel(page, 'after the miss');
+  check(st.player === 1 && st.carom_figures.cue_ball === 1, 'the turn did not pass to the yellow');
+  check(await page.textContent('#carom-call') === 'No point', 'the miss is ruled ' + await page.textContent('#carom-call'));
+  check(/plays the yellow/.test(await page.textContent('#status-turn')), 'the status does not say the yellow: ' + await page.textContent('#status-turn'));
+  await page.screenshot({ path: path.join(shots, 'carom-page.png') });
+  await page.locator('#table').screenshot({ path: path.join(shots, 'carom-table.png') });
+
+  // The link reproduces the game, the rules with it.
+  const link = await page.evaluate(() => window.breakshot.link());
+  const two = await openPage(browser, url + '#game=' + link);
+  await idle(two.page);
+  const got = await checkCaromPanel(two.page, 'opened from the link');
+  check(ballsOf(got) === ballsOf(st) && JSON.stringify(got.carom) === JSON.stringify(st.carom), 'the linked game differs');
+  check(await two.page.inputValue('#game-type') === 'three_cushion' && await two.page.inputValue('#carom-target-points') === '10',
+    'the form does not show the linked game');
+  // A phone-sized page.
+  await two.page.setViewportSize({ width: 390, height: 844 });
+  await two.page.waitForTimeout(300);
+  await two.page.screenshot({ path: path.join(shots, 'carom-phone.png'), fullPage: true });
+  const wide = await two.page.evaluate(() => document.documentElement.scrollWidth);
+  check(wide <= 390, 'the phone page scrolls sideways: ' + wide + ' px');
+  const all = problems.concat(two.problems);
+  check(all.length === 0, all.join('\n'));
+  await two.context.close();
+  await context.close();
+});
+
+test('three-cushion against the computer: its shot is played and ruled', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  await page.click('#new-game');
+  await page.selectOption('#game-type', 'three_cushion');
+  const opponent = await page.inputValue('#opponent');
+  await page.fill('#seed', '12');
+  await newGame(page, { game: 'three_cushion', opponent, table: '10ft' });
+  // Player 1 misses on purpose; the computer plays the yellow.
+  const miss = await page.evaluate((phi) => window.breakshot.act({ type: 'shoot', strike: { speed: 0.4, phi, theta: 0, a: 0, b: 0 }, call: null, safety: false, push_out: false }),
+    await missPhi(page));
+  check(!miss.error, 'the miss was refused: ' + miss.error);
+  await page.waitForFunction(() => window.breakshot.state().actions >= 2, null, { timeout: 60000 });
+  await idle(page);
+  const rec = await page.evaluate(() => window.breakshot.game.record());
+  const ai = rec.actions[1];
+  check(ai.player === 1 && ai.ruling.carom && ai.ruling.carom.cue_ball === 1, 'the computer did not play the yellow: ' + JSON.stringify(ai.ruling));
+  await checkCaromPanel(page, 'after the computer\'s shot');
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
 test('the lab runs the two-ball example and draws its energy graph', async ({ browser, url }) => {
   const { page, context, problems } = await openPage(browser, url);
   await page.click('#tab-lab');

@@ -226,6 +226,9 @@ for (const step of script.steps) {
     case 'version':
       print('version', raw.version());
       break;
+    case 'players':
+      print('players', raw.gamePlayers(step.game));
+      break;
     case 'simulate_dir': {
       const names = fs.readdirSync(path.join(opts.root, step.dir)).filter((n) => n.length > 5 && n.endsWith('.json'));
       names.sort((a, b) => Buffer.compare(Buffer.from(a), Buffer.from(b)));  // bytes, as std::sort

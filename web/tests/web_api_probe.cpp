@@ -14,6 +14,7 @@
 // Steps ({"do": KIND, ...}); handles are named by "as" and referred to by
 // "pb" (playbacks) and "game":
 //   version                          bs_version
+//   players {game}                   bs_game_players(game; null: NULL)
 //   simulate_dir {dir}               bs_simulate of every DIR/*.json, by name
 //   simulate_text {text}             bs_simulate of the text
 //   playback_new {as, file}          bs_playback_new; {"ok":true} or bs_last_error
@@ -106,6 +107,9 @@ class Probe {
     const std::string kind = step.at("do").get<std::string>();
     if (kind == "version") {
       print("version", bs_version());
+    } else if (kind == "players") {
+      const json& game = step.at("game");
+      print("players", bs_game_players(game.is_null() ? nullptr : game.get<std::string>().c_str()));
     } else if (kind == "simulate_dir") {
       const std::string dir = step.at("dir").get<std::string>();
       std::vector<std::string> names;
