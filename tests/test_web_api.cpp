@@ -370,7 +370,7 @@ TEST(WebApi, LinkErrorsNameTheActionRefused) {
        "link.c: unknown field"},
       {R"({"g":"three_cushion","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
        "link.t: unknown table size \"9ft\" (expected \"10ft\")"},
-      {R"({"g":"three_cushion","t":"10ft","s":"1","b":0,"p":["human","club"],"a":[]})",
+      {R"({"g":"three_cushion","t":"10ft","s":"1","b":0,"p":["human","shark"],"a":[]})",
        "link.p[1]: \"human\" or a player of three_cushion ("},
       {R"({"g":"eight_ball","t":"9ft","s":"x1","b":0,"p":["human","human"],"a":[]})",
        "link.s: expected a seed: a decimal integer in [0, 2^64), not \"x1\""},
