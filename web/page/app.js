@@ -161,7 +161,8 @@ function computerPlayers(game, fallback) {
  *  levels and the pool tables; in snooker the engine's snooker players
  *  (bs_version's "snooker_players") and the 12 ft table; in three-cushion
  *  the players the engine says play it (bs_game_players; the baseline
- *  when it cannot say), the strongest chosen, and the 10 ft carom table. */
+ *  when it cannot say), the strongest chosen unless the opponent chosen
+ *  before plays it too, and the 10 ft carom table. */
 let poolOpponents = null;
 let poolTables = null;
 function gameOptions() {
