@@ -13,6 +13,7 @@
 #include <functional>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -252,6 +253,144 @@ TEST(MatchChunks, AFailingGameIsNamedWithItsSeedWhenAsked) {
   }
 }
 
+// Games played at once (MatchOptions::jobs) -------------------------------
+
+/// Plays `o` with fresh players from their names, keeping each record's
+/// text and the order the sink received the games in.
+MatchSummary play_jobs(const MatchOptions& o, std::map<int, std::string>& records,
+                       std::vector<int>& order) {
+  const PlayerFactory make = [&o](int seat) {
+    return make_player(o.players[static_cast<std::size_t>(seat)], 1);
+  };
+  return play_match(o, make, [&](int g, const GameRecord& r) {
+    order.push_back(g);
+    records[g] = write_record(r);
+  });
+}
+
+/// The same match on 1 and on `jobs` game threads: the same summary text,
+/// the same records, and the sink called in index order.
+void check_jobs_match_one_thread(MatchOptions o, int jobs) {
+  o.jobs = 1;
+  std::map<int, std::string> one_records;
+  std::vector<int> one_order;
+  const std::string one = match_summary_json(play_jobs(o, one_records, one_order));
+  o.jobs = jobs;
+  std::map<int, std::string> many_records;
+  std::vector<int> many_order;
+  const MatchSummary many = play_jobs(o, many_records, many_order);
+  EXPECT_EQ(match_summary_json(many), one);
+  EXPECT_EQ(many_records, one_records);
+  std::vector<int> expected(static_cast<std::size_t>(o.games));
+  for (int i = 0; i < o.games; ++i) expected[static_cast<std::size_t>(i)] = o.first_game + i;
+  EXPECT_EQ(many_order, expected);
+  EXPECT_EQ(one_order, expected);
+}
+
+TEST(MatchJobs, SummariesAndRecordsAreThoseOfOneThread) {
+  // More game threads than games and than cores, and a first game past 0.
+  check_jobs_match_one_thread(options(GameType::eight_ball, "amateur", 3, 5), 3);
+  check_jobs_match_one_thread(options(GameType::nine_ball, "baseline", 0, 7), 4);
+  check_jobs_match_one_thread(options(GameType::nine_ball, "baseline", 0, 2), 8);
+  MatchOptions snooker = options(GameType::snooker, "baseline", 1, 3);
+  snooker.table_size = "12ft";
+  check_jobs_match_one_thread(snooker, 2);
+  MatchOptions carom = options(GameType::three_cushion, "baseline", 0, 3);
+  carom.table_size = "10ft";
+  carom.carom.target = 3;
+  carom.carom.innings_limit = 10;
+  check_jobs_match_one_thread(carom, 3);
+}
+
+TEST(MatchJobs, NamedPlayersMatchOnAnyNumberOfThreads) {
+  MatchOptions o = options(GameType::nine_ball, "beginner", 0, 4);
+  o.jobs = 1;
+  const std::string one = match_summary_json(play_match(o));
+  for (const int jobs : {0, 2, 4}) {
+    o.jobs = jobs;
+    EXPECT_EQ(match_summary_json(play_match(o)), one) << "jobs " << jobs;
+  }
+}
+
+TEST(MatchJobs, TimingKeepsEveryDecision) {
+  MatchOptions o = options(GameType::nine_ball, "baseline", 0, 4);
+  o.timing = true;
+  o.jobs = 1;
+  const MatchSummary one = play_match(o);
+  o.jobs = 3;
+  const MatchSummary many = play_match(o);
+  for (std::size_t p = 0; p < 2; ++p) {
+    EXPECT_FALSE(one.players[p].decision_seconds.empty());
+    EXPECT_EQ(many.players[p].decision_seconds.size(), one.players[p].decision_seconds.size());
+  }
+}
+
+/// Breaks by throwing; plays every other shot as the baseline.
+class BreakThrower : public Player {
+ public:
+  std::string name() const override { return "thrower"; }
+  Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) override {
+    if (state.phase == Phase::break_shot) throw std::runtime_error("no break");
+    return baseline_->decide(rules, state, seed);
+  }
+
+ private:
+  std::unique_ptr<Player> baseline_ = make_baseline_player();
+};
+
+TEST(MatchJobs, TheFirstFailingGameInOrderIsTheErrorAndEarlierGamesReachTheSink) {
+  // Seat 1 breaks the odd games: games 6 and 8 play, 7 and 9 fail.
+  MatchOptions o = options(GameType::nine_ball, "thrower", 6, 4);
+  o.name_failing_game = true;
+  for (const int jobs : {1, 2, 4}) {
+    o.jobs = jobs;
+    std::vector<int> sunk;
+    const PlayerFactory make = [](int seat) -> std::unique_ptr<Player> {
+      if (seat == 0) return make_baseline_player();
+      return std::make_unique<BreakThrower>();
+    };
+    try {
+      (void)play_match(o, make, [&sunk](int g, const GameRecord&) { sunk.push_back(g); });
+      ADD_FAILURE() << "no exception, jobs " << jobs;
+    } catch (const MatchGameError& e) {
+      EXPECT_EQ(e.game(), 7) << "jobs " << jobs;
+      EXPECT_EQ(e.reason(), "no break");
+    }
+    EXPECT_EQ(sunk, std::vector<int>{6}) << "jobs " << jobs;
+  }
+}
+
+TEST(MatchJobs, ASinkErrorStopsTheMatchAfterTheGamesBeforeIt) {
+  MatchOptions o = options(GameType::nine_ball, "baseline", 0, 6);
+  o.jobs = 3;
+  std::vector<int> sunk;
+  const PlayerFactory make = [](int) { return make_baseline_player(); };
+  EXPECT_THROW((void)play_match(o, make,
+                                [&sunk](int g, const GameRecord&) {
+                                  if (g == 2) throw std::runtime_error("disk full");
+                                  sunk.push_back(g);
+                                }),
+               std::runtime_error);
+  EXPECT_EQ(sunk, (std::vector<int>{0, 1}));
+}
+
+TEST(MatchJobs, BadJobsAndFactoriesAreRefused) {
+  MatchOptions o = options(GameType::nine_ball, "baseline", 0, 2);
+  o.jobs = -1;
+  const PlayerFactory make = [](int) { return make_baseline_player(); };
+  EXPECT_THROW((void)play_match(o, make), std::invalid_argument);
+  EXPECT_THROW((void)play_match(o), std::invalid_argument);
+  o.jobs = 2;
+  const PlayerFactory none = [](int) { return std::unique_ptr<Player>(); };
+  EXPECT_THROW((void)play_match(o, none), std::invalid_argument);
+  EXPECT_THROW((void)make_player("champion", -1), std::invalid_argument);
+  EXPECT_EQ(match_threads(1, 10), 1);
+  EXPECT_EQ(match_threads(5, 3), 3);
+  EXPECT_EQ(match_threads(4, 10), 4);
+  EXPECT_GE(match_threads(0, 1000), 1);
+  EXPECT_EQ(match_threads(0, 1), 1);
+}
+
 TEST(MatchChunks, RecordFileNames) {
   EXPECT_EQ(record_file_name(0), "game-0001.json");
   EXPECT_EQ(record_file_name(41), "game-0042.json");
@@ -446,11 +585,38 @@ TEST_F(MatchChunksCli, BadFirstGameExitsTwoNamingTheOption) {
   }
 }
 
+TEST_F(MatchChunksCli, JobsGiveTheSameSummaryAndRecords) {
+  const Run one = chunk("--games 5 --jobs 1 --records " + at("one"), "one.json");
+  ASSERT_EQ(one.status, 0) << one.err;
+  for (const char* jobs : {"2", "0", "7"}) {
+    const std::string dir = at(std::string("jobs") + jobs);
+    const Run r = chunk(std::string("--games 5 --jobs ") + jobs + " --records " + dir, "j.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, one.out) << "--jobs " << jobs;
+    for (int g = 0; g < 5; ++g) {
+      const std::string name = record_file_name(g);
+      EXPECT_EQ(slurp(fs::path(dir) / name), slurp(dir_ / "one" / name)) << name;
+    }
+  }
+  const Run dflt = chunk("--games 5", "d.json");  // every core
+  EXPECT_EQ(dflt.out, one.out);
+}
+
+TEST_F(MatchChunksCli, BadJobsExitTwoNamingTheOption) {
+  for (const char* v : {"-1", "x", "1.5"}) {
+    const Run r = chunk(std::string("--games 1 --jobs ") + v, "x.json");
+    EXPECT_EQ(r.status, 2) << v << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("breakshot: --jobs: ", 0), 0u) << r.err;
+    EXPECT_TRUE(r.out.empty());
+  }
+}
+
 TEST_F(MatchChunksCli, HelpDescribesChunks) {
   Run r = run("--help");
   EXPECT_NE(r.out.find("match-sum"), std::string::npos);
   r = run("match --help");
   EXPECT_NE(r.out.find("--first-game"), std::string::npos);
+  EXPECT_NE(r.out.find("--jobs"), std::string::npos);
   r = run("match-sum --help");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("Exit status"), std::string::npos);

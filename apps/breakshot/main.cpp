@@ -6,7 +6,7 @@
 //                   --seed S --noise LEVEL [--table 7ft|8ft|9ft|12ft|10ft] [--records DIR]
 //                   [--timing]
 //                   [--target N] [--innings-limit N] [--equalizing-inning on|off] (three-cushion)
-//                   [--first-game N] [--cushion-model NAME] [--ball-ball-model NAME]
+//                   [--first-game N] [--jobs N] [--cushion-model NAME] [--ball-ball-model NAME]
 //                   [--ball-ball-friction tpa28|tpb3|A,B,C|MU] [--airborne on|off]
 //   breakshot match-sum SUMMARY...
 //     (--noise is the noise of players without one of their own; AI levels
@@ -203,6 +203,7 @@ struct MatchArgs {
   std::string table;  // empty: 9ft, snooker 12ft, three-cushion 10ft
   std::string records;
   std::string first_game = "0";
+  std::string jobs;  // empty: every core, or 1 with --timing
   bool timing = false;
   std::string cushion_model;       // empty: the default
   std::string ball_ball_model;     // empty: the default
@@ -327,6 +328,16 @@ bs::MatchOptions match_options(const MatchArgs& a) {
     throw BadArgument{"--first-game: --first-game + --games must be at most " +
                       std::to_string(std::numeric_limits<int>::max()) + ", not " +
                       a.first_game + " + " + a.games};
+  }
+  if (!a.jobs.empty()) {
+    if (!parse_whole(a.jobs, opt.jobs) || opt.jobs < 0) {
+      throw BadArgument{"--jobs: expected a whole number >= 0 (0: one per core), not '" + a.jobs +
+                        "'"};
+    }
+  } else {
+    // Decision times are each decision's own only when games do not
+    // share the cores.
+    opt.jobs = a.timing ? 1 : 0;
   }
   if (!parse_whole(a.seed, opt.seed)) {
     throw BadArgument{"--seed: expected a whole number in [0, 2^64), not '" + a.seed + "'"};
@@ -589,6 +600,10 @@ int main(int argc, char** argv) {
   match->add_option("--first-game", match_args.first_game,
                     "Play games N .. N + games - 1 of the match (default 0): each game is played "
                     "as in one long match, so chunks of a match can be summed (match-sum)")
+      ->type_name("N");
+  match->add_option("--jobs", match_args.jobs,
+                    "Games played at once (0: one per core; the default, or 1 with --timing); "
+                    "the summary and the records are the same for any N")
       ->type_name("N");
   match->add_option("--cushion-model", match_args.cushion_model,
                     "Cushion law: " + cushion_model_list() +

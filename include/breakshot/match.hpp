@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -65,6 +66,13 @@ struct MatchOptions {
   /// the game can be played again alone (first_game = g, games = 1). Off
   /// by default.
   bool name_failing_game = false;
+  /// Games played at once, each on its own thread with its own pair of
+  /// players (0: one per core). The summary, the records and the order
+  /// the sink receives them in are the same for any number: game g is a
+  /// function of g alone, and finished games are added in index order.
+  /// Only the decision times (timing) differ, as the threads share the
+  /// cores. Used by the overload of play_match that makes players.
+  int jobs = 1;
 };
 
 /// A game of a match failed (MatchOptions::name_failing_game). what() is
@@ -233,5 +241,25 @@ using RecordSink = std::function<void(int game, const GameRecord& record)>;
 /// and whatever play_game and the sink throw.
 MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
                         const RecordSink& sink = {});
+
+/// A fresh player for seat 0 or 1.
+using PlayerFactory = std::function<std::unique_ptr<Player>(int seat)>;
+
+/// play_match with options.jobs games at once (0: one per core, never
+/// more than the games): each worker thread gets its own two players from
+/// `make` (made before any game starts) and takes the next game index;
+/// finished games are added to the summary and handed to `sink` in index
+/// order, from whichever thread finishes the game that completes the
+/// order (the sink is never called twice at once). The summary equals the
+/// one-thread summary field for field (decision times apart); the first
+/// failing game in index order is the error thrown, as with one thread,
+/// after every worker has stopped. Throws std::invalid_argument for
+/// options.jobs < 0.
+MatchSummary play_match(const MatchOptions& options, const PlayerFactory& make,
+                        const RecordSink& sink = {});
+
+/// The number of game threads options.jobs asks for, for `games` games:
+/// jobs, or the cores for 0, never more than the games, at least 1.
+int match_threads(int jobs, int games);
 
 }  // namespace breakshot

@@ -23,6 +23,11 @@ std::unique_ptr<Player> make_baseline_player();
 /// unknown name, listing the known ones.
 std::unique_ptr<Player> make_player(std::string_view name);
 
+/// make_player, with an AI level's worker threads for one decision set to
+/// `threads` (0: every core; AiLevel::threads). Its decisions are the
+/// same for any count; the baseline has no threads.
+std::unique_ptr<Player> make_player(std::string_view name, int threads);
+
 /// The names make_player knows: "baseline", then the AI levels.
 std::vector<std::string> player_names();
 
@@ -40,7 +45,9 @@ std::optional<std::string> check_player(std::string_view name, GameType game);
 MatchSummary empty_summary(const MatchOptions& options);
 
 /// play_match (match.hpp) between make_player(options.players[0]) and
-/// make_player(options.players[1]). Throws std::invalid_argument for an
+/// make_player(options.players[1]), options.jobs games at once: with more
+/// than one, each game thread's AI players decide on their share of the
+/// cores (at least one thread each). Throws std::invalid_argument for an
 /// unknown player name, a player that does not play the game
 /// (check_player) or bad options.
 MatchSummary play_match(const MatchOptions& options, const RecordSink& sink = {});

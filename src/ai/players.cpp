@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "breakshot/ai.hpp"
 
@@ -36,17 +37,35 @@ std::optional<std::string> check_player(std::string_view name, GameType game) {
   return std::nullopt;
 }
 
-std::unique_ptr<Player> make_player(std::string_view name) {
+namespace {
+
+std::unique_ptr<Player> named_player(std::string_view name, std::optional<int> threads) {
   if (name == "baseline") return make_baseline_player();
   // The AI levels (include/breakshot/ai.hpp) by their names.
   const std::vector<std::string> levels = ai_level_names();
   if (std::find(levels.begin(), levels.end(), name) != levels.end()) {
-    return make_ai_player(ai_level(name));
+    AiLevel level = ai_level(name);
+    if (threads) level.threads = *threads;
+    return make_ai_player(level);
   }
   std::string known;
   for (const std::string& n : player_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown player \"" + std::string(name) + "\" (known players: " +
                               known + ")");
+}
+
+}  // namespace
+
+std::unique_ptr<Player> make_player(std::string_view name) {
+  return named_player(name, std::nullopt);
+}
+
+std::unique_ptr<Player> make_player(std::string_view name, int threads) {
+  if (threads < 0) {
+    throw std::invalid_argument("threads: must be 0 (every core) or more, not " +
+                                std::to_string(threads));
+  }
+  return named_player(name, threads);
 }
 
 MatchSummary empty_summary(const MatchOptions& options) {
@@ -65,9 +84,16 @@ MatchSummary play_match(const MatchOptions& options, const RecordSink& sink) {
   for (const std::string& name : options.players) {
     if (auto why = check_player(name, options.game)) throw std::invalid_argument(*why);
   }
-  const std::unique_ptr<Player> p0 = make_player(options.players[0]);
-  const std::unique_ptr<Player> p1 = make_player(options.players[1]);
-  return play_match(options, *p0, *p1, sink);
+  const int games_at_once = match_threads(options.jobs, options.games);
+  const PlayerFactory make = [&](int seat) {
+    const std::string& name = options.players[static_cast<std::size_t>(seat)];
+    // One game at a time: its decisions use every core (the level's own
+    // setting); several: each its share.
+    if (games_at_once == 1) return make_player(name);
+    const int cores = static_cast<int>(std::thread::hardware_concurrency());
+    return make_player(name, std::max(1, cores / games_at_once));
+  };
+  return play_match(options, make, sink);
 }
 
 }  // namespace breakshot

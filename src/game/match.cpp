@@ -16,15 +16,18 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <exception>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <variant>
 
@@ -446,8 +449,10 @@ void add_summary(MatchSummary& into, const MatchSummary& part) {
   into = std::move(sum);
 }
 
-MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
-                        const RecordSink& sink) {
+namespace {
+
+/// The checks every play_match makes on its options.
+void check_match_options(const MatchOptions& options) {
   if (options.games < 1) {
     throw std::invalid_argument("the number of games must be at least 1, not " +
                                 std::to_string(options.games));
@@ -462,6 +467,37 @@ MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
                                 std::to_string(options.games) + ") passes " +
                                 std::to_string(std::numeric_limits<int>::max()));
   }
+  if (options.jobs < 0) {
+    throw std::invalid_argument("jobs: must be 0 (one per core) or more, not " +
+                                std::to_string(options.jobs));
+  }
+}
+
+/// Game g of the match, as every play_match plays it.
+GameRecord play_match_game(const Rules& rules, const MatchOptions& options, Player& p0,
+                           Player& p1, int g) {
+  const std::uint64_t game_seed = mix_seed(options.seed, static_cast<std::uint64_t>(g));
+  if (!options.name_failing_game) return play_game(rules, p0, p1, g % 2, game_seed, options.noise);
+  try {
+    return play_game(rules, p0, p1, g % 2, game_seed, options.noise);
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw MatchGameError(g, game_seed, e.what());
+  }
+}
+
+}  // namespace
+
+int match_threads(int jobs, int games) {
+  int n = jobs;
+  if (n == 0) n = static_cast<int>(std::thread::hardware_concurrency());
+  return std::max(1, std::min(n, games));
+}
+
+MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
+                        const RecordSink& sink) {
+  check_match_options(options);
   const Rules rules(config_of(options));
   MatchSummary summary = empty_summary_with(
       options, {effective_noise(p0, options.noise), effective_noise(p1, options.noise)},
@@ -473,22 +509,106 @@ MatchSummary play_match(const MatchOptions& options, Player& p0, Player& p1,
   summary.ranges = {GameRange{options.first_game, options.games}};
   const int end = options.first_game + options.games;
   for (int g = options.first_game; g < end; ++g) {
-    const std::uint64_t game_seed = mix_seed(options.seed, static_cast<std::uint64_t>(g));
-    GameRecord record;
-    if (!options.name_failing_game) {
-      record = play_game(rules, s0, s1, g % 2, game_seed, options.noise);
-    } else {
-      try {
-        record = play_game(rules, s0, s1, g % 2, game_seed, options.noise);
-      } catch (const std::bad_alloc&) {
-        throw;
-      } catch (const std::exception& e) {
-        throw MatchGameError(g, game_seed, e.what());
-      }
-    }
+    const GameRecord record = play_match_game(rules, options, s0, s1, g);
     add_game(summary, record);
     if (sink) sink(g, record);
   }
+  return summary;
+}
+
+MatchSummary play_match(const MatchOptions& options, const PlayerFactory& make,
+                        const RecordSink& sink) {
+  check_match_options(options);
+  const int threads = match_threads(options.jobs, options.games);
+  // Every worker's players, made here so that a factory's error is thrown
+  // before any game starts.
+  std::vector<std::array<std::unique_ptr<Player>, 2>> players(static_cast<std::size_t>(threads));
+  for (auto& pair : players) {
+    for (int seat = 0; seat < 2; ++seat) {
+      pair[static_cast<std::size_t>(seat)] = make(seat);
+      if (!pair[static_cast<std::size_t>(seat)]) {
+        throw std::invalid_argument("play_match: the player factory made no player for seat " +
+                                    std::to_string(seat));
+      }
+    }
+  }
+  if (threads == 1) return play_match(options, *players[0][0], *players[0][1], sink);
+
+  const Rules rules(config_of(options));
+  MatchSummary summary = empty_summary_with(
+      options,
+      {effective_noise(*players[0][0], options.noise),
+       effective_noise(*players[0][1], options.noise)},
+      rules.foul_kinds());
+  summary.ranges = {GameRange{options.first_game, options.games}};
+
+  // A finished game waiting for the ones before it to be added.
+  struct Slot {
+    bool ready = false;
+    GameRecord record;
+    std::array<std::vector<double>, 2> seconds;
+    std::exception_ptr error;
+  };
+  const std::size_t n = static_cast<std::size_t>(options.games);
+  std::vector<Slot> slots(n);
+  std::mutex mutex;
+  std::size_t added = 0;           // games added to the summary, in order (under mutex)
+  std::exception_ptr first_error;  // the first error in index order (under mutex)
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+
+  // Under the mutex: adds the games that complete the order.
+  const auto flush = [&]() {
+    while (added < n && slots[added].ready && !first_error) {
+      Slot& slot = slots[added];
+      if (slot.error) {
+        first_error = slot.error;
+        break;
+      }
+      try {
+        add_game(summary, slot.record);
+        for (std::size_t p = 0; p < 2; ++p) {
+          auto& all = summary.players[p].decision_seconds;
+          all.insert(all.end(), slot.seconds[p].begin(), slot.seconds[p].end());
+        }
+        if (sink) sink(options.first_game + static_cast<int>(added), slot.record);
+      } catch (...) {
+        first_error = std::current_exception();
+        break;
+      }
+      slot = Slot{};  // the record is no longer needed
+      ++added;
+    }
+    if (first_error) stop = true;
+  };
+
+  const auto work = [&](std::size_t w) {
+    Player& p0 = *players[w][0];
+    Player& p1 = *players[w][1];
+    while (!stop) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= n) break;
+      Slot done;
+      try {
+        TimedPlayer t0(p0, done.seconds[0]);
+        TimedPlayer t1(p1, done.seconds[1]);
+        Player& s0 = options.timing ? static_cast<Player&>(t0) : p0;
+        Player& s1 = options.timing ? static_cast<Player&>(t1) : p1;
+        done.record = play_match_game(rules, options, s0, s1, options.first_game + static_cast<int>(i));
+      } catch (...) {
+        done.error = std::current_exception();
+      }
+      done.ready = true;
+      const std::lock_guard<std::mutex> lock(mutex);
+      slots[i] = std::move(done);
+      flush();
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(static_cast<std::size_t>(threads));
+  for (std::size_t w = 0; w < static_cast<std::size_t>(threads); ++w) pool.emplace_back(work, w);
+  for (std::thread& t : pool) t.join();
+  if (first_error) std::rethrow_exception(first_error);
   return summary;
 }
 
