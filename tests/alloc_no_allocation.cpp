@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <new>
+#include <vector>
 
 #include "breakshot/rack.hpp"
 #include "breakshot/simulation.hpp"
@@ -54,4 +55,26 @@ TEST(NoAllocation, HardEightBallBreakWithClusterImpacts) {
   const long during = allocations_to_rest(s, &events);
   EXPECT_GT(events, 20u);
   EXPECT_EQ(during, 0) << "allocations while simulating the break";
+}
+
+// Re-arming one simulation for shot after shot (Simulation::reset) touches
+// the heap no more once it has held the largest of the shots: the AI's
+// rollouts and batch shots rely on it.
+TEST(NoAllocation, ResetForShotAfterShot) {
+  std::vector<Scenario> shots;
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    shots.push_back(make_break_scenario(seed % 2 ? "eight_ball" : "nine_ball", "9ft", seed,
+                                        5.0 + 0.25 * static_cast<double>(seed)));
+  }
+  Simulation sim(shots.front());
+  sim.advance_to_rest();
+  const long before = g_allocations.load();
+  std::uint64_t events = 0;
+  for (const Scenario& s : shots) {
+    sim.reset(s);
+    sim.advance_to_rest();
+    events += sim.event_count();
+  }
+  EXPECT_GT(events, 24u * 50u);
+  EXPECT_EQ(g_allocations.load() - before, 0) << "allocations while re-arming and simulating";
 }

@@ -400,3 +400,76 @@ TEST(Collapse, BallsSettleIntoACorner) {
     for (const BallState& b : res.final_balls) EXPECT_EQ(b.state, MotionState::stationary);
   }
 }
+
+// Simulation::reset: a re-armed simulation runs exactly as a new one, from
+// any scenario it held before, larger or smaller, on any model and table.
+namespace {
+
+/// A gas of `n` balls in a 4 m box (the cell grid from 48 balls on).
+Scenario gas(std::size_t n, std::uint64_t seed, Model model) {
+  std::mt19937_64 g(seed);
+  std::uniform_real_distribution<double> u(0.1, 3.9);
+  std::uniform_real_distribution<double> v(-1.0, 1.0);
+  Scenario s = box(0, 0, 4, 4, model);
+  s.until.time = 3.0;
+  s.until.rest = false;
+  while (s.balls.size() < n) {
+    const BallState b = at(u(g), u(g), v(g), v(g));
+    bool free = true;
+    for (const BallState& o : s.start) free = free && norm(o.position - b.position) > 0.11;
+    if (free) add(s, spec(("b" + std::to_string(s.balls.size())).c_str(), 0.05, 0.1), b);
+  }
+  return s;
+}
+
+void expect_same_run(Simulation& reused, const Scenario& s, const std::string& what) {
+  reused.reset(s);
+  Simulation fresh(s);
+  const bool rest = s.until.rest;
+  if (rest) {
+    EXPECT_EQ(reused.advance_to_rest(), fresh.advance_to_rest()) << what;
+  } else {
+    EXPECT_EQ(reused.advance_to(s.until.time), fresh.advance_to(s.until.time)) << what;
+  }
+  EXPECT_GT(fresh.event_count(), 0u) << what;
+  EXPECT_EQ(reused.event_count(), fresh.event_count()) << what;
+  EXPECT_TRUE(reused.events() == fresh.events()) << what;
+  EXPECT_EQ(reused.time(), fresh.time()) << what;
+  EXPECT_EQ(reused.cue_result().has_value(), fresh.cue_result().has_value()) << what;
+  ASSERT_EQ(reused.ball_count(), fresh.ball_count()) << what;
+  for (std::size_t i = 0; i < fresh.ball_count(); ++i) {
+    const BallState a = reused.ball(i);
+    const BallState b = fresh.ball(i);
+    EXPECT_EQ(a.position, b.position) << what << " ball " << i;
+    EXPECT_EQ(a.velocity, b.velocity) << what << " ball " << i;
+    EXPECT_EQ(a.spin, b.spin) << what << " ball " << i;
+    EXPECT_EQ(a.state, b.state) << what << " ball " << i;
+  }
+}
+
+}  // namespace
+
+TEST(Simulation, ResetRunsExactlyAsANewSimulation) {
+  std::vector<std::pair<std::string, Scenario>> cases;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    cases.emplace_back("8-ball break " + std::to_string(seed),
+                       make_break_scenario("eight_ball", "9ft", seed, 7.5));
+    cases.emplace_back("9-ball break " + std::to_string(seed),
+                       make_break_scenario("nine_ball", "7ft", seed, 6.0));
+  }
+  cases.emplace_back("gas of 60 (cells)", gas(60, 1, Model::ideal));
+  cases.emplace_back("gas of 5 (no cells)", gas(5, 2, Model::ideal));
+  cases.emplace_back("friction gas of 70", gas(70, 3, Model::friction));
+  cases.emplace_back("snooker break", make_break_scenario("snooker", "12ft", 1, 8.0));
+  cases.emplace_back("8-ball break again", make_break_scenario("eight_ball", "9ft", 9, 9.0));
+  Scenario two = box(0, 0, 1, 1);
+  add(two, spec("a", 0.05, 0.1), at(0.2, 0.3, 0.7, 0.4));
+  add(two, spec("b", 0.05, 0.2), at(0.6, 0.6, -0.3, 0.2));
+  two.until.time = 5.0;
+  cases.emplace_back("two balls", two);
+  Simulation reused(cases.back().second);
+  reused.advance_to(2.0);  // reset in the middle of a run, too
+  for (const auto& [what, s] : cases) expect_same_run(reused, s, what);
+  // And back through them in the other order.
+  for (auto it = cases.rbegin(); it != cases.rend(); ++it) expect_same_run(reused, it->second, it->first);
+}

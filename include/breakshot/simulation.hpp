@@ -57,6 +57,16 @@ class Simulation {
   /// The same, taking the scenario over instead of copying it.
   explicit Simulation(Scenario&& scenario);
 
+  /// Starts again on `scenario` (valid), exactly as Simulation(scenario)
+  /// would, keeping this simulation's memory: the AI's rollouts and batch
+  /// shots re-arm one simulation for shot after shot. It allocates
+  /// nothing when the scenario is no larger than one this simulation has
+  /// held (balls, walls, pockets, ball id lengths) and its run fits the
+  /// events reserved (about 64 + 16 per ball, more with ball clusters);
+  /// a larger one grows the memory once. A moved-from Simulation cannot
+  /// be reset.
+  void reset(const Scenario& scenario);
+
   /// Copying saves the whole state; assigning a copy back restores it
   /// (and reuses this one's memory).
   Simulation(const Simulation& other);

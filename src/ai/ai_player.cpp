@@ -99,6 +99,7 @@ using ai_detail::best_pot_estimate;
 using ai_detail::best_pot_estimate_from;
 using ai_detail::expected_pot;
 using ai_detail::parallel_map;
+using ai_detail::parallel_map_ws;
 using ai_detail::position_value;
 using ai_detail::sample_shot;
 using ai_detail::shooter_value;
@@ -420,14 +421,14 @@ class AiPlayer final : public Player {
         GameState after;
         Call potted;
       };
-      const std::vector<Result> res = parallel_map<Result>(
-          which.size() * per, level_.threads, [&](std::size_t u) {
+      const std::vector<Result> res = parallel_map_ws<Result>(
+          which.size() * per, level_.threads, [&](std::size_t u, ShotWorkspace& ws) {
             const std::size_t c = which[u / per];
             const int s = from + static_cast<int>(u % per);
             Result r;
             r.value = sample_shot(rules, state, cands[c].shot, level_.noise,
                                   mix_seed(sample_seed, static_cast<std::uint64_t>(s)), sigma_,
-                                  &r.after, nine ? &r.potted : nullptr);
+                                  &r.after, nine ? &r.potted : nullptr, &ws);
             r.kept = r.after.phase == Phase::game_over ? r.after.winner == state.player
                                                        : r.after.player == state.player;
             if (!keep) r.after = GameState{};
@@ -607,7 +608,7 @@ class AiPlayer final : public Player {
     if (budget.take(want) < want) return;  // all or nothing: a partial correction would be uneven
     const ShotGenOptions gen = lookahead_generation(generation(state.game));
     const std::uint64_t look_seed = mix_seed(seed, kLookStream);
-    const std::vector<double> delta = parallel_map<double>(units.size(), level_.threads, [&](std::size_t u) {
+    const std::vector<double> delta = parallel_map_ws<double>(units.size(), level_.threads, [&](std::size_t u, ShotWorkspace& ws) {
       const GameState& g = *units[u].table;
       const int shooter = g.player;
       const double stat = position_value(rules, g, shooter, sigma_);
@@ -641,7 +642,8 @@ class AiPlayer final : public Player {
         double s = 0.0;
         for (int k = 0; k < next_samples; ++k) {
           s += sample_shot(rules, g, c.shot, level_.noise,
-                           mix_seed(look_seed, static_cast<std::uint64_t>(k)), sigma_);
+                           mix_seed(look_seed, static_cast<std::uint64_t>(k)), sigma_, nullptr,
+                           nullptr, &ws);
         }
         q = std::max(q, s / next_samples);
       }
@@ -701,9 +703,10 @@ class AiPlayer final : public Player {
     if (pushes.empty() || budget.take(want) < want) return Evaluated{};
     const std::uint64_t push_seed = mix_seed(seed, kPushStream);
     const std::size_t per = static_cast<std::size_t>(samples);
-    const std::vector<double> res = parallel_map<double>(pushes.size() * per, level_.threads, [&](std::size_t u) {
+    const std::vector<double> res = parallel_map_ws<double>(pushes.size() * per, level_.threads, [&](std::size_t u, ShotWorkspace& ws) {
       return sample_shot(rules, state, pushes[u / per], level_.noise,
-                         mix_seed(push_seed, static_cast<std::uint64_t>(u % per)), sigma_);
+                         mix_seed(push_seed, static_cast<std::uint64_t>(u % per)), sigma_, nullptr,
+                         nullptr, &ws);
     });
     Evaluated best;
     for (std::size_t i = 0; i < pushes.size(); ++i) {
@@ -912,13 +915,14 @@ class AiPlayer final : public Player {
             mix_seed(mix_seed(state.rack_seed, kBreakStream), static_cast<std::uint64_t>(state.racks));
         const std::size_t per = static_cast<std::size_t>(granted);
         const std::vector<double> res =
-            parallel_map<double>(options.size() * per, level_.threads, [&](std::size_t u) {
+            parallel_map_ws<double>(options.size() * per, level_.threads, [&](std::size_t u, ShotWorkspace& ws) {
               const Option& o = options[u / per];
               GameState placed = state;
               placed.position[0] = o.place;
               placed.on_table[0] = 1;
               return sample_shot(rules, placed, o.shot, level_.noise,
-                                 mix_seed(break_seed, static_cast<std::uint64_t>(u % per)), sigma_);
+                                 mix_seed(break_seed, static_cast<std::uint64_t>(u % per)), sigma_,
+                                 nullptr, nullptr, &ws);
             });
         double best_value = kNoValue;
         for (std::size_t i = 0; i < options.size(); ++i) {

@@ -390,12 +390,12 @@ Action carom_action(const AiLevel& level, const Rules& rules, const GameState& s
   const std::size_t m = static_cast<std::size_t>(search.samples);
   const double R = rules.config().ball_radius;
   const std::vector<double> values =
-      parallel_map<double>(cands.size() * m, threads, [&](std::size_t u) {
+      parallel_map_ws<double>(cands.size() * m, threads, [&](std::size_t u, ShotWorkspace& ws) {
         const std::size_t c = u / m;
         const std::size_t j = u % m;
         Shoot played = cands[c];
         played.strike = perturb(cands[c].strike, level.noise, R, mix_seed(base, j));
-        const Outcome o = rules.apply(state, Action{played});
+        const Outcome o = rules.apply(state, Action{played}, ws);
         const bool point = o.ruling.carom && o.ruling.carom->point && o.ruling.fouls.empty();
         if (!search.position) return point ? 1.0 : 0.0;
         if (point) return 1.0 + kLeaveWeight * ease(rules, o.state);

@@ -341,10 +341,10 @@ double position_value(const Rules& rules, const GameState& after, int me, double
 
 double sample_shot(const Rules& rules, const GameState& state, const Shoot& shot,
                    const NoiseModel& noise, std::uint64_t seed, double sigma,
-                   GameState* after, Call* potted) {
+                   GameState* after, Call* potted, ShotWorkspace* work) {
   Shoot played = shot;
   played.strike = perturb(shot.strike, noise, rules.config().ball_radius, seed);
-  Outcome out = rules.apply(state, played);
+  Outcome out = work ? rules.apply(state, played, *work) : rules.apply(state, played);
   const double v = position_value(rules, out.state, state.player, sigma);
   if (potted) {
     *potted = Call{};

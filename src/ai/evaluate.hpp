@@ -105,9 +105,12 @@ double position_value(const Rules& rules, const GameState& after, int me,
 /// resulting state is stored in *after when given, and in *potted the
 /// first object ball pocketed and its pocket when the shot was no foul
 /// (ball -1 otherwise).
+/// With `work`, the shot is played in that thread's workspace
+/// (Rules::apply), re-armed instead of made anew; the value is the same.
 double sample_shot(const Rules& rules, const GameState& state, const Shoot& shot,
                    const NoiseModel& noise, std::uint64_t seed, double sigma_phi_deg,
-                   GameState* after = nullptr, Call* potted = nullptr);
+                   GameState* after = nullptr, Call* potted = nullptr,
+                   ShotWorkspace* work = nullptr);
 
 /// The ball and pocket that at least half of `samples` noisy plays of a
 /// shot pocketed (`potted`: one entry per play that pocketed an object
@@ -160,6 +163,40 @@ std::vector<T> parallel_map(std::size_t n, int threads, Fn&& fn) {
   pool.reserve(static_cast<std::size_t>(workers - 1));
   for (int w = 1; w < workers; ++w) pool.emplace_back(work, static_cast<std::size_t>(w));
   work(0);
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+  return out;
+}
+
+/// parallel_map whose units also get their worker's ShotWorkspace (one
+/// per worker, made at the start of the call): fn(i, workspace). The
+/// workspace only keeps memory between units, so the result is the same
+/// for any thread count.
+template <class T, class Fn>
+std::vector<T> parallel_map_ws(std::size_t n, int threads, Fn&& fn) {
+  const int workers = worker_count(threads, n);
+  std::vector<ShotWorkspace> work(static_cast<std::size_t>(std::max(workers, 1)));
+  std::vector<T> out(n);
+  if (workers <= 1) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = fn(i, work[0]);
+    return out;
+  }
+  std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
+  const auto run = [&](std::size_t w) {
+    try {
+      for (std::size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) out[i] = fn(i, work[w]);
+    } catch (...) {
+      errors[w] = std::current_exception();
+      next.store(n);  // the others stop taking units
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(static_cast<std::size_t>(workers - 1));
+  for (int w = 1; w < workers; ++w) pool.emplace_back(run, static_cast<std::size_t>(w));
+  run(0);
   for (std::thread& t : pool) t.join();
   for (const std::exception_ptr& e : errors) {
     if (e) std::rethrow_exception(e);

@@ -23,6 +23,7 @@ namespace breakshot {
 namespace {
 
 using ai_detail::parallel_map;
+using ai_detail::parallel_map_ws;
 
 // Seed streams (ASCII of their names): the plays that choose the best
 // shot and the fresh plays that measure it.
@@ -68,10 +69,10 @@ void check_arguments(const Rules& rules, const GameState& state, int ball, int p
 /// Plays `shot` from `state` with the strike perturbed under `seed`: did
 /// `ball` drop in `pocket` with no foul?
 bool pots(const Rules& rules, const GameState& state, const Shoot& shot, const NoiseModel& noise,
-          std::uint64_t seed, int ball, int pocket) {
+          std::uint64_t seed, int ball, int pocket, ShotWorkspace& work) {
   Shoot played = shot;
   played.strike = perturb(shot.strike, noise, rules.config().ball_radius, seed);
-  const Outcome out = rules.apply(state, played);
+  const Outcome out = rules.apply(state, played, work);
   if (!out.ruling.fouls.empty()) return false;
   for (std::size_t i = 0; i < out.facts.pocketed.size(); ++i) {
     if (out.facts.pocketed[i] == ball && out.facts.pocket_of[i] == pocket) return true;
@@ -156,11 +157,11 @@ PotChance pot_chance(const Rules& rules, const GameState& state, Vec2 cue, int b
     const auto per = static_cast<std::size_t>(std::max(0, to - from));
     if (per == 0 || which.empty()) return;
     const std::vector<char> got =
-        parallel_map<char>(which.size() * per, options.threads, [&](std::size_t u) {
+        parallel_map_ws<char>(which.size() * per, options.threads, [&](std::size_t u, ShotWorkspace& ws) {
           const std::size_t c = which[u / per];
           const auto k = static_cast<std::uint64_t>(from) + u % per;
           return static_cast<char>(pots(rules, s, cands[c].shot, level.noise,
-                                        mix_seed(choose_seed, k), ball, pocket));
+                                        mix_seed(choose_seed, k), ball, pocket, ws));
         });
     for (std::size_t u = 0; u < got.size(); ++u) {
       hits[which[u / per]] += got[u];
@@ -194,9 +195,9 @@ PotChance pot_chance(const Rules& rules, const GameState& state, Vec2 cue, int b
   const std::uint64_t measure_seed = mix_seed(options.seed, kMeasureStream);
   const Shoot chosen = cands[best].shot;
   const std::vector<char> got =
-      parallel_map<char>(static_cast<std::size_t>(samples), options.threads, [&](std::size_t k) {
+      parallel_map_ws<char>(static_cast<std::size_t>(samples), options.threads, [&](std::size_t k, ShotWorkspace& ws) {
         return static_cast<char>(
-            pots(rules, s, chosen, level.noise, mix_seed(measure_seed, k), ball, pocket));
+            pots(rules, s, chosen, level.noise, mix_seed(measure_seed, k), ball, pocket, ws));
       });
   const int made = static_cast<int>(std::count(got.begin(), got.end(), char{1}));
   res.simulations += samples;

@@ -178,6 +178,7 @@ class Generator {
     unit_strike.speed = 1.0;
     launch_ = strike(unit_strike, m_, R_, CueParams{}).velocity.x;
     base_ = rules.shot_scenario(state, CueStrike{}, &numbers_);
+    run_ = base_;
     index_.assign(state.on_table.size(), -1);
     for (std::size_t k = 0; k < numbers_.size(); ++k) {
       index_[static_cast<std::size_t>(numbers_[k])] = static_cast<int>(k);
@@ -671,16 +672,25 @@ class Generator {
   // -------------------------------------------------------------------------
   // Simulation
 
+  /// A run of the shot with this strike: a spare simulation re-armed
+  /// (Simulation::reset) when there is one, else a new one.
   Simulation start(double phi, double speed, double b, double a = 0.0, double theta = 0.0) const {
-    Scenario sc = base_;
-    sc.cue->strike.speed = speed;
-    sc.cue->strike.phi = phi;
-    sc.cue->strike.b = b;
-    sc.cue->strike.a = a;
-    sc.cue->strike.theta = theta;
+    CueStrike& strike = run_.cue->strike;
+    strike.speed = speed;
+    strike.phi = phi;
+    strike.b = b;
+    strike.a = a;
+    strike.theta = theta;
     ++simulations_;
-    return Simulation(sc);
+    if (spare_.empty()) return Simulation(run_);
+    Simulation sim = std::move(spare_.back());
+    spare_.pop_back();
+    sim.reset(run_);
+    return sim;
   }
+
+  /// A run no longer needed, kept for start() to re-arm.
+  void recycle(Simulation&& sim) const { spare_.push_back(std::move(sim)); }
 
   /// Steps `sim` until the watched run ends and measures it. The
   /// simulation is left where it stopped, to be continued.
@@ -838,6 +848,7 @@ class Generator {
       Simulation sim = start(phi, speed, b, a, theta);
       const Probe p = follow(sim, w);
       if (!p.ok) {
+        recycle(std::move(sim));
         if (!have) return std::nullopt;
         phi = 0.5 * (phi + best.phi);
         continue;
@@ -846,8 +857,11 @@ class Generator {
         best_abs = std::abs(p.miss);
         best.phi = phi;
         best.probe = p;
+        if (best.sim) recycle(std::move(*best.sim));
         best.sim = std::move(sim);
         have = true;
+      } else {
+        recycle(std::move(sim));
       }
       (p.miss < 0.0 ? below : above) = phi;
       if (prev && std::abs(phi - prev->first) > 1e-12) {
@@ -877,6 +891,7 @@ class Generator {
       Simulation sim = start(best.phi + 0.05, speed, b, a, theta);
       const Probe p = follow(sim, w);
       if (p.ok) slope = (p.miss - best.probe.miss) / 0.05;
+      recycle(std::move(sim));
     }
     best.slope = slope;
     return best;
@@ -1095,6 +1110,7 @@ class Generator {
                   std::vector<CandidateShot>& found) const {
     Simulation sim = start(s.phi, s.speed, s.b);
     const Judged j = judge(sim);
+    recycle(std::move(sim));
     if (!j.legal) return;
     if (eight_ && pocket_of(j, 8) >= 0) return;
     if (snooker_ && !snooker_pots_ok(j, first)) return;
@@ -1195,6 +1211,8 @@ class Generator {
   Layout layout_;
   double launch_ = 1.0;       // cue ball speed per unit cue speed, centre hit
   Scenario base_;             // the shot's scenario; the strike is set per run
+  mutable Scenario run_;      // base_ with the strike of the last start()
+  mutable std::vector<Simulation> spare_;  // runs done with, for start() to re-arm
   std::vector<int> numbers_;  // scenario index -> ball number
   std::vector<int> index_;    // ball number -> scenario index (-1: off the table)
   mutable long simulations_ = 0;

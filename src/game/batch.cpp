@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -205,12 +206,14 @@ ShotBatch play_shots(std::span<const Scenario* const> scenarios, std::span<const
   std::vector<std::exception_ptr> errors(workers);
   const auto work = [&](std::size_t w) {
     try {
-      // The thread's copy of the scenario. With one scenario it is made
-      // once, only its cue changes from shot to shot, and each Simulation
-      // copies it; with one scenario per shot each shot's copy is moved
-      // into its Simulation, so a shot copies its scenario once either way.
+      // The thread's copy of the scenario and its one simulation. With one
+      // scenario the copy is made once and only its cue changes from shot
+      // to shot; with one scenario per shot each shot's is copied in. The
+      // simulation is re-armed for each shot (Simulation::reset), so that
+      // after the first shot, shots of one size allocate nothing.
       Scenario scene;
       bool loaded = false;
+      std::optional<Simulation> sim;
       for (std::size_t first = next.fetch_add(chunk); first < k_count;
            first = next.fetch_add(chunk)) {
         for (std::size_t k = first; k < std::min(first + chunk, k_count); ++k) {
@@ -226,13 +229,12 @@ ShotBatch play_shots(std::span<const Scenario* const> scenarios, std::span<const
           scene.cue = CueSpec{cue, strike, CueParams{}};
           out.cue_index[k] = cue;
           out.played[k] = strike;
-          if (one) {
-            Simulation sim(scene);
-            play_one(sim, k, out);
+          if (sim) {
+            sim->reset(scene);
           } else {
-            Simulation sim(std::move(scene));
-            play_one(sim, k, out);
+            sim.emplace(scene);
           }
+          play_one(*sim, k, out);
         }
       }
     } catch (...) {

@@ -350,9 +350,22 @@ Scenario Rules::shot_scenario(const GameState& s, const CueStrike& strike,
 Scenario Rules::shot_scenario(const GameState& s, const CueStrike& strike, int cue_number,
                               std::vector<int>* numbers) const {
   Scenario sc;
+  shot_scenario(s, strike, cue_number, numbers, sc);
+  return sc;
+}
+
+void Rules::shot_scenario(const GameState& s, const CueStrike& strike, int cue_number,
+                          std::vector<int>* numbers, Scenario& sc) const {
+  // Every field as a new Scenario has it, but the memory kept.
   sc.physics = base_.physics;
   sc.table = table_;
+  sc.balls.clear();
+  sc.start.clear();
+  sc.pair_restitution.clear();
+  sc.until = Until{};
   sc.until.rest = true;
+  sc.sample_dt.reset();
+  sc.max_events = Scenario{}.max_events;
   if (numbers) numbers->clear();
   std::int32_t cue_index = 0;
   for (std::size_t b = 0; b < s.on_table.size(); ++b) {
@@ -370,7 +383,6 @@ Scenario Rules::shot_scenario(const GameState& s, const CueStrike& strike, int c
   cue.ball = cue_index;
   cue.strike = strike;
   sc.cue = cue;
-  return sc;
 }
 
 ShotFacts Rules::facts(const std::vector<Event>& events, int cue) const {
@@ -436,6 +448,11 @@ Vec2 Rules::spot_position(const GameState& s, int ball) const {
 // Playing an action
 
 Outcome Rules::apply(const GameState& state, const Action& action) const {
+  ShotWorkspace work;
+  return apply(state, action, work);
+}
+
+Outcome Rules::apply(const GameState& state, const Action& action, ShotWorkspace& work) const {
   if (auto why = check(state, action)) throw std::invalid_argument(*why);
   Outcome out;
   out.state = state;
@@ -464,9 +481,17 @@ Outcome Rules::apply(const GameState& state, const Action& action) const {
 
   // A shot: simulate it and read what happened.
   const Shoot& shot = std::get<Shoot>(action);
-  std::vector<int> numbers;
+  std::vector<int>& numbers = work.numbers;
   const int cue = shot.cue_ball.value_or(cue_ball(state));
-  Simulation sim(shot_scenario(state, shot.strike, cue, &numbers));
+  shot_scenario(state, shot.strike, cue, &numbers, work.scenario);
+  // The first shot moves the scenario into its simulation; later ones
+  // re-arm that simulation with a copy (into memory it already has).
+  if (work.simulation) {
+    work.simulation->reset(work.scenario);
+  } else {
+    work.simulation.emplace(std::move(work.scenario));
+  }
+  Simulation& sim = *work.simulation;
   sim.advance_to_rest();
   if (!sim.at_rest()) {
     throw std::logic_error("the shot did not come to rest within the event limit");

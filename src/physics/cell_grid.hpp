@@ -32,6 +32,8 @@ class CellGrid {
   // filed with link().
   bool build(Vec2 lo, Vec2 hi, std::size_t n, double max_radius);
   bool used() const { return used_; }
+  /// Unused again, keeping the memory for the next build().
+  void clear() { used_ = false; }
 
   double cell_size() const { return cell_size_; }
   Vec2 origin() const { return origin_; }

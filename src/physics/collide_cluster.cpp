@@ -9,22 +9,13 @@
 
 namespace breakshot::detail {
 
-namespace {
-
-// With ball_clusters, the working memory of cluster impacts is reserved at
-// set-up for up to this many balls (any pool game); larger scenes grow it
-// when a cluster first needs it.
-constexpr std::size_t kClusterReserveBalls = 64;
-
-}  // namespace
-
 void Engine::reserve_cluster_work() {
   const std::size_t n = scenario_.balls.size();
   if (!scenario_.physics.ball_clusters || n > kClusterReserveBalls) return;
   // A cluster holds at most every ball; each impact on one adds an
   // event per pair that touched (about three per ball in a rack), and
-  // the events of a spread rack come on top.
-  events_.reserve(events_.capacity() + 4 * n);
+  // the events of a spread rack come on top: reserve_events() counts
+  // those.
   const std::size_t pairs = n * (n - 1) / 2;
   cluster_.group.reserve(n);
   cluster_.place.reserve(n);

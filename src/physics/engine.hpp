@@ -43,12 +43,20 @@ namespace breakshot::detail {
 struct Kinematics;  // prediction.hpp
 struct RunRecord;   // run_record.hpp
 
+// With ball_clusters, the working memory of cluster impacts is reserved at
+// set-up for up to this many balls (any pool game); larger scenes grow it
+// when a cluster first needs it.
+constexpr std::size_t kClusterReserveBalls = 64;
+
 class Engine {
  public:
   // The scenario must be valid (see validate()).
   explicit Engine(const Scenario& scenario);
   /// Takes the scenario over instead of copying it.
   explicit Engine(Scenario&& scenario);
+  /// Starts again on `scenario` (valid) exactly as Engine(scenario) does,
+  /// keeping the memory this engine holds (Simulation::reset).
+  void reset(const Scenario& scenario);
 
   // What Simulation offers, with the same meaning (simulation.hpp).
   double time() const { return now_; }

@@ -14,6 +14,38 @@ Engine::Engine(const Scenario& scenario) : scenario_(scenario) { set_up(); }
 
 Engine::Engine(Scenario&& scenario) : scenario_(std::move(scenario)) { set_up(); }
 
+void Engine::reset(const Scenario& scenario) {
+  scenario_ = scenario;  // assignment reuses the vectors' and strings' memory
+  // Everything else as a new engine has it, every container emptied but
+  // keeping its capacity.
+  cluster_.group.clear();
+  cluster_.place.clear();
+  cluster_.near.clear();
+  cluster_.reach = 1;
+  cluster_.bodies.clear();
+  now_ = 0.0;
+  origin_ = 0.0;
+  event_count_ = 0;
+  limit_hit_ = false;
+  left_cloth_ = false;
+  moving_ = 0;
+  traj_.clear();
+  radius_.clear();
+  ideal_ = false;
+  convex_ = false;
+  counter_.clear();
+  event_.clear();
+  events_.clear();
+  cue_result_.reset();
+  wall_box_.clear();
+  wall_runs_.clear();
+  pair_keys_.clear();
+  pair_values_.clear();
+  grid_.clear();
+  record_ = nullptr;
+  set_up();
+}
+
 void Engine::set_up() {
   set_up_balls();
   reserve_events();
@@ -46,10 +78,14 @@ void Engine::set_up_balls() {
 }
 
 // Room for the events of a typical shot, so that simulating one allocates
-// nothing after set-up (a break has about 100 events).
+// nothing after set-up (a break has about 100 events), and for the events
+// of cluster impacts (reserve_cluster_work).
 void Engine::reserve_events() {
   const std::size_t n = scenario_.balls.size();
-  events_.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(scenario_.max_events, 64 + 16 * n)));
+  std::size_t want =
+      static_cast<std::size_t>(std::min<std::uint64_t>(scenario_.max_events, 64 + 16 * n));
+  if (scenario_.physics.ball_clusters && n <= kClusterReserveBalls) want += 4 * n;
+  events_.reserve(want);
 }
 
 // With many balls, the grid of cells.

@@ -31,6 +31,8 @@ Simulation::Simulation(Simulation&& other) noexcept = default;
 Simulation& Simulation::operator=(Simulation&& other) noexcept = default;
 Simulation::~Simulation() = default;
 
+void Simulation::reset(const Scenario& scenario) { engine_->reset(scenario); }
+
 double Simulation::time() const { return engine_->time(); }
 StopReason Simulation::advance_to(double t) { return engine_->advance_to(t); }
 StopReason Simulation::advance_to_rest() { return engine_->advance_to_rest(); }
