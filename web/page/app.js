@@ -268,6 +268,18 @@ async function main() {
     toClient: (x, y) => ui.view.toClient(x, y),
     aim: () => ({ ...ui.aim }),
     link: () => ui.link(),
+    // the sounds asked for since the page loaded, by kind, and how many
+    // an audio device played (none when muted or without a device)
+    sounds: () => {
+      const S = ui.sounds;
+      return {
+        muted: S.muted,
+        counts: { ...S.counts },
+        played: S.log.filter((e) => e.played).length,
+        context: S.ctx ? S.ctx.state : (S.failed ? 'failed' : 'none'),
+        last: S.log.slice(-200).map((e) => ({ ...e })),
+      };
+    },
   };
 
   window.addEventListener('hashchange', () => { route(); });
