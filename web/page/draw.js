@@ -254,7 +254,13 @@ export function paintRollingBall(n, m, rd, light, canvas, upright = false) {
   const c = canvas || document.createElement('canvas');
   if (c.width !== size) { c.width = size; c.height = size; }
   const ctx = c.getContext('2d');
-  const img = ctx.createImageData(size, size);
+  // the pixels are kept with the canvas: a new ImageData per ball and
+  // frame would be garbage for the collector
+  let img = c.bsPixels;
+  if (!img || img.width !== size) {
+    img = ctx.createImageData(size, size);
+    c.bsPixels = img;
+  }
   const d = img.data;
   const base = rgbOf(ballColour(n));
   const white = [246, 243, 234];
@@ -273,7 +279,10 @@ export function paintRollingBall(n, m, rd, light, canvas, upright = false) {
       const Y0 = (py + 0.5 - ctr) / rd;
       const dist = Math.hypot(X0, Y0);
       const cover = Math.max(0, Math.min(1, (1 - dist) * rd + 0.5));
-      if (cover <= 0) continue;
+      if (cover <= 0) {
+        d[4 * (py * size + px) + 3] = 0;
+        continue;
+      }
       let X = X0;
       let Y = Y0;
       if (dist > 0.999) { X /= dist / 0.999; Y /= dist / 0.999; }
