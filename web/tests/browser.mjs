@@ -3,7 +3,9 @@
 // by `breakshot serve`. Nothing is downloaded.
 //
 //   node web/tests/browser.mjs --cli build/release/breakshot --root build/web/dist \
-//        [--shots DIR] [--only NAME]
+//        [--shots DIR] [--only NAME] [--frames N]
+//
+// --frames N: the frame-time test measures N breaks (default 1).
 //
 // Prints one line per test and ends with "N passed, M failed"; exits 1 on
 // any failure. Screenshots of the game and the lab go to --shots
