@@ -1123,7 +1123,7 @@ export class TableView {
    *  widget shows it), on a small ball drawn on the bottom rail. */
   drawTipInset(aim) {
     const ctx = this.ctx;
-    const r = Math.max(9, this.px(0.042));
+    const r = Math.max(9, this.px(0.05));
     const at = this.screenOf(this.sx(0.2), this.sy(-(CUSHION + (FRAME - CUSHION) * 0.5)));
     const cx = at.x;
     const cy = at.y;

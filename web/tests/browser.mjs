@@ -196,6 +196,8 @@ test('hovering aims the cue, a press holds the aim, Escape lets the hover aim ag
 
 test('a drag back from the cue ball and a release strike with the power of the pull', async ({ browser, url }) => {
   const { page, context, problems } = await openPage(browser, url);
+  await page.click('#new-game');
+  await page.fill('#seed', '5');
   await newGame(page, { game: 'eight_ball', opponent: 'friend' });
   await page.fill('#phi', '0');
   await page.dispatchEvent('#phi', 'input');
@@ -231,6 +233,26 @@ test('a drag back from the cue ball and a release strike with the power of the p
   const strike = rec.actions[0].action.strike;
   check(Math.abs(strike.speed - want) < 0.051, `the stroke shot at ${strike.speed} m/s, the pull gives ${want}`);
   check(strike.phi === 0, 'the stroke moved the aim: ' + strike.phi);
+  // With the cue ball on the table (not in hand), a press on the ball itself
+  // takes the cue.
+  const st = await page.evaluate(() => window.breakshot.state());
+  if (st.legal.shoot && st.legal.place === 'none' && st.phase !== 'game_over') {
+    const c = st.position[0];
+    const aim = await page.evaluate(() => window.breakshot.aim());
+    const rad = aim.phi * Math.PI / 180;
+    const a = await toPage(page, c[0], c[1]);
+    const b = await toPage(page, c[0] - 0.1 * Math.cos(rad), c[1] - 0.1 * Math.sin(rad));
+    await page.mouse.move(a.x, a.y);
+    await page.mouse.down();
+    await page.mouse.move(b.x, b.y, { steps: 6 });
+    await page.mouse.up();
+    await page.waitForFunction(() => window.breakshot.state().actions === 2, null, { timeout: 5000 });
+    await idle(page);
+    const s2 = (await page.evaluate(() => window.breakshot.game.record())).actions[1].action.strike;
+    check(Math.abs(s2.speed - speedOfPull(0.1)) < 0.051, `the stroke from the cue ball shot at ${s2.speed}, not ${speedOfPull(0.1)}`);
+  } else {
+    console.log('      (the break left the cue ball in hand: no stroke from the ball itself)');
+  }
   check(problems.length === 0, problems.join('\n'));
   await context.close();
 });
