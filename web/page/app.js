@@ -235,6 +235,9 @@ async function main() {
   $('new-game-form').addEventListener('submit', (ev) => {
     ev.preventDefault();
     startFromForm();
+    // the form may be below the table (a phone): back to the table
+    const top = $('table').getBoundingClientRect().top;
+    if (top < 0 || top > window.innerHeight / 2) window.scrollTo({ top: 0 });
   });
   window.addEventListener('unhandledrejection', (ev) => {
     ev.preventDefault();
