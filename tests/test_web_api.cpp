@@ -529,6 +529,42 @@ TEST(WebApi, FrameDataIsTheJsonFramesNumbers) {
   }
 }
 
+TEST(WebApi, PlaybackSpinsAreTheResultFilesSpins) {
+  // The 8-ball break sampled every 0.25 s by simulate, and a playback's
+  // spins after frames at the same times.
+  json s = json::parse(read_example("examples/pool/break_8ball.json"));
+  s["samples"] = {{"dt", 0.25}};
+  char* out = bs_simulate(s.dump().c_str());
+  ASSERT_NE(out, nullptr);
+  const json result = json::parse(out);
+  bs_free(out);
+  ASSERT_TRUE(result.contains("samples")) << result.dump().substr(0, 200);
+  PlaybackPtr pb(bs_playback_new(s.dump().c_str()));
+  ASSERT_NE(pb, nullptr) << bs_last_error();
+  EXPECT_NE(bs_playback_spins(pb.get()), nullptr);  // before any frame: the start's
+  EXPECT_EQ(bs_playback_spins(nullptr), nullptr);
+  int compared = 0;
+  double largest = 0.0;
+  for (const json& sample : result["samples"]) {
+    const double t = sample["time"].get<double>();
+    if (t > 3.0) break;
+    ASSERT_NE(bs_playback_frame_data(pb.get(), t), nullptr) << bs_last_error();
+    const double* w = bs_playback_spins(pb.get());
+    ASSERT_NE(w, nullptr) << bs_last_error();
+    const json& balls = sample["balls"];
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double want = balls[i]["spin"][k].get<double>();
+        EXPECT_NEAR(w[3 * i + k], want, 1e-9 * (1.0 + std::abs(want))) << "t=" << t << " ball " << i << " axis " << k;
+        largest = std::max(largest, std::abs(want));
+      }
+    }
+    ++compared;
+  }
+  EXPECT_GE(compared, 8);
+  EXPECT_GT(largest, 10.0);  // the balls spun
+}
+
 /// A game of 8-ball on a 9 ft table between two humans whose physics lets
 /// balls leave the cloth (or not), with the cue ball placed at (0.6,
 /// 0.635) and shot straight up the table at 3 m/s with the cue raised 45

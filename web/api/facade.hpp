@@ -179,6 +179,7 @@ struct BsPlayback {
   bool limit = false;  // max_events stopped a frame
   std::string reply;
   std::vector<double> frame;  // the last frame (layout: kFrame* in playback.cpp)
+  std::vector<double> spins;  // bs_playback_spins's buffer: wx, wy, wz per ball
 };
 
 namespace facade {
@@ -187,6 +188,9 @@ namespace facade {
 std::string frame_json(BsPlayback& pb, double t);
 /// bs_playback_frame_data's reply: the same frame as doubles, in pb.frame.
 const double* frame_data(BsPlayback& pb, double t);
+/// bs_playback_spins's reply: the balls' spins at the playback's time (its
+/// last frame's, or the start), in pb.spins (3 per ball).
+const double* spins_data(BsPlayback& pb);
 /// {"from": from, "events": [...]}, each event as the result file writes
 /// it (io/result_json.hpp: ids for balls, names for cushions and pockets).
 std::string events_json(const BsPlayback& pb, int from);

@@ -149,6 +149,18 @@ const double* frame_data(BsPlayback& pb, double t) {
   return pb.frame.data();
 }
 
+const double* spins_data(BsPlayback& pb) {
+  const std::size_t n = pb.sim.ball_count();
+  pb.spins.assign(3 * n + 1, 0.0);  // one more: a valid pointer with no ball
+  for (std::size_t i = 0; i < n; ++i) {
+    const bs::Vec3 w = pb.sim.ball(i).spin;
+    pb.spins[3 * i] = w.x;
+    pb.spins[3 * i + 1] = w.y;
+    pb.spins[3 * i + 2] = w.z;
+  }
+  return pb.spins.data();
+}
+
 std::string events_json(const BsPlayback& pb, int from) {
   const std::vector<bs::Event>& ev = pb.sim.events();
   if (from < 0 || static_cast<std::size_t>(from) > ev.size()) {

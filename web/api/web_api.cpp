@@ -121,6 +121,13 @@ const double* bs_playback_frame_data(BsPlayback* pb, double t) {
   });
 }
 
+const double* bs_playback_spins(BsPlayback* pb) {
+  return guarded_ptr<const double>([&] {
+    if (pb == nullptr) bad("handle", "a null handle");
+    return spins_data(*pb);
+  });
+}
+
 const char* bs_playback_events(BsPlayback* pb, int from) {
   if (pb == nullptr) return null_handle();
   return keep(pb->reply, guarded([&] { return events_json(*pb, from); }));

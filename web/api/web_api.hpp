@@ -69,6 +69,13 @@ const char* bs_playback_frame(BsPlayback* pb, double t);
  * (a null handle, t not finite or earlier than the last frame's): see
  * bs_last_error. */
 const double* bs_playback_frame_data(BsPlayback* pb, double t);
+/* The spins of the balls at the playback's time (its last frame's, or
+ * the start before any frame): 3 doubles per ball in scenario order, wx,
+ * wy, wz (rad/s, table axes; zero in the ideal and friction models). For
+ * drawing (the page rolls the balls' markings with them). The buffer
+ * belongs to the playback and stays valid until its next call; NULL for a
+ * null handle (see bs_last_error). */
+const double* bs_playback_spins(BsPlayback* pb);
 const char* bs_playback_events(BsPlayback* pb, int from);
 void bs_playback_free(BsPlayback* pb);
 

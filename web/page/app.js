@@ -235,6 +235,9 @@ async function main() {
   $('new-game-form').addEventListener('submit', (ev) => {
     ev.preventDefault();
     startFromForm();
+    // the form may be below the table (a phone): back to the table
+    const top = $('table').getBoundingClientRect().top;
+    if (top < 0 || top > window.innerHeight / 2) window.scrollTo({ top: 0 });
   });
   window.addEventListener('unhandledrejection', (ev) => {
     ev.preventDefault();
@@ -268,6 +271,18 @@ async function main() {
     toClient: (x, y) => ui.view.toClient(x, y),
     aim: () => ({ ...ui.aim }),
     link: () => ui.link(),
+    // the sounds asked for since the page loaded, by kind, and how many
+    // an audio device played (none when muted or without a device)
+    sounds: () => {
+      const S = ui.sounds;
+      return {
+        muted: S.muted,
+        counts: { ...S.counts },
+        played: S.log.filter((e) => e.played).length,
+        context: S.ctx ? S.ctx.state : (S.failed ? 'failed' : 'none'),
+        last: S.log.slice(-200).map((e) => ({ ...e })),
+      };
+    },
   };
 
   window.addEventListener('hashchange', () => { route(); });

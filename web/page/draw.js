@@ -160,6 +160,171 @@ export function drawBall(ctx, n, cx, cy, r, opts = {}) {
   ctx.restore();
 }
 
+// ---- balls that roll ----
+//
+// A pool ball's markings (its stripe, its two number discs) turn with the
+// ball: the page keeps each ball's orientation, a rotation matrix from the
+// ball's own axes to the table's (x along the length, y across, z up),
+// integrated from the engine's spins (rotate), and paints the ball pixel
+// by pixel: each visible point of the sphere is taken back to the ball's
+// axes, where the stripe is the band |y| < STRIPE and the number discs
+// the caps around +z and -z. Drawing only.
+
+const STRIPE = 0.56;                 // half width of a stripe's band (ball radii)
+const CAP = 0.5;                     // radius of a number disc, seen face on
+const CAP_COS = Math.sqrt(1 - CAP * CAP);
+const GLYPH = 48;                    // glyph texture size (px)
+
+/** A fresh orientation: the identity (numbers up, stripes across). */
+export function identityOrientation() {
+  return { m: new Float64Array([1, 0, 0, 0, 1, 0, 0, 0, 1]), v: 0 };
+}
+
+/** Turns orientation `o` by the spin w = [wx, wy, wz] (rad/s, table
+ *  axes) for dt seconds: m <- R(w dt) m (Rodrigues), re-orthonormalised. */
+export function rotate(o, wx, wy, wz, dt) {
+  const w = Math.hypot(wx, wy, wz);
+  const ang = w * dt;
+  if (!(ang > 1e-9) || !Number.isFinite(ang)) return;
+  const x = wx / w;
+  const y = wy / w;
+  const z = wz / w;
+  const c = Math.cos(ang);
+  const s = Math.sin(ang);
+  const k = 1 - c;
+  const r = [c + x * x * k, x * y * k - z * s, x * z * k + y * s,
+    y * x * k + z * s, c + y * y * k, y * z * k - x * s,
+    z * x * k - y * s, z * y * k + x * s, c + z * z * k];
+  const m = o.m;
+  const out = new Float64Array(9);
+  for (let i = 0; i < 3; i++) {
+    for (let j = 0; j < 3; j++) out[3 * i + j] = r[3 * i] * m[j] + r[3 * i + 1] * m[3 + j] + r[3 * i + 2] * m[6 + j];
+  }
+  // columns stay orthonormal (Gram-Schmidt on the first two, the third their cross product)
+  let n0 = Math.hypot(out[0], out[3], out[6]);
+  out[0] /= n0; out[3] /= n0; out[6] /= n0;
+  const d = out[0] * out[1] + out[3] * out[4] + out[6] * out[7];
+  out[1] -= d * out[0]; out[4] -= d * out[3]; out[7] -= d * out[6];
+  n0 = Math.hypot(out[1], out[4], out[7]);
+  out[1] /= n0; out[4] /= n0; out[7] /= n0;
+  out[2] = out[3] * out[7] - out[6] * out[4];
+  out[5] = out[6] * out[1] - out[0] * out[7];
+  out[8] = out[0] * out[4] - out[3] * out[1];
+  o.m = out;
+  o.v += 1;
+}
+
+function rgbOf(hex) {
+  const h = hex.replace('#', '');
+  return [parseInt(h.slice(0, 2), 16), parseInt(h.slice(2, 4), 16), parseInt(h.slice(4, 6), 16)];
+}
+
+const glyphs = new Map();
+/** Ball n's number disc as pixels (GLYPH x GLYPH, the disc filling it). */
+function glyph(n) {
+  let g = glyphs.get(n);
+  if (g) return g;
+  const c = document.createElement('canvas');
+  c.width = GLYPH;
+  c.height = GLYPH;
+  const ctx = c.getContext('2d');
+  ctx.fillStyle = '#fbfaf5';
+  ctx.fillRect(0, 0, GLYPH, GLYPH);
+  ctx.fillStyle = '#111';
+  // as drawBall writes it: the number's size over the disc's radius
+  const size = (GLYPH / 2) * (n >= 10 ? 0.58 : 0.66) / CAP;
+  ctx.font = `700 ${size.toFixed(1)}px system-ui, -apple-system, "Segoe UI", Arial, sans-serif`;
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'middle';
+  ctx.fillText(String(n), GLYPH / 2, GLYPH / 2 + size * 0.06);
+  g = ctx.getImageData(0, 0, GLYPH, GLYPH).data;
+  glyphs.set(n, g);
+  return g;
+}
+
+/**
+ * Paints pool ball n (1-15) turned by orientation m onto a new canvas of
+ * side 2 rd + 2 device pixels (rd: the radius in device pixels), lit from
+ * `light` (a unit vector in the drawing's axes: x right, y down, z toward
+ * the viewer); `upright`: the numbers printed for a table drawn turned
+ * (TableView.fit's portrait).
+ */
+export function paintRollingBall(n, m, rd, light, canvas, upright = false) {
+  const size = 2 * Math.ceil(rd) + 2;
+  const c = canvas || document.createElement('canvas');
+  if (c.width !== size) { c.width = size; c.height = size; }
+  const ctx = c.getContext('2d');
+  // the pixels are kept with the canvas: a new ImageData per ball and
+  // frame would be garbage for the collector
+  let img = c.bsPixels;
+  if (!img || img.width !== size) {
+    img = ctx.createImageData(size, size);
+    c.bsPixels = img;
+  }
+  const d = img.data;
+  const base = rgbOf(ballColour(n));
+  const white = [246, 243, 234];
+  const stripe = n >= 9;
+  const tex = glyph(n);
+  const [lx, ly, lz] = light;
+  let hx = lx;
+  let hy = ly;
+  let hz = lz + 1;
+  const hl = Math.hypot(hx, hy, hz);
+  hx /= hl; hy /= hl; hz /= hl;
+  const ctr = size / 2;
+  for (let py = 0; py < size; py++) {
+    for (let px = 0; px < size; px++) {
+      const X0 = (px + 0.5 - ctr) / rd;
+      const Y0 = (py + 0.5 - ctr) / rd;
+      const dist = Math.hypot(X0, Y0);
+      const cover = Math.max(0, Math.min(1, (1 - dist) * rd + 0.5));
+      if (cover <= 0) {
+        d[4 * (py * size + px) + 3] = 0;
+        continue;
+      }
+      let X = X0;
+      let Y = Y0;
+      if (dist > 0.999) { X /= dist / 0.999; Y /= dist / 0.999; }
+      const Z = Math.sqrt(Math.max(0, 1 - X * X - Y * Y));
+      // the point in the table's axes (x right, y up, z up out of the cloth),
+      // then in the ball's: p_b = m^T p
+      const tx = X;
+      const ty = -Y;
+      const bx = m[0] * tx + m[3] * ty + m[6] * Z;
+      const by = m[1] * tx + m[4] * ty + m[7] * Z;
+      const bz = m[2] * tx + m[5] * ty + m[8] * Z;
+      let col;
+      if (bz > CAP_COS || bz < -CAP_COS) {
+        // a number disc: the glyph, read from outside the ball on either side
+        // (upright: printed a quarter turn round, so that a ball at the
+        // identity reads upright on a table turned for a portrait screen)
+        const u0 = upright ? -by / CAP : bx / CAP;
+        const u = bz > 0 ? u0 : -u0;
+        const v = upright ? -bx / CAP : -by / CAP;
+        const gx = Math.max(0, Math.min(GLYPH - 1, Math.floor((u + 1) * 0.5 * GLYPH)));
+        const gy = Math.max(0, Math.min(GLYPH - 1, Math.floor((v + 1) * 0.5 * GLYPH)));
+        const k = 4 * (gy * GLYPH + gx);
+        col = [tex[k], tex[k + 1], tex[k + 2]];
+      } else if (stripe) {
+        col = Math.abs(by) < STRIPE ? base : white;
+      } else {
+        col = base;
+      }
+      const diff = Math.max(0, X * lx + Y * ly + Z * lz);
+      const shade = 0.42 + 0.62 * diff;
+      const spec = Math.pow(Math.max(0, X * hx + Y * hy + Z * hz), 36) * 190;
+      const k = 4 * (py * size + px);
+      d[k] = Math.min(255, col[0] * shade + spec);
+      d[k + 1] = Math.min(255, col[1] * shade + spec);
+      d[k + 2] = Math.min(255, col[2] * shade + spec);
+      d[k + 3] = 255 * cover;
+    }
+  }
+  ctx.putImageData(img, 0, 0);
+  return c;
+}
+
 /**
  * Where a cue ball at `cue` sent along `phi` degrees first touches a ball
  * of `balls` ([{n, x, y}], the cue ball excluded) or, failing that, where
@@ -236,6 +401,46 @@ export class TableView {
     this.dpr = 1;
     this.scale = 1;
     this.staticLayer = null;
+    this.rolled = new Map();   // ball n -> {key, canvas}: its last painting
+  }
+
+  /** Draws pool ball n (1-15) turned by orientation o ({m, v}) at (cx, cy),
+   *  radius r (CSS px), with its drop shadow; opts as drawBall's. */
+  drawRolling(ctx, n, o, cx, cy, r, opts = {}) {
+    const rd = r * this.dpr;
+    const light = this.light();
+    const key = `${o.v}|${rd.toFixed(2)}|${light.join(',')}`;
+    let cached = this.rolled.get(n);
+    if (!cached || cached.key !== key || cached.o !== o) {
+      const canvas = paintRollingBall(n, o.m, rd, light, cached ? cached.canvas : null, !!this.rot);
+      cached = { key, o, canvas };
+      this.rolled.set(n, cached);
+    }
+    ctx.save();
+    ctx.globalAlpha = opts.alpha ?? 1;
+    if (opts.shadow !== false) {
+      ctx.fillStyle = 'rgba(0, 0, 0, 0.32)';
+      ctx.beginPath();
+      ctx.ellipse(cx + r * 0.16, cy + r * 0.2, r * 1.02, r * 0.98, 0, 0, Math.PI * 2);
+      ctx.fill();
+    }
+    const side = cached.canvas.width / this.dpr;
+    ctx.drawImage(cached.canvas, cx - side / 2, cy - side / 2, side, side);
+    if (opts.ring) {
+      ctx.strokeStyle = opts.ring;
+      ctx.lineWidth = Math.max(1.5, r * 0.16);
+      ctx.beginPath();
+      ctx.arc(cx, cy, r + ctx.lineWidth, 0, Math.PI * 2);
+      ctx.stroke();
+    }
+    ctx.restore();
+    this.painted = (this.painted || 0) + 1;
+  }
+
+  /** The light on the balls, in the drawing's axes: from the screen's upper left. */
+  light() {
+    // turned with the drawing when the table is turned
+    return this.rot ? [0.48, -0.42, 0.77] : [-0.42, -0.48, 0.77];
   }
 
   setTable(table) {
@@ -254,9 +459,16 @@ export class TableView {
     return (t.length + 2 * FRAME) / (t.width + 2 * FRAME);
   }
 
-  /** Sizes the canvas to fit in maxW x maxH CSS pixels, high-DPI aware. */
-  fit(maxW, maxH) {
-    const a = this.aspect();
+  /**
+   * Sizes the canvas to fit in maxW x maxH CSS pixels, high-DPI aware.
+   * With `portrait`, the table is turned a quarter turn (the head of the
+   * table, x = 0, at the bottom of the screen): the drawing is made in the
+   * table's own "landscape" axes (sx, sy below, landW x landH CSS px) and
+   * the canvas's transform turns it (base()); text is drawn upright.
+   */
+  fit(maxW, maxH, portrait = false) {
+    const rot = !!portrait;
+    const a = rot ? 1 / this.aspect() : this.aspect();  // screen width over height
     let w = Math.max(200, maxW);
     let h = w / a;
     if (h > maxH && maxH > 120) {
@@ -266,17 +478,33 @@ export class TableView {
     w = Math.floor(w);
     h = Math.floor(w / a);
     const dpr = Math.min(3, window.devicePixelRatio || 1);
-    if (w === this.cssW && h === this.cssH && dpr === this.dpr) return false;
+    if (w === this.cssW && h === this.cssH && dpr === this.dpr && rot === !!this.rot) return false;
+    this.rot = rot;
     this.cssW = w;
     this.cssH = h;
+    this.landW = rot ? h : w;
+    this.landH = rot ? w : h;
     this.dpr = dpr;
     this.canvas.style.width = `${w}px`;
     this.canvas.style.height = `${h}px`;
     this.canvas.width = Math.round(w * dpr);
     this.canvas.height = Math.round(h * dpr);
-    this.scale = this.table ? w / (this.table.length + 2 * FRAME) : 1;
+    this.canvas.dataset.rotated = rot ? '1' : '0';
+    this.scale = this.table ? this.landW / (this.table.length + 2 * FRAME) : 1;
     this.staticLayer = null;
+    this.rolled.clear();
     return true;
+  }
+
+  /** The canvas transform from the landscape drawing (CSS px) to device pixels. */
+  base(ctx, unit = this.dpr) {
+    if (this.rot) ctx.setTransform(0, -unit, unit, 0, 0, this.canvas.height);
+    else ctx.setTransform(unit, 0, 0, unit, 0, 0);
+  }
+
+  /** A point of the landscape drawing on the screen (CSS px in the canvas). */
+  screenOf(lx, ly) {
+    return this.rot ? { x: ly, y: this.landW - lx } : { x: lx, y: ly };
   }
 
   /** Table coordinates (m) to CSS pixels within the canvas. */
@@ -290,8 +518,11 @@ export class TableView {
     // the canvas may be drawn at another size than cssW (CSS zoom, transforms)
     const kx = r.width > 0 ? this.cssW / r.width : 1;
     const ky = r.height > 0 ? this.cssH / r.height : 1;
-    const cx = (clientX - r.left) * kx;
-    const cy = (clientY - r.top) * ky;
+    const px = (clientX - r.left) * kx;
+    const py = (clientY - r.top) * ky;
+    // back to the landscape drawing (screenOf's inverse)
+    const cx = this.rot ? this.landW - py : px;
+    const cy = this.rot ? px : py;
     return { x: cx / this.scale - FRAME, y: this.table.width + FRAME - cy / this.scale };
   }
 
@@ -300,7 +531,8 @@ export class TableView {
     const r = this.canvas.getBoundingClientRect();
     const kx = this.cssW > 0 ? r.width / this.cssW : 1;
     const ky = this.cssH > 0 ? r.height / this.cssH : 1;
-    return { x: r.left + this.sx(x) * kx, y: r.top + this.sy(y) * ky };
+    const p = this.screenOf(this.sx(x), this.sy(y));
+    return { x: r.left + p.x * kx, y: r.top + p.y * ky };
   }
 
   pathOutline(ctx) {
@@ -317,8 +549,8 @@ export class TableView {
   buildStatic() {
     const t = this.table;
     const layer = document.createElement('canvas');
-    layer.width = this.canvas.width;
-    layer.height = this.canvas.height;
+    layer.width = Math.round(this.landW * this.dpr);
+    layer.height = Math.round(this.landH * this.dpr);
     const ctx = layer.getContext('2d');
     ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
     const L = t.length;
@@ -566,8 +798,9 @@ export class TableView {
     const ctx = this.ctx;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.clearRect(0, 0, this.canvas.width, this.canvas.height);
+    this.base(ctx, 1);
     ctx.drawImage(this.staticLayer, 0, 0);
-    ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
+    this.base(ctx);
     const t = this.table;
     const R = scene.R || t.ball_radius;
     const rpx = this.px(R);
@@ -629,18 +862,19 @@ export class TableView {
         flying.push(b);
         continue;
       }
-      drawBall(ctx, b.n, this.sx(b.x), this.sy(b.y), rpx * (b.scale ?? 1), {
-        alpha: b.alpha,
-        ring: ringOf(b.n),
-        snooker,
-        carom,
-      });
+      const opts = { alpha: b.alpha, ring: ringOf(b.n), snooker, carom };
+      if (b.o && !snooker && !carom && b.n > 0) this.drawRolling(ctx, b.n, b.o, this.sx(b.x), this.sy(b.y), rpx * (b.scale ?? 1), opts);
+      else drawBall(ctx, b.n, this.sx(b.x), this.sy(b.y), rpx * (b.scale ?? 1), opts);
     }
     flying.sort((p, q) => p.z - q.z);
     for (const b of flying) drawFlightShadow(ctx, this.sx(b.x), this.sy(b.y), rpx, b.z);
     for (const b of flying) {
-      drawBall(ctx, b.n, this.sx(b.x), this.sy(b.y) - this.px(flightLift(b.z)),
-        rpx * (b.scale ?? 1) * flightScale(b.z), { alpha: b.alpha, shadow: false, snooker, carom });
+      const opts = { alpha: b.alpha, shadow: false, snooker, carom };
+      const fx = this.sx(b.x);
+      const fy = this.sy(b.y) - this.px(flightLift(b.z));
+      const fr = rpx * (b.scale ?? 1) * flightScale(b.z);
+      if (b.o && !snooker && !carom && b.n > 0) this.drawRolling(ctx, b.n, b.o, fx, fy, fr, opts);
+      else drawBall(ctx, b.n, fx, fy, fr, opts);
     }
     // What the last frame drew in flight (the page's tests read it).
     this.flight = { count: flying.length, maxZ: flying.reduce((m, b) => Math.max(m, b.z), 0) };
@@ -675,8 +909,12 @@ export class TableView {
       ctx.textAlign = 'left';
       ctx.textBaseline = 'middle';
       const w = ctx.measureText(scene.counter.text).width + fs;
-      const x = this.sx(0) + fs * 0.5;
-      const y = this.sy(this.table.width) + fs * 1.1;
+      // upright, at the cloth's top-left corner on the screen
+      const a = this.screenOf(this.sx(0), this.sy(this.table.width));
+      const b = this.screenOf(this.sx(this.table.length), this.sy(0));
+      ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
+      const x = Math.min(a.x, b.x) + fs * 0.5;
+      const y = Math.min(a.y, b.y) + fs * 1.1;
       ctx.fillStyle = 'rgba(10, 14, 18, 0.7)';
       roundRect(ctx, x, y - fs * 0.8, w, fs * 1.6, fs * 0.35);
       ctx.fill();
@@ -687,6 +925,7 @@ export class TableView {
 
     if (scene.banner) {
       ctx.save();
+      ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);  // upright
       const fs = Math.max(16, Math.min(36, this.cssW / 28));
       ctx.font = `700 ${fs}px system-ui, -apple-system, "Segoe UI", Arial, sans-serif`;
       ctx.textAlign = 'center';
@@ -703,9 +942,12 @@ export class TableView {
     }
   }
 
-  label(text, cx, cy, colour) {
+  /** A text label at (cx, cy) of the landscape drawing, upright on the screen. */
+  label(text, lx, ly, colour) {
     const ctx = this.ctx;
     ctx.save();
+    ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
+    const { x: cx, y: cy } = this.screenOf(lx, ly);
     ctx.font = '600 13px system-ui, -apple-system, "Segoe UI", Arial, sans-serif';
     ctx.textAlign = 'center';
     ctx.textBaseline = 'middle';
@@ -796,7 +1038,10 @@ export class TableView {
     const vy = ux;
     const cx = this.sx(c.x);
     const cy = this.sy(c.y);
-    const gap = rpx + this.px(0.012 + 0.13 * (aim.power ?? 0.3));
+    // drawn back by the pull (the stroke's, or the speed's), and to the
+    // side by the tip's offset a (right english: to the shooter's right)
+    const gap = rpx + this.px(0.004 + (aim.pull ?? 0.013 + 0.13 * (aim.power ?? 0.3)));
+    const side = this.px((aim.a ?? 0) * (aim.R ?? 0));
     const len = this.px(1.45);
     const tipW = this.px(0.0065);
     const buttW = this.px(0.015);
@@ -811,7 +1056,7 @@ export class TableView {
     const at = (s, w) => {
       const lift = this.px(flightLift(height(s)));
       const ww = w * flightScale(height(s));
-      return [cx - ux * (gap + s * cosT) + vx * ww, cy - uy * (gap + s * cosT) + vy * ww - lift];
+      return [cx - ux * (gap + s * cosT) + vx * (ww + side), cy - uy * (gap + s * cosT) + vy * (ww + side) - lift];
     };
     const width = (s) => tipW + (buttW - tipW) * (s / len);
     const quad = (s0, s1, fill) => {
@@ -830,7 +1075,7 @@ export class TableView {
     };
     ctx.save();
     // shadow: on the cloth under the stick (its plan), a little offset
-    const ground = (s, w) => [cx - ux * (gap + s * cosT) + vx * w, cy - uy * (gap + s * cosT) + vy * w];
+    const ground = (s, w) => [cx - ux * (gap + s * cosT) + vx * (w + side), cy - uy * (gap + s * cosT) + vy * (w + side)];
     ctx.translate(this.px(0.01), this.px(0.014));
     {
       const a = ground(0, width(0));
@@ -864,6 +1109,43 @@ export class TableView {
     quad(shaftEnd + this.px(0.012), wrapEnd, '#5a2d16');
     quad(wrapEnd, len - this.px(0.03), '#262626');
     quad(len - this.px(0.03), len, '#111');
+    ctx.restore();
+    this.drawTipInset(aim);
+    if (aim.stroke) {
+      // the speed of the stroke being drawn, beside the butt's side of the ball
+      const bx = cx - ux * (gap + this.px(0.12));
+      const by = cy - uy * (gap + this.px(0.12));
+      this.label(aim.stroke, bx + vx * this.px(0.07), by + vy * this.px(0.07), '#ffe9a8');
+    }
+  }
+
+  /** Where the tip meets the cue ball (a to the right, b up, as the #tip
+   *  widget shows it), on a small ball drawn on the bottom rail. */
+  drawTipInset(aim) {
+    const ctx = this.ctx;
+    const r = Math.max(9, this.px(0.05));
+    const at = this.screenOf(this.sx(0.2), this.sy(-(CUSHION + (FRAME - CUSHION) * 0.5)));
+    const cx = at.x;
+    const cy = at.y;
+    ctx.save();
+    ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);  // upright: the ball as the player sees it
+    ctx.globalAlpha = 0.92;
+    drawBall(ctx, 0, cx, cy, r, { shadow: false });
+    ctx.strokeStyle = 'rgba(0, 0, 0, 0.3)';
+    ctx.lineWidth = 0.75;
+    ctx.beginPath();
+    ctx.moveTo(cx - r, cy);
+    ctx.lineTo(cx + r, cy);
+    ctx.moveTo(cx, cy - r);
+    ctx.lineTo(cx, cy + r);
+    ctx.stroke();
+    ctx.fillStyle = '#2f6fc0';
+    ctx.strokeStyle = '#0d2748';
+    ctx.lineWidth = 1;
+    ctx.beginPath();
+    ctx.arc(cx + (aim.a ?? 0) * r, cy - (aim.b ?? 0) * r, Math.max(2, r * 0.2), 0, Math.PI * 2);
+    ctx.fill();
+    ctx.stroke();
     ctx.restore();
   }
 }

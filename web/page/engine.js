@@ -99,6 +99,7 @@ function rawApi(M) {
     playbackNew: c('bs_playback_new', 'number', ['number']),
     frame: c('bs_playback_frame', 'number', ['number', 'number']),
     frameData: c('bs_playback_frame_data', 'number', ['number', 'number']),
+    spins: c('bs_playback_spins', 'number', ['number']),
     events: c('bs_playback_events', 'number', ['number', 'number']),
     playbackFree: c('bs_playback_free', null, ['number']),
     gameNew: c('bs_game_new', 'number', ['number']),
@@ -164,6 +165,15 @@ function rawApi(M) {
       const n = heap[at + FRAME_HEADER - 1];
       return heap.subarray(at, at + frameLength(n));
     },
+    // The balls' spins at the last frame (bs_playback_spins): a copy, 3
+    // doubles per ball of the n the caller knows from the frame; null on
+    // error (then lastError()).
+    spins: (h, n) => {
+      const p = fn.spins(h);
+      if (!p) return null;
+      const at = p / 8;
+      return M.HEAPF64.slice(at, at + 3 * n);
+    },
     events: (h, from) => str(fn.events(h, from)),
     playbackFree: (h) => fn.playbackFree(h),
     gameNew: (text) => withStrings([text], (p) => fn.gameNew(p)),
@@ -216,6 +226,14 @@ class Playback {
       throw new Error('bs_playback_frame_data failed');
     }
     return frameObject(d);
+  }
+  /** The balls' spins at the last frame's time (bs_playback_spins; the
+   *  start's before any frame): a Float64Array of wx, wy, wz (rad/s) per
+   *  ball, for drawing. n: the number of balls (a frame's balls.length). */
+  spins(n) {
+    const w = this._raw.spins(this._handle(), intArg(n, 'n'));
+    if (!w) parse(this._raw.lastError());
+    return w;
   }
   /** The same frame from bs_playback_frame's JSON text (for tests). */
   frameJson(t) { return parse(this._raw.frame(this._handle(), numArg(t, 't'))); }

@@ -7,7 +7,8 @@
 // the engine through Math.random: the seed comes from the URL, the form
 // or the clock at new-game time, and the link keeps it.
 
-import { TableView, aimGeometry, drawBall, snookerName, caromName } from './draw.js';
+import { TableView, aimGeometry, drawBall, snookerName, caromName, identityOrientation, rotate } from './draw.js';
+import { Sounds } from './sound.js';
 
 export const AI_LEVELS = ['beginner', 'amateur', 'club', 'expert', 'champion'];
 
@@ -18,6 +19,25 @@ const SNOOKER_BREAK_SPEED = 5;
 const DEFAULT_SPEED = 3;
 const TIP_LIMIT = 0.48;
 const FADE = 0.3;          // seconds a pocketed ball takes to vanish    // largest tip offset the widget allows (miscue limit 0.5)
+// The drag-back stroke: the cue drawn back PULL_MAX (m, on the table)
+// gives MAX_SPEED, none MIN_SPEED, linearly between; a pull under
+// MIN_PULL on release strikes nothing. The stick drawn while aiming is
+// drawn back by the pull of the speed set.
+export const PULL_MAX = 0.35;
+const MIN_PULL = 0.01;
+const STRIKE_MS = 90;      // the stick's push through on release
+const STICK_REACH = 0.7;   // how far behind the cue ball a press takes the stick (m)
+
+/** The speed (m/s) of a stroke drawn back `pull` metres, in the slider's steps. */
+export function speedFromPull(pull) {
+  const f = Math.max(0, Math.min(1, pull / PULL_MAX));
+  return Math.round((MIN_SPEED + (MAX_SPEED - MIN_SPEED) * f) * 20) / 20;
+}
+
+/** The pull (m) that gives `speed`. */
+export function pullFromSpeed(speed) {
+  return PULL_MAX * Math.max(0, Math.min(1, (speed - MIN_SPEED) / (MAX_SPEED - MIN_SPEED)));
+}
 
 /** Ball n of an engine state (position and on_table by ball number, as in
  *  game records): {x, y, on}, or null for a number the game does not have. */
@@ -111,6 +131,38 @@ function countWords(c) {
   return `${n} · ${c.hit.map(caromName).join(', then ')}`;
 }
 
+/** The ball number of an event's ball id (the games' scenarios name
+ *  balls "cue", "1", "2", ..., carom balls "white", "yellow", "red"). */
+function numberOfId(id) {
+  if (id === 'cue') return 0;
+  if (id in CAROM_BALL) return CAROM_BALL[id];
+  const n = Number(id);
+  return Number.isInteger(n) ? n : -1;
+}
+
+/** The impact speed (m/s) of an event, from the balls' velocities in the
+ *  frames before (prev) and after (cur) it: the normal speed of a contact
+ *  from the velocity changes it made (equal masses: the two changes add
+ *  up to (1 + e) times it), a cushion's from the ball's change, a pocket's
+ *  the ball's speed before it dropped, the tip's the cue ball's speed
+ *  after. For sounds only. */
+export function impactSpeed(type, idx, prev, cur) {
+  const v = (f, i) => (f && f.balls[i] ? [f.balls[i][3], f.balls[i][4]] : [0, 0]);
+  const dv = (i) => {
+    const a = v(prev || cur, i);
+    const b = v(cur, i);
+    return Math.hypot(b[0] - a[0], b[1] - a[1]);
+  };
+  const speed = (f, i) => Math.hypot(...v(f, i));
+  if (type === 'ball_ball' && idx.length === 2) return (dv(idx[0]) + dv(idx[1])) / 1.95;
+  if (type === 'ball_cushion') return dv(idx[0]) / 1.8;
+  if (type === 'ball_pocket') return speed(prev || cur, idx[0]);
+  if (type === 'cue_strike') return speed(cur, idx[0]);
+  return 0;
+}
+
+const SOUND_OF = { ball_ball: 'ball', ball_cushion: 'cushion', ball_pocket: 'pocket', cue_strike: 'cue' };
+
 /** The #power slider's value is the cue speed in m/s. */
 export function speedFromPower(p) {
   const v = Number(p);
@@ -153,6 +205,9 @@ export class GameUI {
     this.override = { ball: null, pocket: null, nominate: null };
     this.placePos = null;   // where the cue ball will be placed before the shot
     this.drag = null;       // {kind: 'cue' | 'aim', id, dx, dy, x, y, ok, reason}
+    this.stroke = null;     // the drag-back stroke: {id, from, pull, speed0}
+    this.strike = null;     // the stick pushed through after a stroke: {t0, pull}
+    this.aimHeld = false;   // a press fixed the aim: hovering no longer moves it
     this.anim = null;
     this.thinking = false;
     this.reqId = 0;
@@ -163,6 +218,9 @@ export class GameUI {
 
     this.canvas = $('table');
     this.view = new TableView(this.canvas);
+    this.sounds = new Sounds();
+    this.orient = new Map();  // ball n -> its orientation, for drawing (draw.js rotate)
+    this.bindSound();
     this.bindControls();
     this.bindCanvas();
     this.bindTip();
@@ -173,7 +231,7 @@ export class GameUI {
 
   // ---- public (app.js and the test hooks) ----
 
-  busy() { return !!this.anim || this.thinking; }
+  busy() { return !!this.anim || this.thinking || !!this.strike; }
 
   state() {
     if (!this.g) return null;
@@ -256,6 +314,8 @@ export class GameUI {
   install(g, opts = {}) {
     this.cancelAI();
     this.stopAnimation();
+    this.stroke = null;
+    this.strike = null;
     if (this.g) {
       try { this.g.free(); } catch (e) { /* already gone */ }
     }
@@ -271,6 +331,7 @@ export class GameUI {
     }
     this.R = this.table.ball_radius;
     this.players = this.st.players || this.players;
+    this.orient = new Map();
     this.view.setTable(this.table);
     this.rebuildLog();
     this.newTurn(true);
@@ -417,6 +478,8 @@ export class GameUI {
     $('safety').checked = false;
     $('push-out').checked = false;
     this.drag = null;
+    this.stroke = null;
+    this.aimHeld = false;
     this.placePos = null;
     if (legal.place && legal.place !== 'none') this.placePos = this.defaultPlacement(legal);
     if (!this.st) return;
@@ -754,7 +817,7 @@ export class GameUI {
       done();
       return;
     }
-    this.anim = { pb, numbers: numbers || [], t: 0, last: null, frame: null, done, index, gone: new Map(), replay: !!replay };
+    this.anim = { pb, numbers: numbers || [], t: 0, last: null, frame: null, done, index, gone: new Map(), replay: !!replay, heard: 0 };
     // three-cushion: the struck ball's cushions counted as the events come
     const k = ruling && ruling.carom;
     if (this.carom() && k) {
@@ -799,6 +862,8 @@ export class GameUI {
         }
       });
     }
+    this.soundEvents(a, prev);
+    this.roll(a, prev);
     if (a.carom && a.frame.events > a.carom.seen) {
       const evs = a.pb.events(a.carom.seen).events || [];
       a.carom.seen = a.frame.events;
@@ -807,6 +872,67 @@ export class GameUI {
     }
     const fading = [...a.gone.values()].some((g) => a.t - g.t < FADE);
     if (a.frame.at_rest && !fading) this.finishAnimation(null);
+  }
+
+  /** The sounds of the events since the last frame, each as loud as its
+   *  impact speed (from this frame's and the previous frame's states). */
+  soundEvents(a, prev) {
+    if (a.frame.events <= a.heard) return;
+    let evs = [];
+    try {
+      evs = a.pb.events(a.heard).events || [];
+    } catch (e) { /* no sounds */ }
+    a.heard = a.frame.events;
+    if (!a.index_of) {
+      a.index_of = new Map();
+      a.numbers.forEach((n, i) => a.index_of.set(n, i));
+    }
+    this.sounds.newFrame();
+    // the loudest first: a frame's budget of sounds keeps those
+    const list = [];
+    for (const e of evs) {
+      const kind = SOUND_OF[e.type];
+      if (!kind) continue;
+      const idx = (e.balls || []).map((id) => {
+        const n = numberOfId(id);
+        return a.index_of.has(n) ? a.index_of.get(n) : n;
+      });
+      list.push({ kind, speed: impactSpeed(e.type, idx, prev, a.frame), dt: Math.max(0, (e.time || 0) - (prev ? prev.t : 0)) });
+    }
+    list.sort((p, q) => q.speed - p.speed);
+    for (const x of list) this.sounds.play(x.kind, x.speed, x.dt);
+  }
+
+  /** Turns the pool balls' orientations by their spins over the frame's
+   *  time step (the mean of the spins at its two ends). Drawing only. */
+  roll(a, prev) {
+    if (this.snooker() || this.carom()) return;
+    const n = a.frame.balls.length;
+    let w;
+    try {
+      w = a.pb.spins(n);
+    } catch (e) {
+      return;
+    }
+    const dt = prev ? a.frame.t - prev.t : 0;
+    const w0 = a.spins || w;
+    a.spins = w;
+    if (!(dt > 0)) return;
+    for (let i = 0; i < n; i++) {
+      if (!a.frame.balls[i][2] && !(prev && prev.balls[i][2])) continue;
+      const num = a.numbers[i] ?? i;
+      const o = this.orientation(num);
+      rotate(o, (w0[3 * i] + w[3 * i]) / 2, (w0[3 * i + 1] + w[3 * i + 1]) / 2, (w0[3 * i + 2] + w[3 * i + 2]) / 2, dt);
+    }
+  }
+
+  orientation(n) {
+    let o = this.orient.get(n);
+    if (!o) {
+      o = identityOrientation();
+      this.orient.set(n, o);
+    }
+    return o;
   }
 
   nearestPocket(x, y) {
@@ -881,8 +1007,20 @@ export class GameUI {
     if (!area || area.offsetParent === null) return;  // hidden tab
     const top = this.canvas.getBoundingClientRect().top + window.scrollY;
     const maxW = area.clientWidth;
-    const maxH = Math.max(240, window.innerHeight - Math.max(0, top - window.scrollY) - 80);
-    if (this.view.fit(maxW, maxH)) this.requestRender();
+    // A phone held upright: the table turned to the screen's length, as
+    // large as leaves the status under it and the controls docked at the
+    // bottom (style.css) in view.
+    const phone = window.matchMedia('(max-width: 560px)').matches;
+    const portrait = phone && window.innerHeight > window.innerWidth * 1.2;
+    let maxH;
+    if (portrait) {
+      const status = $('status');
+      const dock = 84;
+      maxH = Math.max(240, window.innerHeight - top - dock - (status ? status.offsetHeight : 60) - 20);
+    } else {
+      maxH = Math.max(240, window.innerHeight - Math.max(0, top - window.scrollY) - 80);
+    }
+    if (this.view.fit(maxW, maxH, portrait)) this.requestRender();
   }
 
   requestRender() {
@@ -900,12 +1038,17 @@ export class GameUI {
   }
 
   frame(now) {
+    if (this.strike && performance.now() - this.strike.t0 >= STRIKE_MS) {
+      // the stick has gone through: the shot
+      this.strike = null;
+      this.shoot();
+    }
     if (this.anim) this.stepAnimation(now);
     const scene = this.scene();
     this.view.render(scene);
     if (scene.call) this.autoCallLabels(scene.call);
     this.nominateLabel(scene.nominated);
-    if (this.anim) this.requestRender();
+    if (this.anim || this.strike) this.requestRender();
   }
 
   /** The "auto" entries of the call selects name what the aim picks. */
@@ -941,13 +1084,15 @@ export class GameUI {
       frame.balls.forEach((b, i) => {
         if (b[2]) {
           // z (b[8]) only when a ball of the frame is off the cloth
-          scene.balls.push({ n: numbers[i] ?? i, x: b[0], y: b[1], z: b.length > 8 ? b[8] : 0 });
+          const n = numbers[i] ?? i;
+          scene.balls.push({ n, x: b[0], y: b[1], z: b.length > 8 ? b[8] : 0, o: this.orientation(n) });
         } else if (gone.has(i)) {
           const g = gone.get(i);
           const f = (t - g.t) / FADE;
           if (f < 1) {
             const k = Math.min(1, f * 1.5);
-            scene.balls.push({ n: numbers[i] ?? i, x: g.x + (g.px - g.x) * k, y: g.y + (g.py - g.y) * k, z: g.z, alpha: 1 - f, scale: 1 - 0.35 * f });
+            const n = numbers[i] ?? i;
+            scene.balls.push({ n, x: g.x + (g.px - g.x) * k, y: g.y + (g.py - g.y) * k, z: g.z, alpha: 1 - f, scale: 1 - 0.35 * f, o: this.orientation(n) });
           }
         }
       });
@@ -957,7 +1102,7 @@ export class GameUI {
       return scene;
     }
     this.st.position.forEach((p, n) => {
-      if (this.st.on_table[n]) scene.balls.push({ n, x: p[0], y: p[1] });
+      if (this.st.on_table[n]) scene.balls.push({ n, x: p[0], y: p[1], o: this.orientation(n) });
     });
     const legal = this.legal();
     const canAct = this.canAct();
@@ -971,7 +1116,7 @@ export class GameUI {
         scene.place = { x: this.placePos.x, y: this.placePos.y, ok: true };
       }
     }
-    if (canAct && this.shotDue() && this.cuePos() && !(this.drag && this.drag.kind === 'cue')) {
+    if ((canAct || this.strike) && this.shotDue() && this.cuePos() && !(this.drag && this.drag.kind === 'cue')) {
       const geo = this.geometry();
       scene.aim = {
         cue: this.cuePos(),
@@ -979,6 +1124,11 @@ export class GameUI {
         theta: this.aim.theta,
         geo,
         power: (this.aim.speed - MIN_SPEED) / (MAX_SPEED - MIN_SPEED),
+        pull: this.stickPull(),
+        a: this.aim.a,
+        b: this.aim.b,
+        R: this.R,
+        stroke: this.stroke ? `${this.aim.speed.toFixed(2)} m/s` : null,
         stick: true,
       };
       scene.call = this.currentCall(geo);
@@ -988,6 +1138,18 @@ export class GameUI {
       scene.banner = this.st.winner >= 0 ? `${this.shortName(this.st.winner)} wins` : 'Draw';
     }
     return scene;
+  }
+
+  /** How far the stick is drawn back from the cue ball (m): the stroke's
+   *  pull while one is drawn, going through the ball after the release,
+   *  else the pull of the speed set. */
+  stickPull() {
+    if (this.stroke) return this.stroke.pull;
+    if (this.strike) {
+      const f = Math.min(1, (performance.now() - this.strike.t0) / STRIKE_MS);
+      return this.strike.pull * (1 - f * f) - 0.004 * f;
+    }
+    return pullFromSpeed(this.aim.speed);
   }
 
   // ---- the panel ----
@@ -1057,6 +1219,19 @@ export class GameUI {
         b.addEventListener('click', () => this.decide(c));
         choices.appendChild(b);
       }
+    }
+
+    // how to aim and strike, while a shot of a player on this screen is due
+    const hint = $('aim-hint');
+    if (hint) {
+      let text = '';
+      if (canAct && this.shotDue()) {
+        const hover = window.matchMedia && window.matchMedia('(hover: hover)').matches;
+        if (!hover) text = 'Touch the table to aim. Pull the cue back from behind the cue ball and let go to strike.';
+        else if (this.aimHeld) text = 'Aim held: press on the table to aim again, Esc to aim by pointing. Drag the cue back from behind the cue ball and release to strike.';
+        else text = 'Point to aim, press to hold the aim. Drag the cue back from behind the cue ball and release to strike.';
+      }
+      if (hint.textContent !== text) hint.textContent = text;
     }
 
     // status
@@ -1473,6 +1648,12 @@ export class GameUI {
     if (tag === 'INPUT' && t.type !== 'range') return;
     if (tag === 'SELECT' || tag === 'TEXTAREA') return;
     if (ev.ctrlKey || ev.metaKey || ev.altKey) return;
+    if (ev.key === 'Escape') {
+      if (this.stroke) this.endStroke(true);
+      else this.aimHeld = false;
+      this.updatePanel();
+      return;
+    }
     if (ev.key === ' ' || ev.code === 'Space') {
       // space shoots, even with a button focused (its keyup is cancelled too)
       ev.preventDefault();
@@ -1499,19 +1680,93 @@ export class GameUI {
     c.addEventListener('pointermove', (ev) => this.onMove(ev));
     c.addEventListener('pointerup', (ev) => this.onUp(ev, false));
     c.addEventListener('pointercancel', (ev) => this.onUp(ev, true));
+    c.addEventListener('pointerleave', () => this.setGrabCursor(false));
     c.addEventListener('contextmenu', (ev) => ev.preventDefault());
+  }
+
+  /** The grab radius around the cue ball (m): larger for a finger. */
+  grabRadius(ev) {
+    const touch = ev && ev.pointerType && ev.pointerType !== 'mouse';
+    return Math.max(this.R * 1.6, (touch ? 24 : 14) / this.view.scale);
+  }
+
+  /** A press at p takes the cue (starts a drag-back stroke): on the cue
+   *  ball (unless it is in hand: then a press on it moves it), or on the
+   *  stick behind it. */
+  onStick(p, cue, grab, placing) {
+    const rad = (this.aim.phi * Math.PI) / 180;
+    const ux = Math.cos(rad);
+    const uy = Math.sin(rad);
+    const dx = p.x - cue.x;
+    const dy = p.y - cue.y;
+    if (!placing && Math.hypot(dx, dy) <= grab) return true;
+    const back = -(dx * ux + dy * uy);      // distance behind the ball, along the stick
+    const side = Math.abs(dx * uy - dy * ux);
+    return back > this.R && back < STICK_REACH && side <= Math.max(grab * 0.8, this.R);
+  }
+
+  setGrabCursor(on) { this.canvas.classList.toggle('cue-grab', !!on); }
+
+  /** The mouse moving with no button down: the aim follows it (unless a
+   *  press has fixed it), but not over the cue ball or the stick. */
+  onHover(ev) {
+    if (ev.pointerType !== 'mouse' || ev.buttons !== 0 || !this.table || !this.canAct() || !this.shotDue()) {
+      this.setGrabCursor(false);
+      return;
+    }
+    const p = this.view.toTable(ev.clientX, ev.clientY);
+    const cue = this.cuePos();
+    if (!cue) return;
+    const legal = this.legal();
+    const placing = !!legal.place && legal.place !== 'none';
+    const grab = this.grabRadius(ev);
+    const overCue = Math.hypot(p.x - cue.x, p.y - cue.y) <= grab;
+    const takes = this.onStick(p, cue, grab, placing);
+    this.setGrabCursor(takes || (placing && overCue));
+    if (takes || overCue || this.aimHeld) return;
+    this.setAimToward(p);
+  }
+
+  /** The stroke's pull (m): how far the pointer has gone back along the
+   *  aim from where it pressed. */
+  strokePull(p) {
+    const st = this.stroke;
+    const rad = (this.aim.phi * Math.PI) / 180;
+    const back = -((p.x - st.from.x) * Math.cos(rad) + (p.y - st.from.y) * Math.sin(rad));
+    return Math.max(0, Math.min(PULL_MAX, back));
+  }
+
+  /** Releases a stroke: a pull strikes (the stick pushed through, then
+   *  the shot), none puts the speed back. */
+  endStroke(cancelled) {
+    const st = this.stroke;
+    if (!st) return;
+    this.stroke = null;
+    try { this.canvas.releasePointerCapture(st.id); } catch (e) { /* not captured */ }
+    if (cancelled || st.pull < MIN_PULL || !this.canAct()) {
+      this.aim.speed = st.speed0;
+      this.syncControls();
+      this.requestRender();
+      return;
+    }
+    this.aim.speed = speedFromPull(st.pull);
+    this.syncControls();
+    this.strike = { t0: performance.now(), pull: st.pull };
+    this.updatePanel();
+    this.requestRender();
   }
 
   onDown(ev) {
     if (!this.table || (ev.pointerType === 'mouse' && ev.button !== 0)) return;
-    if (!this.canAct()) return;
+    if (!this.canAct() || this.stroke) return;
     ev.preventDefault();
     this.canvas.focus({ preventScroll: true });
     const p = this.view.toTable(ev.clientX, ev.clientY);
     const legal = this.legal();
     const cue = this.cuePos();
-    const grab = Math.max(this.R * 1.6, 14 / this.view.scale);
-    if (legal.place && legal.place !== 'none' && cue && Math.hypot(p.x - cue.x, p.y - cue.y) <= grab) {
+    const grab = this.grabRadius(ev);
+    const placing = !!legal.place && legal.place !== 'none';
+    if (placing && cue && Math.hypot(p.x - cue.x, p.y - cue.y) <= grab) {
       this.drag = { kind: 'cue', id: ev.pointerId, dx: cue.x - p.x, dy: cue.y - p.y, x: cue.x, y: cue.y, ok: true, reason: '' };
       this.canvas.classList.add('dragging');
       try { this.canvas.setPointerCapture(ev.pointerId); } catch (e) { /* synthetic */ }
@@ -1519,6 +1774,13 @@ export class GameUI {
       return;
     }
     if (!this.shotDue()) return;
+    // the drag-back stroke: a press on the cue ball or the stick takes the cue
+    if (cue && this.onStick(p, cue, grab, placing)) {
+      this.stroke = { id: ev.pointerId, from: p, pull: 0, speed0: this.aim.speed };
+      try { this.canvas.setPointerCapture(ev.pointerId); } catch (e) { /* synthetic */ }
+      this.requestRender();
+      return;
+    }
     // snooker: a click on a ball that may be nominated nominates it (and
     // aims at it, as any click does)
     if (this.nominateDue()) {
@@ -1544,13 +1806,28 @@ export class GameUI {
       }
     }
     this.drag = { kind: 'aim', id: ev.pointerId };
+    this.aimHeld = true;  // a press fixes the aim (Escape: follow the pointer again)
+    this.updatePanel();
     try { this.canvas.setPointerCapture(ev.pointerId); } catch (e) { /* synthetic */ }
     this.setAimToward(p);
   }
 
   onMove(ev) {
+    const st = this.stroke;
+    if (st && st.id === ev.pointerId) {
+      ev.preventDefault();
+      st.pull = this.strokePull(this.view.toTable(ev.clientX, ev.clientY));
+      this.aim.speed = st.pull >= MIN_PULL ? speedFromPull(st.pull) : st.speed0;
+      this.syncControls();
+      this.requestRender();
+      return;
+    }
     const d = this.drag;
-    if (!d || d.id !== ev.pointerId) return;
+    if (!d) {
+      this.onHover(ev);
+      return;
+    }
+    if (d.id !== ev.pointerId) return;
     ev.preventDefault();
     const p = this.view.toTable(ev.clientX, ev.clientY);
     if (d.kind === 'aim') {
@@ -1576,6 +1853,11 @@ export class GameUI {
   }
 
   onUp(ev, cancelled) {
+    if (this.stroke && this.stroke.id === ev.pointerId) {
+      if (!cancelled) this.stroke.pull = this.strokePull(this.view.toTable(ev.clientX, ev.clientY));
+      this.endStroke(cancelled);
+      return;
+    }
     const d = this.drag;
     if (!d || d.id !== ev.pointerId) return;
     this.drag = null;
@@ -1596,6 +1878,29 @@ export class GameUI {
     }
     this.updatePanel();
     this.requestRender();
+  }
+
+  // ---- sound ----
+
+  bindSound() {
+    const b = $('mute');
+    const show = () => {
+      if (!b) return;
+      b.setAttribute('aria-pressed', String(this.sounds.muted));
+      b.textContent = this.sounds.muted ? 'Sound off' : 'Sound on';
+      b.title = this.sounds.muted ? 'the sounds are off: click to hear them' : 'click to mute the sounds';
+    };
+    if (b) {
+      b.addEventListener('click', () => {
+        this.sounds.setMuted(!this.sounds.muted);
+        show();
+      });
+    }
+    show();
+    // browsers let a page play sound after a gesture: the first press or key
+    const unlock = () => this.sounds.unlock();
+    document.addEventListener('pointerdown', unlock, true);
+    document.addEventListener('keydown', unlock, true);
   }
 
   // ---- the cue tip widget ----

@@ -3,7 +3,9 @@
 // by `breakshot serve`. Nothing is downloaded.
 //
 //   node web/tests/browser.mjs --cli build/release/breakshot --root build/web/dist \
-//        [--shots DIR] [--only NAME]
+//        [--shots DIR] [--only NAME] [--frames N]
+//
+// --frames N: the frame-time test measures N breaks (default 1).
 //
 // Prints one line per test and ends with "N passed, M failed"; exits 1 on
 // any failure. Screenshots of the game and the lab go to --shots
@@ -131,6 +133,355 @@ test('a shot made with the mouse moves the balls and ends with a ruling', async 
   check(log && log.trim().length > 0, 'no ruling in the log after the shot');
   await page.screenshot({ path: path.join(shots, 'game-after-break.png') });
   check(t.length > 2 && t.width > 1, 'table size');
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
+// --- the feel: aiming, the stroke, sounds, rolling, the phone ------------
+
+// The aim's direction (degrees, [0, 360)) from the cue ball to table point (x, y).
+const phiTo = (cue, x, y) => ((Math.atan2(y - cue[1], x - cue[0]) * 180 / Math.PI) + 360) % 360;
+const angleGap = (a, b) => Math.abs(((a - b + 540) % 360) - 180);
+
+// A digest of the table canvas's pixels (to see that a drawing changed).
+const canvasDigest = (page) => page.evaluate(() => {
+  const c = document.querySelector('#table');
+  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  let h = 0;
+  for (let i = 0; i < d.length; i += 7) h = (h * 31 + d[i]) >>> 0;
+  return h;
+});
+
+// The speed of a stroke drawn back `pull` metres (game.js speedFromPull).
+const speedOfPull = (pull) => Math.round((0.3 + 9.7 * Math.min(1, pull / 0.35)) * 20) / 20;
+
+test('hovering aims the cue, a press holds the aim, Escape lets the hover aim again', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  await newGame(page, { game: 'eight_ball', opponent: 'friend' });
+  const st = await page.evaluate(() => window.breakshot.state());
+  const cue = st.position[0];
+  const before = await canvasDigest(page);
+  // The mouse over the table, no button: the aim follows it.
+  const p1 = [cue[0] + 0.6, cue[1] + 0.3];
+  let at = await toPage(page, p1[0], p1[1]);
+  await page.mouse.move(at.x, at.y, { steps: 4 });
+  await page.waitForTimeout(100);
+  let aim = await page.evaluate(() => window.breakshot.aim());
+  check(angleGap(aim.phi, phiTo(cue, ...p1)) < 0.5, `hovering at ${p1} aims at ${aim.phi}, not ${phiTo(cue, ...p1)}`);
+  check(await canvasDigest(page) !== before, 'the drawing did not change with the aim (the cue did not move)');
+  const p2 = [cue[0] + 0.5, cue[1] - 0.35];
+  at = await toPage(page, p2[0], p2[1]);
+  await page.mouse.move(at.x, at.y, { steps: 4 });
+  aim = await page.evaluate(() => window.breakshot.aim());
+  check(angleGap(aim.phi, phiTo(cue, ...p2)) < 0.5, `hovering at ${p2} aims at ${aim.phi}`);
+  // A press (a click) aims there and holds the aim: hovering no longer moves it.
+  const p3 = [cue[0] + 1.2, cue[1] + 0.05];
+  at = await toPage(page, p3[0], p3[1]);
+  await page.mouse.click(at.x, at.y);
+  const held = (await page.evaluate(() => window.breakshot.aim())).phi;
+  check(angleGap(held, phiTo(cue, ...p3)) < 0.5, `the click at ${p3} aims at ${held}`);
+  at = await toPage(page, p1[0], p1[1]);
+  await page.mouse.move(at.x, at.y, { steps: 4 });
+  check((await page.evaluate(() => window.breakshot.aim())).phi === held, 'hovering moved a held aim');
+  check(/Aim held/.test(await page.textContent('#aim-hint')), 'the hint does not say the aim is held: ' + await page.textContent('#aim-hint'));
+  await page.keyboard.press('Escape');
+  await page.mouse.move(at.x + 3, at.y + 3, { steps: 2 });
+  aim = await page.evaluate(() => window.breakshot.aim());
+  check(angleGap(aim.phi, phiTo(cue, ...p1)) < 2, 'after Escape hovering does not aim: ' + aim.phi);
+  await page.locator('#table').screenshot({ path: path.join(shots, 'game-hover-aim.png') });
+  check((await page.evaluate(() => window.breakshot.state())).actions === 0, 'hovering and clicking played something');
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
+test('a drag back from the cue ball and a release strike with the power of the pull', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  await page.click('#new-game');
+  await page.fill('#seed', '5');
+  await newGame(page, { game: 'eight_ball', opponent: 'friend' });
+  await page.fill('#phi', '0');
+  await page.dispatchEvent('#phi', 'input');
+  await page.fill('#power', '2');
+  await page.dispatchEvent('#power', 'input');
+  const cue = (await page.evaluate(() => window.breakshot.state())).position[0];
+  // The cue ball is in hand for the break (a press on it moves it): the
+  // stroke starts on the stick, 12 cm behind the ball.
+  const grip = 0.12;
+  const from = await toPage(page, cue[0] - grip, cue[1]);
+  // A pull under a centimetre strikes nothing and keeps the speed.
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  await page.mouse.move(from.x - 1, from.y, { steps: 2 });
+  await page.mouse.up();
+  await page.waitForTimeout(200);
+  check((await page.evaluate(() => window.breakshot.state())).actions === 0, 'a release without a pull shot');
+  check((await page.evaluate(() => window.breakshot.aim())).speed === 2, 'a release without a pull changed the speed');
+  // Pulled back 0.2 m along the aim (phi 0: toward -x), released.
+  const pull = 0.2;
+  const want = speedOfPull(pull);
+  const to = await toPage(page, cue[0] - grip - pull, cue[1]);
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  await page.mouse.move(to.x, to.y, { steps: 8 });
+  const shown = await page.textContent('#power-out');
+  check(Math.abs(parseFloat(shown) - want) < 0.051, `drawn back ${pull} m the power shows ${shown}, not ${want}`);
+  await page.locator('#table').screenshot({ path: path.join(shots, 'game-stroke.png') });
+  await page.mouse.up();
+  await page.waitForFunction(() => window.breakshot.state().actions === 1, null, { timeout: 5000 });
+  await idle(page);
+  const rec = await page.evaluate(() => window.breakshot.game.record());
+  const strike = rec.actions[0].action.strike;
+  check(Math.abs(strike.speed - want) < 0.051, `the stroke shot at ${strike.speed} m/s, the pull gives ${want}`);
+  check(strike.phi === 0, 'the stroke moved the aim: ' + strike.phi);
+  // With the cue ball on the table (not in hand), a press on the ball itself
+  // takes the cue.
+  const st = await page.evaluate(() => window.breakshot.state());
+  if (st.legal.shoot && st.legal.place === 'none' && st.phase !== 'game_over') {
+    const c = st.position[0];
+    const aim = await page.evaluate(() => window.breakshot.aim());
+    const rad = aim.phi * Math.PI / 180;
+    const a = await toPage(page, c[0], c[1]);
+    const b = await toPage(page, c[0] - 0.1 * Math.cos(rad), c[1] - 0.1 * Math.sin(rad));
+    await page.mouse.move(a.x, a.y);
+    await page.mouse.down();
+    await page.mouse.move(b.x, b.y, { steps: 6 });
+    await page.mouse.up();
+    await page.waitForFunction(() => window.breakshot.state().actions === 2, null, { timeout: 5000 });
+    await idle(page);
+    const s2 = (await page.evaluate(() => window.breakshot.game.record())).actions[1].action.strike;
+    check(Math.abs(s2.speed - speedOfPull(0.1)) < 0.051, `the stroke from the cue ball shot at ${s2.speed}, not ${speedOfPull(0.1)}`);
+  } else {
+    console.log('      (the break left the cue ball in hand: no stroke from the ball itself)');
+  }
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
+test('the mute switch is remembered across a reload', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  check(await page.getAttribute('#mute', 'aria-pressed') === 'false', 'a new page is muted');
+  await page.click('#mute');
+  check(await page.getAttribute('#mute', 'aria-pressed') === 'true', 'the switch did not mute');
+  await page.reload();
+  await page.waitForFunction(() => window.breakshot && window.breakshot.engine, null, { timeout: 30000 });
+  check(await page.getAttribute('#mute', 'aria-pressed') === 'true', 'the page forgot it was muted');
+  check((await page.evaluate(() => window.breakshot.sounds())).muted, 'the sounds are not muted after the reload');
+  await page.click('#mute');
+  await page.reload();
+  await page.waitForFunction(() => window.breakshot && window.breakshot.engine, null, { timeout: 30000 });
+  check(await page.getAttribute('#mute', 'aria-pressed') === 'false', 'the page forgot the sound was on');
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
+test('a break and a scratch schedule sounds scaled by their impacts, with no audio device', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  await newGame(page, { game: 'nine_ball', opponent: 'friend' });
+  await page.click('#table');   // a gesture: the page may start its audio
+  const s0 = await page.evaluate(() => window.breakshot.sounds());
+  await scratchBreak(page);     // the cue ball alone into a corner pocket
+  let s = await page.evaluate(() => window.breakshot.sounds());
+  check(s.counts.cue === s0.counts.cue + 1 && s.counts.pocket === s0.counts.pocket + 1 && s.counts.ball === s0.counts.ball,
+    'the scratch: ' + JSON.stringify(s.counts));
+  // The break of a new game: the tip, many contacts and cushions.
+  await newGame(page, { game: 'eight_ball', opponent: 'friend' });
+  await page.fill('#power', '9');
+  await page.dispatchEvent('#power', 'input');
+  const c0 = (await page.evaluate(() => window.breakshot.sounds())).counts;
+  await page.click('#shoot');
+  await page.waitForFunction(() => window.breakshot.busy(), null, { timeout: 5000 }).catch(() => {});
+  await idle(page);
+  s = await page.evaluate(() => window.breakshot.sounds());
+  const d = Object.fromEntries(Object.keys(s.counts).map((k) => [k, s.counts[k] - c0[k]]));
+  check(d.cue === 1 && d.ball >= 6 && d.cushion >= 3, 'the break\'s sounds: ' + JSON.stringify(d));
+  check(s.last.every((e) => e.gain > 0 && e.gain <= 1 && e.speed > 0), 'a sound without an impact speed: ' + JSON.stringify(s.last));
+  // the tip's: the cue ball's speed as it leaves the tip (the cue's 9 m/s
+  // times (1 + e) m_cue / (m_cue + m_ball), a little more than 9)
+  const cueHit = s.last.filter((e) => e.kind === 'cue').pop();
+  check(cueHit && cueHit.speed > 9 && cueHit.speed < 9 * 1.6, 'the tip\'s sound is not the cue ball\'s speed: ' + JSON.stringify(cueHit));
+  // Scaled: the loudest contact of the break is louder than the softest.
+  const balls = s.last.filter((e) => e.kind === 'ball').map((e) => e.gain);
+  check(Math.max(...balls) > 2 * Math.min(...balls), 'the contacts are all as loud: ' + balls);
+  console.log(`      sounds: ${JSON.stringify(d)}; audio context ${s.context}, ${s.played} played`);
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
+test('the pool balls\' markings roll with their spin', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  await newGame(page, { game: 'eight_ball', opponent: 'friend' });
+  const orient = () => page.evaluate(() => Object.fromEntries([...window.breakshot.ui.orient].map(([n, o]) => [n, { v: o.v, m: [...o.m] }])));
+  const o0 = await orient();
+  check(Object.values(o0).every((o) => o.v === 0), 'balls turned before the break');
+  const before = await balls(page);
+  await page.fill('#power', '9');
+  await page.dispatchEvent('#power', 'input');
+  await page.click('#shoot');
+  await page.waitForFunction(() => window.breakshot.busy(), null, { timeout: 5000 }).catch(() => {});
+  await page.waitForTimeout(250);
+  await page.locator('#table').screenshot({ path: path.join(shots, 'game-rolling.png') });
+  await idle(page);
+  const after = await balls(page);
+  const o1 = await orient();
+  // every object ball that moved has turned; the balls' number discs (their
+  // +z axis) no longer all face up
+  let turned = 0;
+  let moved = 0;
+  for (let n = 1; n < 16; n++) {
+    const far = Math.hypot(after[n][0] - before[n][0], after[n][1] - before[n][1]);
+    if (far < 0.05) continue;
+    moved++;
+    if (o1[n] && o1[n].v > 0 && o1[n].m[8] < 0.999) turned++;
+  }
+  check(moved >= 5 && turned === moved, `${turned} of the ${moved} balls that moved have turned`);
+  // a spin the engine gives: the playback's spins are those of the result
+  const w = await page.evaluate(() => {
+    const pb = window.breakshot.game.shotPlayback(0);
+    try {
+      const f = pb.frame(0.5);
+      return [...pb.spins(f.balls.length)];
+    } finally { pb.free(); }
+  });
+  check(w.length === 48 && w.some((x) => Math.abs(x) > 5), 'the playback has no spins: ' + w.slice(0, 6));
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
+// Frame times (requestAnimationFrame) during the break's animation at 1x:
+// the intervals between frames, and the page's own work in each frame.
+async function breakFrames(page) {
+  await newGame(page, { game: 'eight_ball', opponent: 'friend' });
+  await page.fill('#power', '9');
+  await page.dispatchEvent('#power', 'input');
+  await page.evaluate(() => {
+    const ui = window.breakshot.ui;
+    const stats = { gaps: [], work: [], running: true };
+    window.__frames = stats;
+    const frame = ui.frame.bind(ui);
+    ui.frame = (now) => {
+      const t0 = performance.now();
+      frame(now);
+      if (ui.anim) stats.work.push(performance.now() - t0);
+    };
+    let last = null;
+    const tick = (now) => {
+      if (ui.anim) {
+        if (last != null) stats.gaps.push(now - last);
+        last = now;
+      } else {
+        last = null;
+      }
+      if (stats.running) requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  await page.click('#shoot');
+  await page.waitForFunction(() => window.breakshot.busy(), null, { timeout: 5000 }).catch(() => {});
+  await idle(page);
+  return page.evaluate(() => {
+    const s = window.__frames;
+    s.running = false;
+    return { gaps: s.gaps, work: s.work };
+  });
+}
+
+function frameFigures(gaps, work) {
+  const sorted = (a) => [...a].sort((x, y) => x - y);
+  const q = (a, f) => a[Math.min(a.length - 1, Math.floor(f * a.length))];
+  const g = sorted(gaps);
+  const w = sorted(work);
+  // a gap of k frame periods (16.7 ms) dropped k - 1 frames
+  const dropped = gaps.reduce((n, x) => n + Math.max(0, Math.round(x / (1000 / 60)) - 1), 0);
+  return {
+    frames: gaps.length, median: q(g, 0.5), p95: q(g, 0.95), max: g[g.length - 1], dropped,
+    workMedian: q(w, 0.5), workP95: q(w, 0.95), workMax: w[w.length - 1],
+  };
+}
+
+test('a break animates at 60 frames a second', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  const runs = Number(args.frames ?? 1);
+  const gaps = [];
+  const work = [];
+  for (let k = 0; k < runs; k++) {
+    const r = await breakFrames(page);
+    gaps.push(...r.gaps);
+    work.push(...r.work);
+  }
+  const f = frameFigures(gaps, work);
+  const ms = (x) => x.toFixed(1);
+  console.log(`      frames ${f.frames} (${runs} break${runs > 1 ? 's' : ''}): interval median ${ms(f.median)} ms, p95 ${ms(f.p95)}, max ${ms(f.max)}, ` +
+    `dropped ${f.dropped}; the page's work per frame median ${ms(f.workMedian)} ms, p95 ${ms(f.workP95)}, max ${ms(f.workMax)}`);
+  check(f.frames > 60, 'the break animated only ' + f.frames + ' frames');
+  check(f.median < 18, `the median frame interval is ${ms(f.median)} ms: below 60 frames a second`);
+  check(f.workP95 < 8, `the page's work takes ${ms(f.workP95)} ms a frame at the 95th percentile`);
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
+// A touch drag through the DevTools protocol (playwright's touchscreen only taps).
+async function touchDrag(page, from, to, steps = 8) {
+  const cdp = await page.context().newCDPSession(page);
+  const point = (p) => [{ x: p.x, y: p.y, id: 1, radiusX: 4, radiusY: 4, force: 1 }];
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: point(from) });
+  for (let i = 1; i <= steps; i++) {
+    const p = { x: from.x + (to.x - from.x) * i / steps, y: from.y + (to.y - from.y) * i / steps };
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: point(p) });
+  }
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await cdp.detach();
+}
+
+test('a phone held upright: the table turned to fit, no sideways scroll, touch aiming and a stroke', async ({ browser, url }) => {
+  const context = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push('console: ' + m.text()); });
+  page.on('pageerror', (e) => problems.push('page error: ' + e.message));
+  await page.goto(url);
+  await page.waitForFunction(() => window.breakshot && window.breakshot.engine && window.breakshot.game, null, { timeout: 30000 });
+  await page.waitForTimeout(300);
+  const wide = await page.evaluate(() => document.documentElement.scrollWidth);
+  check(wide <= 390, 'the page scrolls sideways: ' + wide + ' px');
+  check(await page.getAttribute('#table', 'data-rotated') === '1', 'the table is not turned on an upright phone');
+  const box = await page.locator('#table').boundingBox();
+  check(box.x >= 0 && box.x + box.width <= 390 && box.height > box.width && box.y + box.height <= 844,
+    'the table does not fit the screen: ' + JSON.stringify(box));
+  check(box.width >= 300, 'the table is small: ' + box.width + ' px wide');
+  // The controls a thumb reaches: the power and Shoot on the screen, at the bottom.
+  for (const sel of ['#shoot', '#power']) {
+    const b = await page.locator(sel).boundingBox();
+    check(b && b.y >= 844 / 2 && b.y + b.height <= 844 && b.x >= 0 && b.x + b.width <= 390, `${sel} is not in reach: ${JSON.stringify(b)}`);
+  }
+  const st = await page.evaluate(() => window.breakshot.state());
+  const cue = st.position[0];
+  // A tap on the 1 ball aims at it.
+  const target = st.position[1];
+  const at = await toPage(page, target[0], target[1]);
+  check(at.x > box.x && at.x < box.x + box.width && at.y > box.y && at.y < box.y + box.height, 'the ball is off the table on the screen');
+  await page.touchscreen.tap(at.x, at.y);
+  const aim = await page.evaluate(() => window.breakshot.aim());
+  check(angleGap(aim.phi, phiTo(cue, target[0], target[1])) < 1, `the tap aims at ${aim.phi}, not at the 1 ball (${phiTo(cue, target[0], target[1])})`);
+  check(await page.evaluate(() => window.breakshot.state().actions) === 0, 'the tap shot');
+  await page.screenshot({ path: path.join(shots, 'phone.png'), scale: 'css' });
+  // A stroke: the finger on the stick (the cue ball is in hand for the
+  // break), pulled back 0.25 m, let go.
+  const pull = 0.25;
+  const rad = aim.phi * Math.PI / 180;
+  const back = (d) => toPage(page, cue[0] - d * Math.cos(rad), cue[1] - d * Math.sin(rad));
+  const from = await back(0.12);
+  const to = await back(0.12 + pull);
+  await touchDrag(page, from, to);
+  await page.waitForFunction(() => window.breakshot.state().actions === 1, null, { timeout: 5000 });
+  await page.waitForTimeout(400);
+  await page.screenshot({ path: path.join(shots, 'phone-break.png') });
+  await idle(page);
+  const rec = await page.evaluate(() => window.breakshot.game.record());
+  const strike = rec.actions[0].action.strike;
+  check(Math.abs(strike.speed - speedOfPull(pull)) < 0.051, `the touch stroke shot at ${strike.speed}, not ${speedOfPull(pull)}`);
+  check(angleGap(strike.phi, aim.phi) < 1e-9, 'the stroke changed the aim');
+  await page.screenshot({ path: path.join(shots, 'phone-after.png') });
+  check(await page.evaluate(() => document.documentElement.scrollWidth) <= 390, 'the page scrolls sideways after the shot');
   check(problems.length === 0, problems.join('\n'));
   await context.close();
 });
