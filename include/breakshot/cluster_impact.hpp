@@ -52,6 +52,9 @@ struct ClusterScratch {
   std::vector<Vec2> position;
   std::vector<Vec2> velocity;
   std::vector<ClusterPair> pairs;
+  /// The pairs pressed together at the current positions (a nonzero
+  /// force), in pair order: the kicks go through these alone.
+  std::vector<std::size_t> pressed;
 };
 
 /// Young's modulus (Pa) and Poisson ratio of a phenolic resin ball: the

@@ -53,6 +53,7 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
   std::vector<Vec2>& p = scratch.position;
   std::vector<Vec2>& v = scratch.velocity;
   std::vector<ClusterPair>& pairs = scratch.pairs;
+  std::vector<std::size_t>& pressed = scratch.pressed;
   p.clear();
   v.clear();
   pairs.clear();
@@ -98,30 +99,31 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
   const double dt = shortest / kStepsPerContact;
   const double horizon = kHorizonContacts * shortest;
 
-  // Forces at the current positions; true if any pair overlaps.
+  // Forces at the current positions, and the pairs that have one (in
+  // pair order, so that the kicks add up in the same order as over every
+  // pair); true if any pair overlaps. A pair without a force keeps a
+  // stale one, which nothing reads.
   const auto compute_forces = [&]() {
     bool any = false;
-    for (ClusterPair& q : pairs) {
+    pressed.clear();
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      ClusterPair& q = pairs[k];
       const Vec2 d = p[static_cast<std::size_t>(q.b)] - p[static_cast<std::size_t>(q.a)];
       const double dd = dot(d, d);
-      if (dd >= q.reach * q.reach) {  // apart: no force, and no square root
-        q.force = {};
-        continue;
-      }
+      if (dd >= q.reach * q.reach) continue;  // apart: no force, and no square root
       const double len = std::sqrt(dd);
       const double overlap = q.reach - len;
       if (overlap > 0.0 && len > 0.0) {
         q.force = d * (q.stiffness * overlap * std::sqrt(overlap) / len);
         any = true;
-      } else {
-        q.force = {};
+        if (q.force.x != 0.0 || q.force.y != 0.0) pressed.push_back(k);
       }
     }
     return any;
   };
   const auto kick = [&](double h) {
-    for (ClusterPair& q : pairs) {
-      if (q.force.x == 0.0 && q.force.y == 0.0) continue;
+    for (const std::size_t k : pressed) {
+      ClusterPair& q = pairs[k];
       const Vec2 j = q.force * h;
       q.impulse = q.impulse + j;
       v[static_cast<std::size_t>(q.a)] = v[static_cast<std::size_t>(q.a)] - j / bodies[static_cast<std::size_t>(q.a)].mass;

@@ -24,6 +24,7 @@ void Engine::reserve_cluster_work() {
   cluster_.scratch.position.reserve(n);
   cluster_.scratch.velocity.reserve(n);
   cluster_.scratch.pairs.reserve(pairs);
+  cluster_.scratch.pressed.reserve(pairs);
   cluster_.out.velocity.reserve(n);
   cluster_.out.touched.reserve(pairs);
 }
