@@ -134,6 +134,7 @@ class Engine {
   void predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0, std::int32_t x1,
                      std::int32_t y0, std::int32_t y1, Prediction& best) const;
   void predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
+  // After predict_ball_pair's cheap rejections only.
   void predict_accelerating_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
   void predict_walls(const Kinematics& ki, Prediction& best) const;
   void predict_wall(const Kinematics& ki, std::size_t w, double window, Prediction& best) const;

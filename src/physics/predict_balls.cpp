@@ -15,15 +15,10 @@ namespace breakshot::detail {
 
 void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
                                        Prediction& best) const {
+  // predict_ball_pair has rejected the pairs out of play, both still, or
+  // whose paths never come within reach.
   const Trajectory& B = traj_[static_cast<std::size_t>(j)];
-  if (out_of_play(B.state)) return;
-  const bool b_still = !translating(B.state);
-  if (ki.still && b_still) return;
   const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
-  if (B.box_lo.x - ki.box_hi.x > sigma || ki.box_lo.x - B.box_hi.x > sigma ||
-      B.box_lo.y - ki.box_hi.y > sigma || ki.box_lo.y - B.box_hi.y > sigma) {
-    return;  // their paths never come within reach
-  }
   const double t = origin_;
   // B's kinematics at t, inline (this is the innermost loop).
   const double dt = std::min(t, B.t_end) - B.t0;

@@ -41,6 +41,15 @@ namespace breakshot::detail {
     consider(best, t + tau, EventKind::ball, j, counter_[static_cast<std::size_t>(j)]);
     return;
   }
+  // The cheap rejections inline (most pairs end here), the rest out of
+  // line in predict_accelerating_pair.
+  if (out_of_play(B.state)) return;
+  if (ki.still && !translating(B.state)) return;
+  const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
+  if (B.box_lo.x - ki.box_hi.x > sigma || ki.box_lo.x - B.box_hi.x > sigma ||
+      B.box_lo.y - ki.box_hi.y > sigma || ki.box_lo.y - B.box_hi.y > sigma) {
+    return;  // their paths never come within reach
+  }
   predict_accelerating_pair(ki, j, best);
 }
 
