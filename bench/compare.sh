@@ -14,7 +14,9 @@
 #   3. checks that both give the same results (a digest of every final
 #      table of every workload): a speed-up that changes results is not one;
 #   4. times the workloads (8-ball and 9-ball breaks with racks cycled,
-#      random 15-ball shots cycled), old and new interleaved (old first in
+#      random 15-ball shots cycled; "-rearm": one simulation re-armed for
+#      every shot where the commit has Simulation::reset, else a new one
+#      per shot, as its users had to), old and new interleaved (old first in
 #      odd rounds, new first in even ones), R rounds of S seconds each, and
 #      prints the medians and their ratio;
 #   5. counts instructions per shot with callgrind (valgrind; these do not
@@ -29,7 +31,7 @@ root=$(pwd)
 reps=5
 seconds=2
 callgrind=1
-workloads="break8 break9 random15"
+workloads="break8 break9 random15 break8-rearm random15-rearm"
 old=""
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -133,7 +135,7 @@ if [ "$callgrind" = 1 ]; then
     echo "| workload | shots | $short | working tree | ratio |"
     echo "| --- | ---: | ---: | ---: | ---: |"
     for w in $workloads; do
-      case "$w" in random15) n=2048 ;; *) n=256 ;; esac
+      case "$w" in random15*) n=2048 ;; *) n=256 ;; esac
       count() {
         valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" --collect-atstart=no \
           --toggle-collect=bs_run_shots "$1" "$w" count "$n" >/dev/null 2>"$tmp/cg.err"

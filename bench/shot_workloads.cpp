@@ -12,7 +12,11 @@
 //   shot_workloads WORKLOAD digest         one pass over the inputs; prints
 //                                          a digest of every final table
 //
-// WORKLOAD: break8, break9, random15. The digest (FNV-1a over the bits of
+// WORKLOAD: break8, break9, random15, each as a new Simulation per shot;
+// with "-rearm" (break8-rearm, ...) one Simulation re-armed for every shot
+// (Simulation::reset), the way play_shots and the AI play them, where the
+// library has it (BREAKSHOT_SIMULATION_RESET), else a new one per shot as
+// before. The digest (FNV-1a over the bits of
 // every ball's final position, velocity, spin and motion state and the event count) is equal
 // for two builds only if they give the same results.
 #include <algorithm>
@@ -32,7 +36,16 @@ namespace {
 
 using breakshot::Scenario;
 
-std::vector<Scenario> inputs(const std::string& workload) {
+/// The workload without its "-rearm" suffix; `rearm` says whether it had one.
+std::string base_name(const std::string& workload, bool* rearm) {
+  const std::string suffix = "-rearm";
+  *rearm = workload.size() > suffix.size() &&
+           workload.compare(workload.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return *rearm ? workload.substr(0, workload.size() - suffix.size()) : workload;
+}
+
+std::vector<Scenario> inputs(const std::string& name) {
+  const std::string workload = name;
   std::vector<Scenario> out;
   if (workload == "break8" || workload == "break9") {
     const char* game = workload == "break8" ? "eight_ball" : "nine_ball";
@@ -62,8 +75,21 @@ struct Digest {
 /// returns the events. Not inlined, so that callgrind can count it alone.
 extern "C" __attribute__((noinline)) std::uint64_t bs_run_shots(const Scenario* shots,
                                                                 std::size_t n, std::size_t first,
-                                                                std::size_t count) {
+                                                                std::size_t count, bool rearm) {
   std::uint64_t events = 0;
+#ifdef BREAKSHOT_SIMULATION_RESET
+  if (rearm && count > 0) {
+    breakshot::Simulation sim(shots[first % n]);
+    for (std::size_t k = 0; k < count; ++k) {
+      if (k > 0) sim.reset(shots[(first + k) % n]);
+      sim.advance_to_rest();
+      events += sim.event_count();
+    }
+    return events;
+  }
+#else
+  (void)rearm;
+#endif
   for (std::size_t k = 0; k < count; ++k) {
     breakshot::Simulation sim(shots[(first + k) % n]);
     sim.advance_to_rest();
@@ -80,9 +106,11 @@ int main(int argc, char** argv) {
   }
   const std::string workload = argv[1];
   const std::string mode = argv[2];
-  const std::vector<Scenario> shots = inputs(workload);
+  bool rearm = false;
+  const std::vector<Scenario> shots = inputs(base_name(workload, &rearm));
   if (shots.empty()) {
-    std::fprintf(stderr, "shot_workloads: unknown workload '%s' (break8, break9, random15)\n",
+    std::fprintf(stderr, "shot_workloads: unknown workload '%s' (break8, break9, random15, each also "
+                 "with -rearm)\n",
                  workload.c_str());
     return 2;
   }
@@ -115,7 +143,7 @@ int main(int argc, char** argv) {
   }
   if (mode == "count") {
     const auto count = static_cast<std::size_t>(arg);
-    const std::uint64_t events = bs_run_shots(shots.data(), n, 0, count);
+    const std::uint64_t events = bs_run_shots(shots.data(), n, 0, count, rearm);
     std::printf("%s %zu shots %llu events\n", workload.c_str(), count,
                 static_cast<unsigned long long>(events));
     return 0;
@@ -125,14 +153,14 @@ int main(int argc, char** argv) {
     return 2;
   }
   // Warm up with one pass, then time whole passes until the time is up.
-  (void)bs_run_shots(shots.data(), n, 0, n);
+  (void)bs_run_shots(shots.data(), n, 0, n, rearm);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   std::size_t done = 0;
   std::uint64_t events = 0;
   double seconds = 0.0;
   do {
-    events += bs_run_shots(shots.data(), n, done, n);
+    events += bs_run_shots(shots.data(), n, done, n, rearm);
     done += n;
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
   } while (seconds < arg);

@@ -11,6 +11,10 @@
 #include "breakshot/event.hpp"
 #include "breakshot/scenario.hpp"
 
+/// Simulation::reset exists (for programs built against several versions
+/// of breakshot, such as bench/shot_workloads.cpp).
+#define BREAKSHOT_SIMULATION_RESET 1
+
 namespace breakshot {
 
 /// Why advance() returned.
