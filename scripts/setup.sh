@@ -10,7 +10,8 @@ set -euo pipefail
 # Required: the toolchain, the test and benchmark frameworks, and the two
 # libraries the engine and its command use. libclang-rt-14-dev carries
 # libFuzzer and clang's sanitizer runtimes (scripts/test.sh fuzzes).
-# emscripten builds the browser version (scripts/web.sh); chromium and a
+# emscripten builds the browser version (scripts/web.sh), whose strtod
+# reads decimals with fast_float (libfast-float-dev); chromium and a
 # font are what its browser tests drive (web/tests/browser.mjs, with
 # playwright-core from npm, which never downloads a browser). The Python
 # package (scripts/python.sh) is built with pybind11 against Debian's
@@ -20,7 +21,7 @@ required=(
   build-essential cmake ninja-build g++ clang libclang-rt-14-dev
   libgtest-dev googletest libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
-  emscripten chromium fonts-dejavu-core curl
+  emscripten libfast-float-dev chromium fonts-dejavu-core curl
   python3 python3-dev python3-venv python3-pip python3-setuptools python3-wheel
   python3-build pybind11-dev python3-numpy python3-matplotlib python3-pytest
   python3-dask python3-distributed python3-tqdm
