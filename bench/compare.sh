@@ -12,7 +12,9 @@
 #   2. compiles bench/shot_workloads.cpp of the working tree twice, with the
 #      same flags, against each build's headers and libraries;
 #   3. checks that both give the same results (a digest of every final
-#      table of every workload): a speed-up that changes results is not one;
+#      table of every workload, and the events and final tables of 20,000
+#      shots of bench/soak across the models and games): a speed-up that
+#      changes results is not one;
 #   4. times the workloads (8-ball and 9-ball breaks with racks cycled,
 #      random 15-ball shots cycled; "-rearm": one simulation re-armed for
 #      every shot where the commit has Simulation::reset, else a new one
@@ -55,7 +57,7 @@ old_src="$work/$sha/src"
 old_build="$work/$sha/build"
 mkdir -p "$work"
 
-libs=(breakshot_game breakshot_physics)
+libs=(breakshot_io breakshot_game breakshot_physics)
 build_libs() {  # SOURCE BUILD
   cmake -S "$1" -B "$2" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBREAKSHOT_BUILD_TESTS=OFF \
     -DBREAKSHOT_BUILD_APPS=OFF -DBREAKSHOT_BUILD_BENCH=OFF >/dev/null
@@ -76,16 +78,19 @@ cmake --build build/release -j2 --target "${libs[@]}" >/dev/null ||
 
 # The same program, the same flags, each build's headers and libraries.
 flags=(-std=c++20 -O3 -DNDEBUG -ffp-contract=off)
-compile() {  # SOURCE_TREE BUILD OUT
+compile() {  # SOURCE_TREE BUILD PROGRAM OUT
   local lib_args=()
   for l in "${libs[@]}"; do lib_args+=("$2/lib$l.a"); done
-  g++ "${flags[@]}" -I"$1/include" -I"$root/bench" "$root/bench/shot_workloads.cpp" \
-    "${lib_args[@]}" -o "$3"
+  g++ "${flags[@]}" -I"$1/include" -I"$root/bench" "$root/bench/$3.cpp" "${lib_args[@]}" -o "$4"
 }
 bin_old="$work/$sha/shot_workloads"
 bin_new="$work/shot_workloads-working-tree"
-compile "$old_src" "$old_build" "$bin_old" || { echo "compare: shot_workloads does not build against $short" >&2; exit 1; }
-compile "$root" "$root/build/release" "$bin_new"
+soak_old="$work/$sha/soak"
+soak_new="$work/soak-working-tree"
+compile "$old_src" "$old_build" shot_workloads "$bin_old" || { echo "compare: shot_workloads does not build against $short" >&2; exit 1; }
+compile "$root" "$root/build/release" shot_workloads "$bin_new"
+compile "$old_src" "$old_build" soak "$soak_old" || { echo "compare: soak does not build against $short" >&2; exit 1; }
+compile "$root" "$root/build/release" soak "$soak_new"
 
 status=0
 echo "## results"
@@ -99,6 +104,16 @@ for w in $workloads; do
     status=3
   fi
 done
+# The soak's 20,000 shots of every kind (pool layouts, raised cues,
+# breaks, snooker, three-cushion, gases): their events and final tables.
+a=$("$soak_old" --shots 20000 --threads 2 --out "$work/soak-violation-old.json" | grep -E '^(digest|[a-z0-9/ -]+ +[0-9]+ +[0-9]+$)' | md5sum | cut -c1-16) || true
+b=$("$soak_new" --shots 20000 --threads 2 --out "$work/soak-violation-new.json" | grep -E '^(digest|[a-z0-9/ -]+ +[0-9]+ +[0-9]+$)' | md5sum | cut -c1-16) || true
+if [ "$a" = "$b" ]; then
+  echo "soak (20,000 shots of every kind): identical ($a)"
+else
+  echo "soak (20,000 shots of every kind): DIFFER ($short $a, working tree $b)"
+  status=3
+fi
 
 median() { sort -g | awk '{v[NR]=$1} END {if (NR%2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
 

@@ -23,7 +23,9 @@
 //     model allows: a pressed pair is pushed apart at physics.collapse_speed
 //     (docs/physics-core.md), m v^2 per ball at most.
 //
-// It prints the totals (shots and events by kind, violations by check,
+// It prints the totals (shots and events by kind, a digest of every final
+// table, equal for two builds only if they give the same results,
+// violations by check,
 // shots per second of wall clock and per second of CPU, which is per core)
 // and, for the first
 // violating shot (the lowest k), the violation and its scenario written
@@ -319,10 +321,28 @@ struct Violation {
   std::string what;
 };
 
+/// FNV-1a over the bits of every ball's final state.
+std::uint64_t state_digest(const std::vector<BallState>& balls) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  const auto add = [&h](const void* data, std::size_t size) {
+    const auto* c = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) h = (h ^ c[i]) * 0x100000001b3ULL;
+  };
+  for (const BallState& b : balls) {
+    add(&b.position, sizeof b.position);
+    add(&b.velocity, sizeof b.velocity);
+    add(&b.spin, sizeof b.spin);
+    add(&b.state, sizeof b.state);
+    add(&b.z, sizeof b.z);
+  }
+  return h;
+}
+
 /// Runs the scenario event by event with the checks; the first violation.
 /// inject (0-3, or -1 for none) corrupts what the checks see at the first
 /// event, in the way check `inject` must catch: to show that each can fail.
-std::optional<Violation> run_checked(const Scenario& s, std::uint64_t* events, int inject) {
+std::optional<Violation> run_checked(const Scenario& s, std::uint64_t* events, int inject,
+                                     std::uint64_t* digest = nullptr) {
   Simulation sim(s);
   const double allowance = [&] {
     double a = 0.0;
@@ -397,6 +417,10 @@ std::optional<Violation> run_checked(const Scenario& s, std::uint64_t* events, i
     if (s.until.rest && sim.at_rest()) break;
   }
   *events = sim.event_count();
+  if (digest) {
+    for (std::size_t i = 0; i < n; ++i) b[i] = sim.ball(i);
+    *digest = state_digest(b);
+  }
   return std::nullopt;
 }
 
@@ -405,6 +429,7 @@ struct Totals {
   std::array<std::uint64_t, kKinds> events{};
   std::array<std::uint64_t, 4> violations{};
   std::uint64_t invalid = 0;  ///< layouts validate() refused (none expected)
+  std::uint64_t digest = 0;   ///< of every final table (shots without a violation)
 };
 
 /// CPU time of the process (every thread), user and system.
@@ -479,8 +504,10 @@ int main(int argc, char** argv) {
           continue;
         }
         std::uint64_t events = 0;
-        const std::optional<Violation> v = run_checked(shot.scenario, &events, inject);
+        std::uint64_t digest = 0;
+        const std::optional<Violation> v = run_checked(shot.scenario, &events, inject, &digest);
         Totals& t = totals[w];
+        t.digest += mix_seed(digest, k);  // a sum: the same for any order of the shots
         t.shots[static_cast<std::size_t>(shot.kind)] += 1;
         t.events[static_cast<std::size_t>(shot.kind)] += events;
         if (!v) continue;
@@ -508,6 +535,7 @@ int main(int argc, char** argv) {
     }
     for (std::size_t c = 0; c < 4; ++c) sum.violations[c] += t.violations[c];
     sum.invalid += t.invalid;
+    sum.digest += t.digest;
   }
   std::uint64_t all_events = 0;
   std::uint64_t all_violations = 0;
@@ -521,6 +549,7 @@ int main(int argc, char** argv) {
                 static_cast<unsigned long long>(sum.events[uk]));
     all_events += sum.events[uk];
   }
+  std::printf("digest of the final tables: %016llx\n", static_cast<unsigned long long>(sum.digest));
   std::printf("violations:");
   for (std::size_t c = 0; c < 4; ++c) {
     std::printf(" %s %llu%s", kCheckNames[c], static_cast<unsigned long long>(sum.violations[c]),
