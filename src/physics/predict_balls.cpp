@@ -85,6 +85,23 @@ void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
       }
       const double scale = len + (w < kInf ? std::fabs(a1) * w + std::fabs(a2) * w * w : 0.0);
       if (low > sigma + 1e-9 * scale) return;
+      // Across the relative velocity: with n perpendicular to dv,
+      // |r(s)| >= |r(s).n| = |dp.n + (da.n) s^2 / 2|, monotone in s >= 0:
+      // the miss distance of two balls passing each other (exact when da
+      // is along dv, as for a rolling ball and one at rest).
+      const double vv = norm2(dv);
+      if (vv > 0.0) {
+        const double inv = 1.0 / std::sqrt(vv);
+        const Vec2 n{-dv.y * inv, dv.x * inv};
+        const double h0 = dot(dp, n);
+        const double h2 = 0.5 * dot(da, n);
+        const double hw = w < kInf ? h0 + h2 * w * w : (h2 == 0.0 ? h0 : h2 * kInf);
+        const double across = (h0 > 0.0 && hw > 0.0) || (h0 < 0.0 && hw < 0.0)
+                                   ? std::min(std::fabs(h0), std::fabs(hw))
+                                   : 0.0;
+        const double scale2 = len + (w < kInf ? std::fabs(h2) * w * w : 0.0);
+        if (across > sigma + 1e-9 * scale2) return;
+      }
     }
     // |dp + dv s + da s^2 / 2|^2 - sigma^2 as a quartic in s.
     const double c[5] = {dist2 - sigma * sigma, 2.0 * dot(dp, dv), norm2(dv) + dot(dp, da),
