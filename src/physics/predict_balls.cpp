@@ -63,46 +63,8 @@ void Engine::predict_accelerating_pair(const Kinematics& ki, std::int32_t j,
     const double gap = std::sqrt(dist2) - sigma;
     const double w = window;
     if (gap > 0.0 && w < kInf && norm(dv) * w + 0.5 * norm(da) * w * w < gap) return;
-    // Along the line of centres: |r(s)| >= r(s).u with u = dp / |dp|, and
-    // r(s).u = |dp| + a1 s + a2 s^2 is a quadratic whose least value on
-    // [0, w] is cheap. When it stays above sigma by a margin far beyond
-    // the rounding of the quartic's coefficients, the quartic has no root
-    // there either: the solver would find none, so the result is the same.
-    if (gap > 0.0) {
-      const double len = gap + sigma;
-      const double a1 = dot(dv, dp) / len;
-      const double a2 = 0.5 * dot(da, dp) / len;
-      double low = -kInf;  // least value of r(s).u on [0, w]
-      if (a1 >= 0.0 && a2 >= 0.0) {
-        low = len;  // rising from s = 0
-      } else if (w < kInf) {
-        const double at_w = len + a1 * w + a2 * w * w;
-        low = std::min(len, at_w);
-        if (a2 > 0.0 && a1 < 0.0 && -a1 < 2.0 * a2 * w) {
-          const double s = -a1 / (2.0 * a2);  // the vertex, inside the window
-          low = std::min(low, len + a1 * s + a2 * s * s);
-        }
-      }
-      const double scale = len + (w < kInf ? std::fabs(a1) * w + std::fabs(a2) * w * w : 0.0);
-      if (low > sigma + 1e-9 * scale) return;
-      // Across the relative velocity: with n perpendicular to dv,
-      // |r(s)| >= |r(s).n| = |dp.n + (da.n) s^2 / 2|, monotone in s >= 0:
-      // the miss distance of two balls passing each other (exact when da
-      // is along dv, as for a rolling ball and one at rest).
-      const double vv = norm2(dv);
-      if (vv > 0.0) {
-        const double inv = 1.0 / std::sqrt(vv);
-        const Vec2 n{-dv.y * inv, dv.x * inv};
-        const double h0 = dot(dp, n);
-        const double h2 = 0.5 * dot(da, n);
-        const double hw = w < kInf ? h0 + h2 * w * w : (h2 == 0.0 ? h0 : h2 * kInf);
-        const double across = (h0 > 0.0 && hw > 0.0) || (h0 < 0.0 && hw < 0.0)
-                                   ? std::min(std::fabs(h0), std::fabs(hw))
-                                   : 0.0;
-        const double scale2 = len + (w < kInf ? std::fabs(h2) * w * w : 0.0);
-        if (across > sigma + 1e-9 * scale2) return;
-      }
-    }
+    // Bounds on the distance that prove no contact (prediction.hpp).
+    if (gap > 0.0 && stays_apart(dp, dv, da, gap + sigma, sigma, w)) return;
     // |dp + dv s + da s^2 / 2|^2 - sigma^2 as a quartic in s.
     const double c[5] = {dist2 - sigma * sigma, 2.0 * dot(dp, dv), norm2(dv) + dot(dp, da),
                          dot(dv, da), 0.25 * norm2(da)};

@@ -139,6 +139,9 @@ void Engine::predict_wall(const Kinematics& ki, std::size_t w, double window,
       if (b >= 0.0) return;
       tau = first_contact_quadratic(norm2(d) - reach * reach, b, norm2(v));
     } else {
+      // Bounds on the distance that prove no contact (prediction.hpp).
+      const double d2 = norm2(d);
+      if (d2 > reach * reach && stays_apart(d, v, a, std::sqrt(d2), reach, window)) return;
       const double c[5] = {norm2(d) - reach * reach, 2.0 * dot(d, v), norm2(v) + dot(d, a),
                            dot(v, a), 0.25 * norm2(a)};
       tau = first_contact(c, 4, window);
