@@ -2,6 +2,7 @@
 // comes within the pocket's radius of the pocket's centre (docs/physics.md,
 // "Pockets").
 #include <algorithm>
+#include <cmath>
 
 #include "breakshot/roots.hpp"
 #include "physics/engine.hpp"
@@ -29,6 +30,9 @@ void Engine::predict_pockets(const Kinematics& ki, Prediction& best) const {
       if (b >= 0.0) continue;
       tau = first_contact_quadratic(norm2(d) - rr, b, norm2(ki.v));
     } else {
+      // Bounds on the distance that prove no fall (prediction.hpp).
+      const double d2 = norm2(d);
+      if (d2 > rr && stays_apart(d, ki.v, ki.a, std::sqrt(d2), pr, window)) continue;
       const double c[5] = {norm2(d) - rr, 2.0 * dot(d, ki.v), norm2(ki.v) + dot(d, ki.a),
                            dot(ki.v, ki.a), 0.25 * norm2(ki.a)};
       tau = first_contact(c, 4, window);
