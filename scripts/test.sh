@@ -2,7 +2,11 @@
 # Every check breakshot has, the way CI runs them (.ci/run calls this):
 #
 #   (a) release build, warnings as errors, and its tests      (preset release);
-#       the Python package installed into .venv (scripts/python.sh) and pytest
+#       the Python package installed into .venv (scripts/python.sh) and pytest.
+#       The tests include `breakshot serve` through real sockets on 127.0.0.1
+#       (tests/test_online.cpp: 100 half-sent requests, whole online games,
+#       100 rooms at once whose records `breakshot replay` checks): about
+#       7 s of the ctest stage, run again under the sanitizers in (b)
 #   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
 #   (c) install the release build and build and run the example consumer
 #       against it (find_package(breakshot)); build the Python wheel and
@@ -28,7 +32,7 @@ quick=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
-    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done
