@@ -273,6 +273,38 @@ TEST(OnlineServe, HalfSentRequestsDoNotKeepThePageFromLoading) {
   });
 }
 
+TEST(OnlineServe, ConnectionsBeyondTheLimitAreRefusedUntilOthersClose) {
+  Server server([](breakshot::ServeOptions& o) {
+    o.max_connections = 5;
+    o.request_timeout = 1;
+  });
+  asio::io_context ioc;
+  std::vector<std::unique_ptr<tcp::socket>> idle;
+  for (int i = 0; i < 5; ++i) {
+    auto s = std::make_unique<tcp::socket>(ioc);
+    s->connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"),
+                             static_cast<unsigned short>(server.port())));
+    idle.push_back(std::move(s));
+  }
+  server.bounded(60, [&] {
+    // The server may not have accepted all five yet: one more connection
+    // is refused once it has.
+    std::string busy;
+    for (int tries = 0; tries < 100 && busy.rfind("HTTP/1.1 503", 0) != 0; ++tries) {
+      busy = get(server.port(), "/");
+    }
+    EXPECT_EQ(busy.rfind("HTTP/1.1 503", 0), 0u) << busy.substr(0, 40);
+    // The idle ones time out, and the page loads again.
+    std::string page;
+    for (int tries = 0; tries < 100 && page.rfind("HTTP/1.1 200", 0) != 0; ++tries) {
+      page = get(server.port(), "/");
+      if (page.rfind("HTTP/1.1 200", 0) != 0)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    EXPECT_EQ(page.rfind("HTTP/1.1 200", 0), 0u) << page.substr(0, 40);
+  });
+}
+
 TEST(OnlineServe, AWebSocketFromAnotherSiteIsRefused) {
   Server server;
   server.bounded(60, [&] {

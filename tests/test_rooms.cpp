@@ -206,6 +206,7 @@ TEST_F(RoomsTest, MalformedMessagesCloseThatConnectionOnly) {
       R"({"type": "act", "index": 0, "action": "shoot"})",
       R"({"type": "ping", "extra": 1})",
       std::string(9000, ' '),
+      std::string(4000, '[') + std::string(4000, ']'),  // deep, and not an object
   };
   ClientId c = 10;
   for (const std::string& text : bad) {
