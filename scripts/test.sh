@@ -13,7 +13,8 @@
 #       use it from a fresh environment; run scripts/run.sh --check
 #   (d) the browser version: native and wasm give the same replies byte
 #       for byte (web/tests/identity.mjs), and playwright-core drives
-#       Chromium through the served page (web/tests/browser.mjs)
+#       Chromium through the served page (web/tests/browser.mjs; its online
+#       test, two pages playing each other through the server, about 25 s)
 #   (e) the libFuzzer targets, built with clang: seed corpus replays (tests),
 #       then fuzzing scenarios for BREAKSHOT_FUZZ_SECONDS (default 60)
 #       seconds, seeded with fuzz/corpus and examples/lab, and game records
@@ -32,7 +33,7 @@ quick=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
-    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done
