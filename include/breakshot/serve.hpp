@@ -37,8 +37,11 @@ struct ServeOptions {
   /// Connections at once (HTTP and WebSocket); more are closed at once.
   std::size_t max_connections = 512;
   /// Seconds a client has to send a request's headers (or a WebSocket
-  /// handshake), and to read the reply.
+  /// handshake).
   double request_timeout = 10;
+  /// Seconds a client has to read a file's reply (the engine is over a
+  /// megabyte: a slow network needs time).
+  double reply_timeout = 120;
   /// Seconds a WebSocket may stay silent: it is pinged at half of it and
   /// closed when nothing came back.
   double idle_timeout = 30;

@@ -313,7 +313,7 @@ class HttpSession : public Counted, public std::enable_shared_from_this<HttpSess
 
   void reply(const http::Reply& r) {
     out_ = http::format(r);
-    stream_.expires_after(millis(server_.options.request_timeout));
+    stream_.expires_after(millis(server_.options.reply_timeout));
     asio::async_write(stream_, asio::buffer(out_),
                       [self = shared_from_this()](beast::error_code, std::size_t) {
                         beast::error_code ignored;
