@@ -95,11 +95,12 @@ class Server {
     l.record_prefix = stamp;
     return l;
   }
-  // Room codes, seat tokens and seeds: from the system's randomness.
+  // Room codes, seat tokens and seeds: each straight from the system's
+  // randomness (std::random_device: getrandom or the CPU's), never from a
+  // generator whose state the tokens it gave away would reveal.
   static std::function<std::uint64_t()> system_random() {
-    std::random_device rd;
-    auto gen = std::make_shared<std::mt19937_64>((std::uint64_t{rd()} << 32) ^ rd());
-    return [gen] { return (*gen)(); };
+    auto rd = std::make_shared<std::random_device>();
+    return [rd] { return (std::uint64_t{(*rd)()} << 32) ^ (*rd)(); };
   }
 };
 
