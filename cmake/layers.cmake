@@ -25,5 +25,6 @@ set(BREAKSHOT_LAYER_game_HEADERS batch game match noise player rack record sessi
 set(BREAKSHOT_LAYER_ai_HEADERS ai players pot_map)
 set(BREAKSHOT_LAYER_io_HEADERS scenario_io record_io match_io plot)
 # Headers of the programs on top (src/web is the server of `breakshot
-# serve`) and the umbrella header; no layer may include them.
-set(BREAKSHOT_TOP_HEADERS serve breakshot)
+# serve` and its rooms of online play) and the umbrella header; no layer
+# may include them.
+set(BREAKSHOT_TOP_HEADERS serve rooms breakshot)

@@ -7,8 +7,9 @@
 #   scripts/setup.sh --check    only report; exit 1 if something is missing
 set -euo pipefail
 
-# Required: the toolchain, the test and benchmark frameworks, and the two
-# libraries the engine and its command use. libclang-rt-14-dev carries
+# Required: the toolchain, the test and benchmark frameworks, and the
+# libraries the engine and its command use (Boost: Asio and Beast,
+# header-only, for `breakshot serve`). libclang-rt-14-dev carries
 # libFuzzer and clang's sanitizer runtimes (scripts/test.sh fuzzes).
 # emscripten builds the browser version (scripts/web.sh), whose strtod
 # reads decimals with fast_float (libfast-float-dev); chromium and a
@@ -20,7 +21,7 @@ set -euo pipefail
 required=(
   build-essential cmake ninja-build g++ clang libclang-rt-14-dev
   libgtest-dev googletest libbenchmark-dev
-  nlohmann-json3-dev libcli11-dev
+  nlohmann-json3-dev libcli11-dev libboost-dev
   emscripten libfast-float-dev chromium fonts-dejavu-core curl
   python3 python3-dev python3-venv python3-pip python3-setuptools python3-wheel
   python3-build pybind11-dev python3-numpy python3-matplotlib python3-pytest

@@ -2,14 +2,19 @@
 # Every check breakshot has, the way CI runs them (.ci/run calls this):
 #
 #   (a) release build, warnings as errors, and its tests      (preset release);
-#       the Python package installed into .venv (scripts/python.sh) and pytest
+#       the Python package installed into .venv (scripts/python.sh) and pytest.
+#       The tests include `breakshot serve` through real sockets on 127.0.0.1
+#       (tests/test_online.cpp: 100 half-sent requests, whole online games,
+#       100 rooms at once whose records `breakshot replay` checks): about
+#       7 s of the ctest stage, run again under the sanitizers in (b)
 #   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
 #   (c) install the release build and build and run the example consumer
 #       against it (find_package(breakshot)); build the Python wheel and
 #       use it from a fresh environment; run scripts/run.sh --check
 #   (d) the browser version: native and wasm give the same replies byte
 #       for byte (web/tests/identity.mjs), and playwright-core drives
-#       Chromium through the served page (web/tests/browser.mjs)
+#       Chromium through the served page (web/tests/browser.mjs; its online
+#       test, two pages playing each other through the server, about 25 s)
 #   (e) the libFuzzer targets, built with clang: seed corpus replays (tests),
 #       then fuzzing scenarios for BREAKSHOT_FUZZ_SECONDS (default 60)
 #       seconds, seeded with fuzz/corpus and examples/lab, and game records
@@ -28,7 +33,7 @@ quick=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
-    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done

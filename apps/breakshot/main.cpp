@@ -492,7 +492,10 @@ struct ServeArgs {
 #else
   std::string root = "build/web/dist";
 #endif
+  std::string host = "127.0.0.1";
   int port = 8000;
+  std::string records;
+  double seat_timeout = 120;
   bool quiet = false;
 };
 
@@ -503,11 +506,27 @@ extern "C" void on_stop_signal(int) { g_stop_serving.store(true); }
 int run_serve(const ServeArgs& args) {
   breakshot::ServeOptions o;
   o.root = args.root;
+  o.host = args.host;
   o.port = args.port;
+  o.records = args.records;
+  o.rooms.seat_timeout = args.seat_timeout;
   o.stop = &g_stop_serving;
   o.on_ready = [&](int port) {
-    std::cout << "breakshot: serving " << args.root << "\n"
-              << "breakshot: open http://127.0.0.1:" << port << "/ (Ctrl-C stops)" << std::endl;
+    std::cout << "breakshot: serving " << args.root << "\n";
+    if (!args.records.empty()) {
+      std::cout << "breakshot: the records of online games go to " << args.records << "\n";
+    }
+    if (breakshot::is_loopback(args.host)) {
+      std::cout << "breakshot: open http://" << args.host << ":" << port
+                << "/ (Ctrl-C stops)" << std::endl;
+    } else {
+      std::cout << "breakshot: WARNING: listening on " << args.host << ":" << port
+                << ", reachable from the network.\n"
+                << "breakshot: WARNING: it speaks plain HTTP and WebSocket, without TLS:\n"
+                << "breakshot: WARNING: put it behind a reverse proxy that adds TLS "
+                   "(docs/web.md, \"Online play\").\n"
+                << "breakshot: (Ctrl-C stops)" << std::endl;
+    }
   };
   if (!args.quiet) {
     o.log = [](const std::string& line) { std::cerr << line << '\n'; };
@@ -684,16 +703,31 @@ int main(int argc, char** argv) {
 
   ServeArgs serve_args;
   CLI::App* srv = app.add_subcommand(
-      "serve", "Serve the browser game and lab (built by scripts/web.sh) on 127.0.0.1");
+      "serve", "Serve the browser game, lab and online play (built by scripts/web.sh)");
   srv->add_option("--port", serve_args.port, "TCP port (default 8000; 0 picks a free one)")
       ->type_name("P");
+  srv->add_option("--host", serve_args.host,
+                  "IPv4 address to listen on (default 127.0.0.1; another is reachable from "
+                  "the network)")
+      ->type_name("ADDR");
   srv->add_option("--root", serve_args.root, "Folder of the built page (default: " +
                                                  serve_args.root + ")")
       ->type_name("DIR");
+  srv->add_option("--records", serve_args.records,
+                  "Folder (existing) to write the records of online games to")
+      ->type_name("DIR");
+  srv->add_option("--seat-timeout", serve_args.seat_timeout,
+                  "Seconds an online player may be away before forfeiting (default 120)")
+      ->type_name("S")
+      ->check(CLI::Range(1.0, 86400.0));
   srv->add_flag("--quiet", serve_args.quiet, "Do not log requests on standard error");
   srv->footer(
-      "Listens on 127.0.0.1 only and serves nothing outside DIR; the page\n"
-      "loads nothing from elsewhere. Ctrl-C (or SIGTERM) stops it.\n"
+      "Serves the page and online play (a WebSocket at /ws, docs/web.md) on one\n"
+      "port, on 127.0.0.1 unless --host says otherwise; serves nothing outside\n"
+      "DIR; the page loads nothing from elsewhere. Online games' records are\n"
+      "written into --records under names the server makes; `breakshot replay`\n"
+      "replays them. It speaks plain HTTP: off the loopback interface, TLS\n"
+      "belongs to a reverse proxy. Ctrl-C (or SIGTERM) stops it.\n"
       "\n"
       "Exit status:\n"
       "  0  stopped by a signal\n"

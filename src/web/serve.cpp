@@ -1,258 +1,369 @@
-// The static file server behind `breakshot serve` (include/breakshot/serve.hpp).
+// The server behind `breakshot serve` (include/breakshot/serve.hpp): the
+// sockets, and nothing else. What a file request is answered with is
+// http.cpp's; what online play does with a message is rooms.cpp's.
 //
-// Deliberately small: one thread, one request per connection
-// ("Connection: close"), GET and HEAD only, files read whole. The page is a
-// handful of files on the loopback interface, so nothing more is needed,
-// and every path a request can take is short enough to test.
+// One thread runs a Boost.Asio event loop. Each connection is a session
+// object kept alive by its pending operations:
+//   HttpSession  reads one request's headers (bounded in size and time)
+//                and answers it, or hands a WebSocket handshake at
+//                kWebSocketPath to a WsSession
+//   WsSession    reads messages (bounded in size; idle ones are pinged,
+//                then closed), gives them to the rooms, and writes what
+//                the rooms send, one write at a time from a queue
+//                bounded in bytes
+// A timer checks `stop` and ticks the rooms (forfeits, expiry).
+// Boost 1.74's asio/awaitable.hpp uses std::exchange without <utility>.
+#include <utility>
+// clang-format off
+#include <boost/asio.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+// clang-format on
+#include <sys/stat.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <deque>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <random>
+#include <stdexcept>
+#include <unordered_map>
+
 #include "breakshot/serve.hpp"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <climits>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
-#include <vector>
-
 namespace breakshot {
-namespace http {
-namespace {
 
-constexpr std::size_t kMaxRequest = 16 * 1024;  // request line and headers
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace bhttp = boost::beast::http;
+namespace websocket = boost::beast::websocket;
+using tcp = asio::ip::tcp;
 
-int hex_value(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
+bool is_loopback(const std::string& host) {
+  boost::system::error_code ec;
+  const auto a = asio::ip::make_address_v4(host, ec);
+  return !ec && a.is_loopback();
 }
-
-// Percent-decodes a path; nullopt for a bad escape or a NUL.
-std::optional<std::string> decode(std::string_view s) {
-  std::string out;
-  out.reserve(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    char c = s[i];
-    if (c == '%') {
-      if (i + 2 >= s.size()) return std::nullopt;
-      const int hi = hex_value(s[i + 1]);
-      const int lo = hex_value(s[i + 2]);
-      if (hi < 0 || lo < 0) return std::nullopt;
-      c = static_cast<char>(hi * 16 + lo);
-      i += 2;
-    }
-    if (c == '\0') return std::nullopt;
-    out.push_back(c);
-  }
-  return out;
-}
-
-std::optional<std::string> real_path(const std::string& p) {
-  char buf[PATH_MAX];
-  if (::realpath(p.c_str(), buf) == nullptr) return std::nullopt;
-  return std::string(buf);
-}
-
-bool is_regular_file(const std::string& p) {
-  struct stat st {};
-  return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-
-std::optional<std::string> read_file(const std::string& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return ss.str();
-}
-
-std::string_view reason_phrase(int status) {
-  switch (status) {
-    case 200: return "OK";
-    case 400: return "Bad Request";
-    case 403: return "Forbidden";
-    case 404: return "Not Found";
-    case 405: return "Method Not Allowed";
-    case 431: return "Request Header Fields Too Large";
-    case 500: return "Internal Server Error";
-    default: return "Error";
-  }
-}
-
-Reply error_reply(int status, bool head = false) {
-  Reply r;
-  r.status = status;
-  r.content_type = "text/plain; charset=utf-8";
-  const std::string text = std::to_string(status) + " " + std::string(reason_phrase(status)) + "\n";
-  r.content_length = text.size();
-  if (!head) r.body = text;
-  return r;
-}
-
-}  // namespace
-
-std::string_view content_type(std::string_view path) {
-  const auto dot = path.rfind('.');
-  const auto slash = path.rfind('/');
-  if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) {
-    return "application/octet-stream";
-  }
-  const std::string_view ext = path.substr(dot + 1);
-  if (ext == "html" || ext == "htm") return "text/html; charset=utf-8";
-  if (ext == "js" || ext == "mjs") return "text/javascript; charset=utf-8";
-  if (ext == "css") return "text/css; charset=utf-8";
-  if (ext == "json") return "application/json";
-  if (ext == "wasm") return "application/wasm";
-  if (ext == "png") return "image/png";
-  if (ext == "svg") return "image/svg+xml";
-  if (ext == "ico") return "image/x-icon";
-  if (ext == "txt" || ext == "md") return "text/plain; charset=utf-8";
-  return "application/octet-stream";
-}
-
-std::optional<std::string> resolve(std::string_view target, const std::string& root) {
-  if (target.empty() || target.front() != '/') return std::nullopt;
-  const auto cut = target.find_first_of("?#");
-  if (cut != std::string_view::npos) target = target.substr(0, cut);
-  const auto decoded = decode(target);
-  if (!decoded) return std::nullopt;
-  // Walk the segments: "." and ".." are refused outright, empty ones
-  // (a doubled slash) skipped, a backslash refused (never a separator here,
-  // but no reason to accept it).
-  std::string rel;
-  std::size_t i = 1;
-  const std::string& d = *decoded;
-  while (i <= d.size()) {
-    std::size_t j = d.find('/', i);
-    if (j == std::string::npos) j = d.size();
-    const std::string seg = d.substr(i, j - i);
-    if (seg == "." || seg == ".." || seg.find('\\') != std::string::npos) return std::nullopt;
-    if (!seg.empty()) {
-      if (!rel.empty()) rel += '/';
-      rel += seg;
-    }
-    i = j + 1;
-  }
-  std::string path = root + "/" + (rel.empty() ? std::string("index.html") : rel);
-  if (!d.empty() && d.back() == '/' && !rel.empty()) path += "/index.html";
-  // The real path must stay under the root, whatever symlinks say.
-  const auto real = real_path(path);
-  if (!real) return path;  // does not exist: the caller answers 404
-  if (real->size() <= root.size() || real->compare(0, root.size(), root) != 0 ||
-      (*real)[root.size()] != '/') {
-    return std::nullopt;
-  }
-  return *real;
-}
-
-Reply answer(std::string_view request, const std::string& root) {
-  const auto eol = request.find("\r\n");
-  const std::string_view line = request.substr(0, eol);
-  const auto sp1 = line.find(' ');
-  const auto sp2 = sp1 == std::string_view::npos ? sp1 : line.find(' ', sp1 + 1);
-  if (sp1 == std::string_view::npos || sp2 == std::string_view::npos) return error_reply(400);
-  const std::string_view method = line.substr(0, sp1);
-  const std::string_view target = line.substr(sp1 + 1, sp2 - sp1 - 1);
-  const std::string_view version = line.substr(sp2 + 1);
-  if (version != "HTTP/1.1" && version != "HTTP/1.0") return error_reply(400);
-  const bool head = method == "HEAD";
-  if (method != "GET" && !head) {
-    return error_reply(405);
-  }
-  const auto path = resolve(target, root);
-  if (!path) return error_reply(404, head);  // outside the root: as if absent
-  if (!is_regular_file(*path)) return error_reply(404, head);
-  auto body = read_file(*path);
-  if (!body) return error_reply(403, head);
-  Reply r;
-  r.status = 200;
-  r.content_type = std::string(content_type(*path));
-  r.content_length = body->size();
-  if (!head) r.body = std::move(*body);
-  return r;
-}
-
-std::string format(const Reply& reply) {
-  std::string out = "HTTP/1.1 " + std::to_string(reply.status) + " " +
-                    std::string(reason_phrase(reply.status)) + "\r\n";
-  out += "Content-Type: " + reply.content_type + "\r\n";
-  out += "Content-Length: " + std::to_string(reply.content_length) + "\r\n";
-  out += "Cache-Control: no-cache\r\n";
-  out += "X-Content-Type-Options: nosniff\r\n";
-  if (reply.status == 405) out += "Allow: GET, HEAD\r\n";
-  out += "Connection: close\r\n\r\n";
-  out += reply.body;
-  return out;
-}
-
-}  // namespace http
 
 namespace {
 
-// Closes a descriptor when it goes out of scope.
-struct Fd {
-  int fd = -1;
-  explicit Fd(int f) : fd(f) {}
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  ~Fd() {
-    if (fd >= 0) ::close(fd);
+constexpr std::size_t kMaxHeader = 16 * 1024;  // request line and headers
+
+std::chrono::milliseconds millis(double seconds) {
+  return std::chrono::milliseconds(static_cast<long long>(seconds * 1000));
+}
+
+class WsSession;
+
+// What the sessions share: the options, the rooms, the live WebSockets.
+class Server {
+ public:
+  Server(const ServeOptions& o, std::string page_root)
+      : options(o), root(std::move(page_root)), rooms(room_limits(o), system_random()) {}
+
+  const ServeOptions& options;
+  const std::string root;
+  std::size_t connections = 0;
+  bool shutting_down = false;
+  online::Rooms rooms;
+  std::unordered_map<online::ClientId, std::weak_ptr<WsSession>> sockets;
+  online::ClientId next_client = 0;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+
+  double now() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  void log(const std::string& line) const {
+    if (options.log) options.log(line);
+  }
+  void apply(online::Effects fx);
+  void write_record(const online::Effects::Record& r) const;
+
+ private:
+  static online::RoomLimits room_limits(const ServeOptions& o) {
+    online::RoomLimits l = o.rooms;
+    char stamp[32];
+    const std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    ::gmtime_r(&t, &tm);
+    std::strftime(stamp, sizeof stamp, "online-%Y%m%dT%H%M%SZ", &tm);
+    l.record_prefix = stamp;
+    return l;
+  }
+  // Room codes, seat tokens and seeds: each straight from the system's
+  // randomness (std::random_device: getrandom or the CPU's), never from a
+  // generator whose state the tokens it gave away would reveal.
+  static std::function<std::uint64_t()> system_random() {
+    auto rd = std::make_shared<std::random_device>();
+    return [rd] { return (std::uint64_t{(*rd)()} << 32) ^ (*rd)(); };
   }
 };
 
-bool stopped(const ServeOptions& o) { return o.stop != nullptr && o.stop->load(); }
+// Counts a connection while it lives.
+class Counted {
+ public:
+  explicit Counted(Server& s) : server_(s) { ++server_.connections; }
+  ~Counted() { --server_.connections; }
+  Counted(const Counted&) = delete;
+  Counted& operator=(const Counted&) = delete;
 
-// Reads up to the blank line that ends the headers. Empty on timeout,
-// a closed connection or an oversized request (then `too_big`).
-std::string read_request(int fd, const ServeOptions& o, bool& too_big) {
-  std::string req;
-  char buf[4096];
-  too_big = false;
-  for (int waited = 0; waited < 5000;) {
-    pollfd p{fd, POLLIN, 0};
-    const int n = ::poll(&p, 1, 100);
-    if (n < 0 && errno != EINTR) return {};
-    if (stopped(o)) return {};
-    if (n <= 0) {
-      waited += 100;
-      continue;
+ protected:
+  Server& server_;
+};
+
+class WsSession : public Counted, public std::enable_shared_from_this<WsSession> {
+ public:
+  WsSession(Server& s, beast::tcp_stream&& stream)
+      : Counted(s), ws_(std::move(stream)), id_(++s.next_client) {}
+
+  void start(bhttp::request<bhttp::empty_body> req) {
+    req_ = std::move(req);
+    websocket::stream_base::timeout t{};
+    t.handshake_timeout = millis(server_.options.request_timeout);
+    t.idle_timeout = millis(server_.options.idle_timeout);
+    t.keep_alive_pings = true;
+    beast::get_lowest_layer(ws_).expires_never();
+    ws_.set_option(t);
+    ws_.read_message_max(server_.options.rooms.max_message);
+    ws_.async_accept(req_, [self = shared_from_this()](beast::error_code ec) {
+      if (ec) return;
+      self->server_.sockets[self->id_] = self;
+      self->read();
+    });
+  }
+
+  void send(const std::string& text) {
+    if (closing_) return;
+    queued_ += text.size();
+    if (queued_ > server_.options.max_unread) {
+      // A client that does not read its messages: cut it off.
+      closing_ = true;
+      beast::get_lowest_layer(ws_).socket().close();
+      return;
     }
-    const ssize_t got = ::recv(fd, buf, sizeof buf, 0);
-    if (got <= 0) return {};
-    req.append(buf, static_cast<std::size_t>(got));
-    if (req.find("\r\n\r\n") != std::string::npos) return req;
-    if (req.size() > http::kMaxRequest) {
-      too_big = true;
-      return {};
+    queue_.push_back(text);
+    if (queue_.size() == 1) write();
+  }
+
+  // Sends what is queued, then closes.
+  void close_after_sending() {
+    if (closing_) return;
+    close_pending_ = true;
+    if (queue_.empty()) close();
+  }
+
+ private:
+  void read() {
+    ws_.async_read(buffer_, [self = shared_from_this()](beast::error_code ec, std::size_t) {
+      self->on_read(ec);
+    });
+  }
+
+  void on_read(beast::error_code ec) {
+    if (ec) {
+      // Closed, timed out, too big, not WebSocket: this connection ends.
+      gone();
+      return;
+    }
+    std::string text = beast::buffers_to_string(buffer_.data());
+    buffer_.consume(buffer_.size());
+    if (!ws_.got_text()) {
+      server_.apply(server_.rooms.receive(id_, "binary message", server_.now()));
+    } else {
+      server_.apply(server_.rooms.receive(id_, text, server_.now()));
+    }
+    if (!closing_ && !close_pending_) read();
+  }
+
+  void write() {
+    ws_.text(true);
+    ws_.async_write(
+        asio::buffer(queue_.front()),
+        [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_write(ec); });
+  }
+
+  void on_write(beast::error_code ec) {
+    if (ec) {
+      gone();
+      return;
+    }
+    queued_ -= queue_.front().size();
+    queue_.pop_front();
+    if (!queue_.empty()) {
+      write();
+    } else if (close_pending_) {
+      close();
     }
   }
-  return {};
+
+  void close() {
+    closing_ = true;
+    ws_.async_close(websocket::close_code::policy_error,
+                    [self = shared_from_this()](beast::error_code) { self->gone(); });
+  }
+
+  void gone() {
+    closing_ = true;
+    if (left_) return;
+    left_ = true;
+    server_.sockets.erase(id_);
+    if (!server_.shutting_down) server_.apply(server_.rooms.disconnect(id_, server_.now()));
+  }
+
+  websocket::stream<beast::tcp_stream> ws_;
+  bhttp::request<bhttp::empty_body> req_;
+  beast::flat_buffer buffer_;
+  std::deque<std::string> queue_;
+  std::size_t queued_ = 0;
+  online::ClientId id_;
+  bool closing_ = false;
+  bool close_pending_ = false;
+  bool left_ = false;
+};
+
+void Server::apply(online::Effects fx) {
+  for (auto& m : fx.messages) {
+    const auto it = sockets.find(m.to);
+    if (it == sockets.end()) continue;
+    if (const auto s = it->second.lock()) s->send(m.text);
+  }
+  for (const online::ClientId c : fx.close) {
+    const auto it = sockets.find(c);
+    if (it == sockets.end()) continue;
+    if (const auto s = it->second.lock()) s->close_after_sending();
+  }
+  for (const auto& r : fx.records) write_record(r);
 }
 
-void send_all(int fd, const std::string& data) {
-  std::size_t sent = 0;
-  while (sent < data.size()) {
-    const ssize_t n = ::send(fd, data.data() + sent, data.size() - sent, MSG_NOSIGNAL);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return;  // the client went away
-    sent += static_cast<std::size_t>(n);
+void Server::write_record(const online::Effects::Record& r) const {
+  if (options.records.empty()) return;
+  // The name is the rooms' (prefix, serial, room code): no client text.
+  const std::string path = options.records + "/" + r.name;
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << r.text;
+    if (!out) {
+      log("cannot write the record " + tmp);
+      return;
+    }
   }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) log("cannot write the record " + path);
 }
+
+class HttpSession : public Counted, public std::enable_shared_from_this<HttpSession> {
+ public:
+  HttpSession(Server& s, tcp::socket&& socket) : Counted(s), stream_(std::move(socket)) {}
+
+  void start() {
+    parser_.emplace();
+    parser_->header_limit(kMaxHeader);
+    parser_->body_limit(0);
+    stream_.expires_after(millis(server_.options.request_timeout));
+    bhttp::async_read(
+        stream_, buffer_, *parser_,
+        [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_read(ec); });
+  }
+
+ private:
+  void on_read(beast::error_code ec) {
+    if (ec == bhttp::error::header_limit) {
+      reply(http::refusal(431));
+      return;
+    }
+    if (ec == beast::error::timeout || ec == bhttp::error::end_of_stream ||
+        ec == asio::error::eof || ec == asio::error::connection_reset) {
+      return;  // the client is gone or too slow: close
+    }
+    if (ec) {
+      reply(http::refusal(400));
+      return;
+    }
+    auto& req = parser_->get();
+    const std::string target(req.target());
+    const std::string path = target.substr(0, target.find_first_of("?#"));
+    if (path == kWebSocketPath) {
+      if (!websocket::is_upgrade(req)) {
+        reply(http::refusal(426));
+        return;
+      }
+      const auto origin = req[bhttp::field::origin];
+      const auto host = req[bhttp::field::host];
+      if (!http::same_origin(std::string_view(origin.data(), origin.size()),
+                             std::string_view(host.data(), host.size()))) {
+        server_.log(std::string(req.method_string()) + " " + target + " 403 (another origin)");
+        reply(http::refusal(403));
+        return;
+      }
+      server_.log("WebSocket " + target);
+      std::make_shared<WsSession>(server_, std::move(stream_))->start(parser_->release());
+      return;
+    }
+    const std::string line = std::string(req.method_string()) + " " + target + " HTTP/" +
+                             std::to_string(req.version() / 10) + "." +
+                             std::to_string(req.version() % 10);
+    const http::Reply r = http::answer(line + "\r\n\r\n", server_.root);
+    server_.log(line + " " + std::to_string(r.status));
+    reply(r);
+  }
+
+  void reply(const http::Reply& r) {
+    out_ = http::format(r);
+    stream_.expires_after(millis(server_.options.reply_timeout));
+    asio::async_write(stream_, asio::buffer(out_),
+                      [self = shared_from_this()](beast::error_code, std::size_t) {
+                        beast::error_code ignored;
+                        self->stream_.socket().shutdown(tcp::socket::shutdown_send, ignored);
+                      });
+  }
+
+  beast::tcp_stream stream_;
+  beast::flat_buffer buffer_{kMaxHeader};
+  std::optional<bhttp::request_parser<bhttp::empty_body>> parser_;
+  std::string out_;
+};
+
+class Listener {
+ public:
+  Listener(asio::io_context& ioc, Server& server, tcp::acceptor& acceptor)
+      : ioc_(ioc), server_(server), acceptor_(acceptor), retry_(ioc) {}
+
+  void accept() {
+    acceptor_.async_accept([this](beast::error_code ec, tcp::socket s) {
+      if (ec) {
+        // Out of descriptors, or the like: wait a little, then go on.
+        retry_.expires_after(std::chrono::milliseconds(100));
+        retry_.async_wait([this](beast::error_code) { accept(); });
+        return;
+      }
+      if (server_.connections >= server_.options.max_connections) {
+        beast::error_code ignored;
+        asio::write(s, asio::buffer(http::format(http::refusal(503))), ignored);
+        s.close(ignored);
+      } else {
+        std::make_shared<HttpSession>(server_, std::move(s))->start();
+      }
+      accept();
+    });
+  }
+
+ private:
+  asio::io_context& ioc_;
+  Server& server_;
+  tcp::acceptor& acceptor_;
+  asio::steady_timer retry_;
+};
 
 }  // namespace
 
 void serve(const ServeOptions& options) {
-  const auto root = http::real_path(options.root);
-  if (!root || !http::is_regular_file(*root + "/index.html")) {
+  const auto root = http::page_root(options.root);
+  if (!root) {
     throw std::runtime_error("no page to serve in '" + options.root +
                              "' (no index.html there; build it with scripts/web.sh)");
   }
@@ -260,53 +371,55 @@ void serve(const ServeOptions& options) {
     throw std::runtime_error("port " + std::to_string(options.port) +
                              " is out of range (0 to 65535)");
   }
-  in_addr addr{};
-  if (::inet_pton(AF_INET, options.host.c_str(), &addr) != 1) {
-    throw std::runtime_error("host '" + options.host + "' is not an IPv4 address");
-  }
-  Fd listener(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
-  if (listener.fd < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
-  const int one = 1;
-  ::setsockopt(listener.fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-  sockaddr_in sa{};
-  sa.sin_family = AF_INET;
-  sa.sin_port = htons(static_cast<std::uint16_t>(options.port));
-  sa.sin_addr = addr;
-  if (::bind(listener.fd, reinterpret_cast<const sockaddr*>(&sa), sizeof sa) != 0) {
-    const int e = errno;
-    if (e == EADDRINUSE) {
-      throw std::runtime_error("port " + std::to_string(options.port) +
-                               " is in use; choose another with --port (0 picks a free one)");
+  boost::system::error_code ec;
+  const auto address = asio::ip::make_address_v4(options.host, ec);
+  if (ec) throw std::runtime_error("host '" + options.host + "' is not an IPv4 address");
+  if (!options.records.empty()) {
+    struct stat st {};
+    if (::stat(options.records.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {
+      throw std::runtime_error("records folder '" + options.records + "' is not a folder");
     }
-    throw std::runtime_error("cannot listen on " + options.host + ":" +
-                             std::to_string(options.port) + ": " + std::strerror(e));
   }
-  if (::listen(listener.fd, 16) != 0) {
-    throw std::runtime_error(std::string("listen: ") + std::strerror(errno));
-  }
-  socklen_t len = sizeof sa;
-  ::getsockname(listener.fd, reinterpret_cast<sockaddr*>(&sa), &len);
-  if (options.on_ready) options.on_ready(ntohs(sa.sin_port));
 
-  while (!stopped(options)) {
-    pollfd p{listener.fd, POLLIN, 0};
-    const int n = ::poll(&p, 1, 100);
-    if (n <= 0) continue;  // timeout (check stop) or EINTR
-    Fd client(::accept4(listener.fd, nullptr, nullptr, SOCK_CLOEXEC));
-    if (client.fd < 0) continue;
-    bool too_big = false;
-    const std::string req = read_request(client.fd, options, too_big);
-    if (req.empty()) {
-      if (too_big) send_all(client.fd, http::format(http::error_reply(431)));
-      continue;
-    }
-    const http::Reply reply = http::answer(req, *root);
-    send_all(client.fd, http::format(reply));
-    if (options.log) {
-      const auto eol = req.find("\r\n");
-      options.log(req.substr(0, eol) + " " + std::to_string(reply.status));
-    }
+  Server server(options, *root);
+  asio::io_context ioc(1);
+  tcp::acceptor acceptor(ioc);
+  const tcp::endpoint endpoint(address, static_cast<unsigned short>(options.port));
+  acceptor.open(endpoint.protocol());
+  acceptor.set_option(asio::socket_base::reuse_address(true));
+  acceptor.bind(endpoint, ec);
+  if (ec == asio::error::address_in_use) {
+    throw std::runtime_error("port " + std::to_string(options.port) +
+                             " is in use; choose another with --port (0 picks a free one)");
   }
+  if (ec) {
+    throw std::runtime_error("cannot listen on " + options.host + ":" +
+                             std::to_string(options.port) + ": " + ec.message());
+  }
+  acceptor.listen(asio::socket_base::max_listen_connections, ec);
+  if (ec) throw std::runtime_error("listen: " + ec.message());
+  if (options.on_ready) options.on_ready(acceptor.local_endpoint().port());
+
+  Listener listener(ioc, server, acceptor);
+  listener.accept();
+
+  asio::steady_timer ticker(ioc);
+  std::function<void()> tick = [&] {
+    ticker.expires_after(std::chrono::milliseconds(100));
+    ticker.async_wait([&](beast::error_code) {
+      if (options.stop != nullptr && options.stop->load()) {
+        ioc.stop();
+        return;
+      }
+      server.apply(server.rooms.tick(server.now()));
+      tick();
+    });
+  };
+  tick();
+  ioc.run();
+  // The sessions die with the event loop's pending operations: they must
+  // not call into the rooms then.
+  server.shutting_down = true;
 }
 
 }  // namespace breakshot

@@ -3,6 +3,7 @@
 // the test hooks (window.breakshot, docs/web.md).
 
 import { GameUI } from './game.js';
+import { Online } from './online.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -119,14 +120,31 @@ function startFromForm() {
   const cfg = formConfig();
   if (ui.newGame(cfg)) {
     // a fresh game has no link in the address bar until it is shared
-    if (location.hash.startsWith('#game=')) {
+    if (location.hash.startsWith('#game=') || location.hash.startsWith('#room=')) {
       try { history.replaceState(null, '', location.pathname + location.search); } catch (e) { /* ignore */ }
     }
   }
 }
 
+/** Online play: creates a room for the form's game, or joins `code`. */
+let online = null;
+function startOnline(code) {
+  if (!ui) return;
+  if (online && ui.online === online && code && online.room === code.toUpperCase()) return;
+  if (online) online.leave();
+  online = new Online(ui, engine);
+  if (code) online.join(code);
+  else online.create(formConfig());
+}
+
 function route() {
   const f = parseFragment();
+  if (f.room && /^[A-Za-z0-9]{1,12}$/.test(f.room)) {
+    selectTab('game');
+    if (!ui.g) ui.newGame(formConfig());  // a table to show while the room answers
+    startOnline(f.room);
+    return 'game';
+  }
   if ('lab' in f) {
     selectTab('lab');
     return 'lab';
@@ -232,6 +250,7 @@ async function main() {
     $('game-type').focus({ preventScroll: true });
   });
   $('game-type').addEventListener('change', () => gameOptions());
+  $('online-create').addEventListener('click', () => startOnline(null));
   $('new-game-form').addEventListener('submit', (ev) => {
     ev.preventDefault();
     startFromForm();
@@ -283,6 +302,7 @@ async function main() {
         last: S.log.slice(-200).map((e) => ({ ...e })),
       };
     },
+    online: () => ui.online,
   };
 
   window.addEventListener('hashchange', () => { route(); });

@@ -261,6 +261,8 @@ class Game {
   }
   table() { return parse(this._raw.table(this._handle())); }
   state() { return parse(this._raw.state(this._handle())); }
+  /** bs_game_state's reply as text (online play hashes its bytes). */
+  stateText() { return this._raw.state(this._handle()); }
   /** {ok: true} or {ok: false, reason}. */
   checkPlacement(x, y) { return parse(this._raw.checkPlacement(this._handle(), numArg(x, 'x'), numArg(y, 'y'))); }
   /**

@@ -215,6 +215,7 @@ export class GameUI {
     this.log = [];
     this.rafPending = false;
     this.shareNote = '';
+    this.online = null;     // online play (online.js), or null
 
     this.canvas = $('table');
     this.view = new TableView(this.canvas);
@@ -312,6 +313,9 @@ export class GameUI {
   // ---- game set-up ----
 
   install(g, opts = {}) {
+    // a game of its own leaves online play; an online game comes with it
+    if (this.online && this.online !== opts.online) this.online.leave();
+    this.online = opts.online || null;
     this.cancelAI();
     this.stopAnimation();
     this.stroke = null;
@@ -449,7 +453,8 @@ export class GameUI {
   }
 
   humanToAct() {
-    return !!this.st && this.st.phase !== 'game_over' && this.players[this.st.player] === 'human';
+    return !!this.st && this.st.phase !== 'game_over' && this.players[this.st.player] === 'human' &&
+      (!this.online || this.online.mayAct(this.st));
   }
 
   canAct() { return !!this.g && !this.busy() && this.humanToAct(); }
@@ -655,6 +660,10 @@ export class GameUI {
 
   /** g.act with logging, animation and the AI's turn after it. */
   doAct(action, opts = {}) {
+    if (this.online && !opts.remote && !this.online.mayAct(this.st)) {
+      this.showError('It is not your turn.');
+      return { error: 'not your turn' };
+    }
     let reply;
     try {
       reply = this.g.act(action);
@@ -671,6 +680,7 @@ export class GameUI {
     }
     this.clearError();
     this.shareNote = '';
+    if (this.online && !opts.remote) this.online.played(reply.index, reply.executed);
     const entry = {
       index: reply.index,
       player: reply.player,
@@ -712,6 +722,10 @@ export class GameUI {
 
   undo() {
     if (!this.g || this.anim) return;
+    if (this.online) {
+      this.showError('An online game has no undo.');
+      return;
+    }
     // back to before the last shot taken by a human (the AI's replies go too)
     let target = -1;
     for (let i = this.log.length - 1; i >= 0; i--) {
@@ -1183,7 +1197,7 @@ export class GameUI {
     this.canvas.classList.toggle('waiting', this.busy());
     this.canvas.classList.toggle('placing', canAct && !!legal.place && legal.place !== 'none');
     $('shoot').disabled = !(canAct && this.shotDue());
-    $('undo').disabled = !this.g || this.busy() || !this.log.some((e) => e.kind === 'shoot' && this.players[e.player] === 'human');
+    $('undo').disabled = !this.g || this.busy() || !!this.online || !this.log.some((e) => e.kind === 'shoot' && this.players[e.player] === 'human');
     $('share').disabled = !this.g;
 
     // call, safety and push-out

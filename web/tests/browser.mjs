@@ -1085,6 +1085,82 @@ test('dragging on the lab\'s table moves a ball, sets its velocity and a double-
   await context.close();
 });
 
+// Online play: two pages (two browser contexts, as two computers) play
+// three-cushion through the server's WebSocket; the second is closed
+// mid-game and opened again from the link, takes its seat back with the
+// token the page kept, and the game goes on. Each page plays every action
+// on its own engine and compares the hash with the server's.
+test('online: two pages play each other through the server; one closes and comes back', async ({ browser, url }) => {
+  const one = await openPage(browser, url);
+  await idle(one.page);
+  await one.page.click('#new-game');
+  await one.page.selectOption('#game-type', 'three_cushion');
+  await one.page.click('#online-create');
+  await one.page.waitForFunction(() => /#room=/.test(document.getElementById('online-link').value), null, { timeout: 20000 });
+  const link = await one.page.inputValue('#online-link');
+  check(/#room=[A-Z2-9]{6}$/.test(link), 'the room link is ' + link);
+  check(await one.page.evaluate(() => window.breakshot.online().seat) === 0, 'the creator is not Player 1');
+  check(await one.page.evaluate(() => window.breakshot.state().game) === 'three_cushion', 'the room does not play three-cushion');
+
+  const two = await openPage(browser, link);
+  const seated = (page, seat) => page.waitForFunction((k) => {
+    const o = window.breakshot.online();
+    return o && o.seat === k && window.breakshot.state();
+  }, seat, { timeout: 20000 });
+  await seated(two.page, 1);
+  await one.page.waitForFunction(() => /your friend is here/.test(document.getElementById('online-status').textContent), null, { timeout: 20000 });
+
+  const shot = (phi) => ({ type: 'shoot', strike: { speed: 3, phi, theta: 0, a: 0, b: 0 }, call: null, safety: false, push_out: false });
+  const actions = (page, n) => page.waitForFunction((k) => window.breakshot.state().actions === k && !window.breakshot.busy(), n, { timeout: 60000 });
+  const hash = (page) => page.evaluate(async () => {
+    const { stateHash } = await import('./online.js');
+    return stateHash(window.breakshot.game.stateText());
+  });
+  // The page of the seat to act plays; the other is refused, then follows.
+  async function play(pages, phi, n) {
+    const toAct = await pages[0].evaluate(() => window.breakshot.state().player);
+    const actor = pages[toAct];
+    const other = pages[1 - toAct];
+    const refused = await other.evaluate((a) => window.breakshot.act(a), shot(phi));
+    check(refused.error, 'the page not to act played: ' + JSON.stringify(refused).slice(0, 200));
+    const r = await actor.evaluate((a) => window.breakshot.act(a), shot(phi));
+    check(!r.error, 'the shot was refused: ' + r.error);
+    for (const p of pages) await actions(p, n);
+    const [h0, h1] = [await hash(pages[0]), await hash(pages[1])];
+    check(h0 === h1, `the two pages' tables differ after action ${n - 1}: ${h0} ${h1}`);
+  }
+  await play([one.page, two.page], 90, 1);
+
+  // The second page closes; the first sees its friend away.
+  await two.page.close();
+  await one.page.waitForFunction(() => /your friend is away/.test(document.getElementById('online-status').textContent), null, { timeout: 20000 });
+  // It is opened again from the link, in the same browser: its seat back.
+  const again = await two.context.newPage();
+  again.on('pageerror', (e) => two.problems.push('page error: ' + e.message));
+  await again.goto(link);
+  await again.waitForFunction(() => window.breakshot && window.breakshot.online && window.breakshot.online(), null, { timeout: 30000 });
+  await seated(again, 1);
+  await actions(again, 1);
+  await one.page.waitForFunction(() => /your friend is here/.test(document.getElementById('online-status').textContent), null, { timeout: 20000 });
+  await play([one.page, again], 200, 2);
+  await play([one.page, again], 20, 3);
+  for (const p of [one.page, again]) {
+    check(await p.isHidden('#online-mismatch'), 'a page shows a mismatch: ' + await p.textContent('#online-mismatch'));
+  }
+  await one.page.screenshot({ path: path.join(shots, 'online.png') });
+
+  // A hash from the server that differs from the page's own is shown.
+  await one.page.evaluate(() => window.breakshot.online().receive(JSON.stringify({
+    type: 'action', index: 0, seat: 0, action: {}, hash: '0000000000000000' })));
+  await one.page.waitForFunction(() => !document.getElementById('online-mismatch').hidden, null, { timeout: 10000 });
+  check(/differs from the server's after action 0/.test(await one.page.textContent('#online-mismatch')),
+    'the mismatch says: ' + await one.page.textContent('#online-mismatch'));
+  check(one.problems.length === 0, one.problems.join('\n'));
+  check(two.problems.length === 0, two.problems.join('\n'));
+  await one.context.close();
+  await two.context.close();
+});
+
 // --- run ----------------------------------------------------------------
 const { proc, url } = await startServer();
 // playwright's launch() starts Chromium with a fresh profile folder of its
