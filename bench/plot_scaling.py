@@ -59,12 +59,24 @@ def main():
     ap.add_argument("--out", default="docs/images")
     ap.add_argument("--max-balls", type=int, default=1000000)
     ap.add_argument("--threads", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--only", default="gas,breaks,threads",
+                    help="which plots, comma-separated (default: all three)")
     a = ap.parse_args()
     exe = os.path.join(a.build, "bench", "scaling")
     if not os.access(exe, os.X_OK):
         sys.exit(f"plot_scaling.py: {exe} is missing (cmake --build --preset release)")
     os.makedirs(a.out, exist_ok=True)
 
+    only = set(a.only.split(","))
+    if "gas" in only:
+        plot_gas(exe, a)
+    if "breaks" in only:
+        plot_breaks(exe, a)
+    if "threads" in only:
+        plot_threads(exe, a)
+
+
+def plot_gas(exe, a):
     gas = []
     for n in [s for s in SIZES if s <= a.max_balls]:
         gas += rows(run(exe, "gas", n), "balls,events,seconds,events_per_second,bytes_per_ball,"
@@ -97,6 +109,8 @@ def main():
     ax2.grid(True, which="both", alpha=0.3)
     save(fig, os.path.join(a.out, "scaling-gas.svg"))
 
+
+def plot_breaks(exe, a):
     br = rows(run(exe, "breaks"))
     write_csv(os.path.join(a.out, "scaling-breaks.csv"), br)
     balls = [int(r["balls"]) for r in br]
@@ -111,19 +125,26 @@ def main():
     ax.grid(True, alpha=0.3)
     save(fig, os.path.join(a.out, "scaling-breaks.svg"))
 
+
+def plot_threads(exe, a):
     th = rows(run(exe, "threads", a.threads))
     write_csv(os.path.join(a.out, "scaling-threads.csv"), th)
     t = [int(r["threads"]) for r in th]
-    fig, ax = plt.subplots(figsize=(6, 4))
-    ax.plot(t, [float(r["shots_per_second"]) / 1e3 for r in th], "o-", color="tab:blue")
-    ax.set_xlabel("threads")
-    ax.set_xticks(t)
-    ax.set_ylabel("thousand random 15-ball shots per second", color="tab:blue")
-    axb = ax.twinx()
-    axb.plot(t, [float(r["games_per_minute"]) for r in th], "s--", color="tab:red")
-    axb.set_ylabel("9-ball baseline games per minute", color="tab:red")
-    ax.set_title("Threads: play_shots and match --jobs")
-    ax.grid(True, alpha=0.3)
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, key, scale, label, title in [
+        (ax1, "shots_per_second", 1e3, "thousand shots per second", "Random 15-ball shots (play_shots)"),
+        (ax2, "games_per_minute", 1.0, "games per minute", "9-ball baseline games (match --jobs)"),
+    ]:
+        y = [float(r[key]) / scale for r in th]
+        ax.plot(t, y, "o-", color="tab:blue", label="measured")
+        ax.plot(t, [y[0] * k for k in t], ":", color="gray", label="linear")
+        ax.set_xlabel("threads")
+        ax.set_xticks(t)
+        ax.set_ylabel(label)
+        ax.set_title(title)
+        ax.set_ylim(bottom=0)
+        ax.grid(True, alpha=0.3)
+        ax.legend()
     save(fig, os.path.join(a.out, "scaling-threads.svg"))
 
 
