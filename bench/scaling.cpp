@@ -19,6 +19,8 @@
 // The gas: disks of radius 1 cm at area fraction 0.3 in a square box,
 // random directions at 1 m/s (bench_events' BM_IdealGas); each size runs
 // max(200000, 4 N) events.
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,13 +33,11 @@
 #include <thread>
 #include <vector>
 
-#include <sys/resource.h>
-
 #include "breakshot/batch.hpp"
 #include "breakshot/match.hpp"
-#include "breakshot/players.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/physics.hpp"
+#include "breakshot/players.hpp"
 #include "breakshot/pool.hpp"
 #include "breakshot/rack.hpp"
 #include "breakshot/simulation.hpp"
@@ -172,8 +172,8 @@ Scenario triangle_break(int rows, std::uint64_t seed) {
   for (int row = 0; row < rows; ++row) {
     for (int k = 0; k <= row; ++k) {
       const Vec2 jitter{2.5e-5 * unit(g), 2.5e-5 * (2 * unit(g) - 1)};
-      add(std::to_string(id++), s.table.foot_spot +
-                                    Vec2{row * d * std::sqrt(3.0) / 2, (k - row / 2.0) * d} + jitter);
+      add(std::to_string(id++),
+          s.table.foot_spot + Vec2{row * d * std::sqrt(3.0) / 2, (k - row / 2.0) * d} + jitter);
     }
   }
   CueSpec cue;

@@ -109,7 +109,8 @@ int main(int argc, char** argv) {
   bool rearm = false;
   const std::vector<Scenario> shots = inputs(base_name(workload, &rearm));
   if (shots.empty()) {
-    std::fprintf(stderr, "shot_workloads: unknown workload '%s' (break8, break9, random15, each also "
+    std::fprintf(stderr,
+                 "shot_workloads: unknown workload '%s' (break8, break9, random15, each also "
                  "with -rearm)\n",
                  workload.c_str());
     return 2;

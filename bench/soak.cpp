@@ -36,6 +36,8 @@
 // place, more energy), to show that each check fails when it should
 // (scripts/test.sh runs each). Exit status: 0 no violation, 1 a violation, 2 bad
 // arguments.
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -53,8 +55,6 @@
 #include <thread>
 #include <variant>
 #include <vector>
-
-#include <sys/resource.h>
 
 #include "breakshot/carom.hpp"
 #include "breakshot/lab.hpp"
@@ -113,10 +113,13 @@ std::string vec2(Vec2 v) { return "[" + num(v.x) + ", " + num(v.y) + "]"; }
 std::string scenario_json(const Shot& shot) {
   const Scenario& s = shot.scenario;
   std::string o = "{\n  \"physics\": {\"model\": \"";
-  o += s.physics.model == Model::ideal ? "ideal" : s.physics.model == Model::friction ? "friction" : "pool";
+  o += s.physics.model == Model::ideal      ? "ideal"
+       : s.physics.model == Model::friction ? "friction"
+                                            : "pool";
   o += "\"";
   if (s.physics.ball_clusters) o += ", \"ball_clusters\": true";
-  if (s.physics.model == Model::pool) o += std::string(", \"airborne\": ") + (s.physics.airborne ? "true" : "false");
+  if (s.physics.model == Model::pool)
+    o += std::string(", \"airborne\": ") + (s.physics.airborne ? "true" : "false");
   if (s.physics.model == Model::friction) o += ", \"deceleration\": " + num(s.physics.deceleration);
   o += "},\n  \"table\": " + shot.table_json + ",\n  \"balls\": [\n";
   for (std::size_t i = 0; i < s.balls.size(); ++i) {
@@ -131,8 +134,8 @@ std::string scenario_json(const Shot& shot) {
   if (s.cue) {
     const CueStrike& c = s.cue->strike;
     o += ",\n  \"cue\": {\"ball\": \"" + s.balls[static_cast<std::size_t>(s.cue->ball)].id +
-         "\", \"speed\": " + num(c.speed) + ", \"phi\": " + num(c.phi) + ", \"theta\": " +
-         num(c.theta) + ", \"a\": " + num(c.a) + ", \"b\": " + num(c.b) + "}";
+         "\", \"speed\": " + num(c.speed) + ", \"phi\": " + num(c.phi) +
+         ", \"theta\": " + num(c.theta) + ", \"a\": " + num(c.a) + ", \"b\": " + num(c.b) + "}";
   }
   if (s.until.rest) {
     o += ",\n  \"until\": \"rest\"";
@@ -203,7 +206,9 @@ Shot make_shot_from(std::uint64_t draw_seed, std::uint64_t k) {
       s.physics = default_physics(Model::pool);
       s.table = make_pool_table(size);
       shot.table_json = std::string("{\"shape\": \"pool\", \"size\": \"") + size + "\"}";
-      const int balls = shot.kind == 0 ? d.whole(2, 6) : shot.kind == 1 ? d.whole(7, 16) : d.whole(2, 16);
+      const int balls = shot.kind == 0   ? d.whole(2, 6)
+                        : shot.kind == 1 ? d.whole(7, 16)
+                                         : d.whole(2, 16);
       scatter(s, d, balls, kPoolBallRadius, kPoolBallMass, ids);
       default_walls(s);
       strike(s, d, 0, shot.kind == 2);
@@ -211,8 +216,8 @@ Shot make_shot_from(std::uint64_t draw_seed, std::uint64_t k) {
     }
     case 3: {
       const bool eight = d.unit() < 0.5;
-      s = make_break_scenario(eight ? "eight_ball" : "nine_ball", "9ft",
-                              mix_seed(d.seed, 99), d.range(3.0, 11.0));
+      s = make_break_scenario(eight ? "eight_ball" : "nine_ball", "9ft", mix_seed(d.seed, 99),
+                              d.range(3.0, 11.0));
       s.cue->strike.a = d.range(-0.3, 0.3);
       s.cue->strike.b = d.range(-0.3, 0.3);
       shot.table_json = "{\"shape\": \"pool\", \"size\": \"9ft\"}";
@@ -248,11 +253,13 @@ Shot make_shot_from(std::uint64_t draw_seed, std::uint64_t k) {
       const Vec2 lo{0.0, 0.0};
       const Vec2 hi{d.range(0.5, 2.0), d.range(0.5, 2.0)};
       s.table = make_rectangle(lo, hi);
-      shot.table_json = "{\"shape\": \"rectangle\", \"min\": " + vec2(lo) + ", \"max\": " + vec2(hi) + "}";
+      shot.table_json =
+          "{\"shape\": \"rectangle\", \"min\": " + vec2(lo) + ", \"max\": " + vec2(hi) + "}";
       const int balls = d.whole(2, 16);
       for (int tries = 0; tries < 60 * balls && static_cast<int>(s.balls.size()) < balls; ++tries) {
         const double r = d.range(0.01, 0.04);
-        const Vec2 p{d.range(lo.x + r + 1e-4, hi.x - r - 1e-4), d.range(lo.y + r + 1e-4, hi.y - r - 1e-4)};
+        const Vec2 p{d.range(lo.x + r + 1e-4, hi.x - r - 1e-4),
+                     d.range(lo.y + r + 1e-4, hi.y - r - 1e-4)};
         bool free = true;
         for (std::size_t j = 0; j < s.start.size(); ++j) {
           free = free && norm(s.start[j].position - p) > r + s.balls[j].radius + 1e-4;
@@ -275,7 +282,8 @@ Shot make_shot_from(std::uint64_t draw_seed, std::uint64_t k) {
   std::optional<ScenarioError> why = validate(s);
   while (why && why->path.rfind("balls[", 0) == 0) {
     const std::size_t i = std::strtoul(why->path.c_str() + 6, nullptr, 10);
-    if (i == 0 || i >= s.balls.size() || (s.cue && s.cue->ball >= static_cast<std::int32_t>(i))) break;
+    if (i == 0 || i >= s.balls.size() || (s.cue && s.cue->ball >= static_cast<std::int32_t>(i)))
+      break;
     s.balls.erase(s.balls.begin() + static_cast<std::ptrdiff_t>(i));
     s.start.erase(s.start.begin() + static_cast<std::ptrdiff_t>(i));
     why = validate(s);
@@ -346,7 +354,8 @@ std::optional<Violation> run_checked(const Scenario& s, std::uint64_t* events, i
   Simulation sim(s);
   const double allowance = [&] {
     double a = 0.0;
-    for (const BallSpec& b : s.balls) a += b.mass * s.physics.collapse_speed * s.physics.collapse_speed;
+    for (const BallSpec& b : s.balls)
+      a += b.mass * s.physics.collapse_speed * s.physics.collapse_speed;
     return a;
   }();
   const double end = s.until.rest ? std::numeric_limits<double>::infinity() : s.until.time;
@@ -367,7 +376,8 @@ std::optional<Violation> run_checked(const Scenario& s, std::uint64_t* events, i
     for (std::size_t i = 0; i < n; ++i) b[i] = sim.ball(i);
     if (inject >= 0 && sim.event_count() <= 2) {
       if (inject == 0) b[0].velocity.x = std::numeric_limits<double>::quiet_NaN();
-      if (inject == 1) b[0] = BallState{s.table.max + Vec2{1.0, 1.0}, {}, {}, MotionState::stationary};
+      if (inject == 1)
+        b[0] = BallState{s.table.max + Vec2{1.0, 1.0}, {}, {}, MotionState::stationary};
       if (inject == 2 && n > 1) b[1] = b[0];
       if (inject == 3) b[0].velocity = b[0].velocity * 2.0 + Vec2{1.0, 0.0};
     }
@@ -379,8 +389,10 @@ std::optional<Violation> run_checked(const Scenario& s, std::uint64_t* events, i
         v.check = 0;
         v.what = "ball " + s.balls[i].id + " is not finite";
       } else if (in_play(b[i]) && b[i].state != MotionState::airborne &&
-                 (b[i].position.x < s.table.min.x - 1e-9 || b[i].position.x > s.table.max.x + 1e-9 ||
-                  b[i].position.y < s.table.min.y - 1e-9 || b[i].position.y > s.table.max.y + 1e-9)) {
+                 (b[i].position.x < s.table.min.x - 1e-9 ||
+                  b[i].position.x > s.table.max.x + 1e-9 ||
+                  b[i].position.y < s.table.min.y - 1e-9 ||
+                  b[i].position.y > s.table.max.y + 1e-9)) {
         v.check = 1;
         v.what = "ball " + s.balls[i].id + " at " + vec2(b[i].position) + " is off the table";
       }
@@ -524,7 +536,8 @@ int main(int argc, char** argv) {
   for (std::size_t w = 1; w < threads; ++w) pool.emplace_back(work, w);
   work(0);
   for (std::thread& t : pool) t.join();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu = cpu_seconds() - cpu_start;
 
   Totals sum;
@@ -540,12 +553,14 @@ int main(int argc, char** argv) {
   std::uint64_t all_events = 0;
   std::uint64_t all_violations = 0;
   std::printf("soak: shots %llu .. %llu of seed %llu, %llu threads\n",
-              static_cast<unsigned long long>(from), static_cast<unsigned long long>(from + shots - 1),
+              static_cast<unsigned long long>(from),
+              static_cast<unsigned long long>(from + shots - 1),
               static_cast<unsigned long long>(seed), static_cast<unsigned long long>(threads));
   std::printf("%-16s %10s %12s\n", "kind", "shots", "events");
   for (int k = 0; k < kKinds; ++k) {
     const auto uk = static_cast<std::size_t>(k);
-    std::printf("%-16s %10llu %12llu\n", kKindNames[uk], static_cast<unsigned long long>(sum.shots[uk]),
+    std::printf("%-16s %10llu %12llu\n", kKindNames[uk],
+                static_cast<unsigned long long>(sum.shots[uk]),
                 static_cast<unsigned long long>(sum.events[uk]));
     all_events += sum.events[uk];
   }
@@ -556,21 +571,24 @@ int main(int argc, char** argv) {
                 c + 1 < 4 ? "," : "\n");
     all_violations += sum.violations[c];
   }
-  std::printf("%llu shots, %llu events in %.1f s (%.1f s of CPU): %.0f shots/s, %.0f shots per "
-              "CPU second\n",
-              static_cast<unsigned long long>(shots), static_cast<unsigned long long>(all_events),
-              seconds, cpu, static_cast<double>(shots) / seconds, static_cast<double>(shots) / cpu);
+  std::printf(
+      "%llu shots, %llu events in %.1f s (%.1f s of CPU): %.0f shots/s, %.0f shots per "
+      "CPU second\n",
+      static_cast<unsigned long long>(shots), static_cast<unsigned long long>(all_events), seconds,
+      cpu, static_cast<double>(shots) / seconds, static_cast<double>(shots) / cpu);
   if (sum.invalid > 0) {
-    std::printf("invalid layouts (not played): %llu\n", static_cast<unsigned long long>(sum.invalid));
+    std::printf("invalid layouts (not played): %llu\n",
+                static_cast<unsigned long long>(sum.invalid));
   }
   if (!first_bad) return sum.invalid > 0 ? 1 : 0;
 
   const Shot shot = make_shot(seed, *first_bad);
   const std::string text = scenario_json(shot);
-  std::printf("first violation: shot %llu (%s), event %llu at t = %s s: %s (%s)\n",
-              static_cast<unsigned long long>(*first_bad), kKindNames[static_cast<std::size_t>(shot.kind)],
-              static_cast<unsigned long long>(first_violation.event), num(first_violation.time).c_str(),
-              first_violation.what.c_str(), kCheckNames[static_cast<std::size_t>(first_violation.check)]);
+  std::printf(
+      "first violation: shot %llu (%s), event %llu at t = %s s: %s (%s)\n",
+      static_cast<unsigned long long>(*first_bad), kKindNames[static_cast<std::size_t>(shot.kind)],
+      static_cast<unsigned long long>(first_violation.event), num(first_violation.time).c_str(),
+      first_violation.what.c_str(), kCheckNames[static_cast<std::size_t>(first_violation.check)]);
   std::ofstream(out, std::ios::binary) << text;
   // The file must give the same run: read it back and check again.
   const auto read = read_scenario(text);

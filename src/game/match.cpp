@@ -474,8 +474,8 @@ void check_match_options(const MatchOptions& options) {
 }
 
 /// Game g of the match, as every play_match plays it.
-GameRecord play_match_game(const Rules& rules, const MatchOptions& options, Player& p0,
-                           Player& p1, int g) {
+GameRecord play_match_game(const Rules& rules, const MatchOptions& options, Player& p0, Player& p1,
+                           int g) {
   const std::uint64_t game_seed = mix_seed(options.seed, static_cast<std::uint64_t>(g));
   if (!options.name_failing_game) return play_game(rules, p0, p1, g % 2, game_seed, options.noise);
   try {
@@ -535,11 +535,10 @@ MatchSummary play_match(const MatchOptions& options, const PlayerFactory& make,
   if (threads == 1) return play_match(options, *players[0][0], *players[0][1], sink);
 
   const Rules rules(config_of(options));
-  MatchSummary summary = empty_summary_with(
-      options,
-      {effective_noise(*players[0][0], options.noise),
-       effective_noise(*players[0][1], options.noise)},
-      rules.foul_kinds());
+  MatchSummary summary = empty_summary_with(options,
+                                            {effective_noise(*players[0][0], options.noise),
+                                             effective_noise(*players[0][1], options.noise)},
+                                            rules.foul_kinds());
   summary.ranges = {GameRange{options.first_game, options.games}};
 
   // A finished game waiting for the ones before it to be added.
@@ -594,7 +593,8 @@ MatchSummary play_match(const MatchOptions& options, const PlayerFactory& make,
         TimedPlayer t1(p1, done.seconds[1]);
         Player& s0 = options.timing ? static_cast<Player&>(t0) : p0;
         Player& s1 = options.timing ? static_cast<Player&>(t1) : p1;
-        done.record = play_match_game(rules, options, s0, s1, options.first_game + static_cast<int>(i));
+        done.record =
+            play_match_game(rules, options, s0, s1, options.first_game + static_cast<int>(i));
       } catch (...) {
         done.error = std::current_exception();
       }
