@@ -812,10 +812,13 @@ def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
                noise: str = "none", table: Optional[str] = None,
                records: Union[None, str, os.PathLike] = None,
                threads: Optional[int] = None, first_game: int = 0,
-               physics: Optional[dict] = None) -> str:
+               physics: Optional[dict] = None, jobs: int = 1) -> str:
     """The summary text ``breakshot match`` prints for the same arguments
     (``--game``, ``--players a,b``, ``--games``, ``--seed``, ``--noise``,
-    ``--table``, ``--records DIR``, ``--first-game``), byte for byte.
+    ``--table``, ``--records DIR``, ``--first-game``, ``--jobs``), byte for
+    byte. ``jobs`` plays that many games at once (0: one per core), each
+    thread with its own players; the summary and the records are the same
+    for any ``jobs``.
     ``threads`` sets the AI players' worker threads (the summary does not
     depend on it). ``first_game`` plays games first_game .. first_game +
     games - 1 of the match, each exactly as one match from game 0 plays it;
@@ -836,21 +839,25 @@ def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
     if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
                                 or threads < 1):
         raise ValueError(f"threads: expected a whole number >= 1 or None, not {threads!r}")
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 0:
+        raise ValueError(f"jobs: expected a whole number >= 0 (0: one per core), not {jobs!r}")
     return _core.match_json(game, list(names), games, _seed(seed), noise, table,
                             None if records is None else os.fspath(records),
-                            0 if threads is None else threads, first_game, _physics(physics))
+                            0 if threads is None else threads, first_game, _physics(physics),
+                            jobs)
 
 
 def match(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
           noise: str = "none", table: Optional[str] = None,
           records: Union[None, str, os.PathLike] = None,
           threads: Optional[int] = None, first_game: int = 0,
-          physics: Optional[dict] = None) -> dict:
+          physics: Optional[dict] = None, jobs: int = 1) -> dict:
     """Plays a match as ``breakshot match`` does and returns its summary
     (the parsed JSON it prints: game, table, seed, noise, games_played,
     draws, players with their figures). ``records`` is a folder to write
     every game's record to (game-0001.json, ...). ``first_game`` plays
     only games first_game .. first_game + games - 1 (``--first-game``).
-    ``physics`` chooses the laws (see match_json). See match_json."""
+    ``physics`` chooses the laws (see match_json). ``jobs`` plays that many
+    games at once (``--jobs``; 0: one per core). See match_json."""
     return json.loads(match_json(game, players, games, seed, noise, table, records, threads,
-                                 first_game, physics))
+                                 first_game, physics, jobs))

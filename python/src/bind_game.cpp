@@ -491,12 +491,36 @@ MatchOptions match_options(const std::string& game, const std::array<std::string
 std::string match_json(const std::string& game, const std::array<std::string, 2>& players,
                        int games, std::uint64_t seed, const std::string& noise,
                        const std::string& table, const std::optional<std::string>& records,
-                       int threads, int first_game, const std::optional<std::string>& physics) {
-  const MatchOptions opt =
-      match_options(game, players, games, seed, noise, table, first_game, physics);
+                       int threads, int first_game, const std::optional<std::string>& physics,
+                       int jobs) {
+  MatchOptions opt = match_options(game, players, games, seed, noise, table, first_game, physics);
+  if (jobs < 0) {
+    throw std::invalid_argument("jobs: expected a whole number >= 0 (0: one per core), not " +
+                                std::to_string(jobs));
+  }
+  opt.jobs = jobs;
+  if (threads < 0) {
+    throw std::invalid_argument("threads: must be 0 (every core) or more, not " +
+                                std::to_string(threads));
+  }
+  std::string text;
+  if (match_threads(jobs, games) > 1) {
+    // Games at once, each thread with its own players (`breakshot match
+    // --jobs`); the same summary as one game at a time.
+    py::gil_scoped_release release;
+    const RecordSink sink = records ? record_files(*records) : RecordSink{};
+    if (threads == 0) {
+      text = match_summary_json(play_match(opt, sink));
+    } else {
+      const PlayerFactory make = [&opt, threads](int seat) {
+        return make_player(opt.players[static_cast<std::size_t>(seat)], threads);
+      };
+      text = match_summary_json(play_match(opt, make, sink));
+    }
+    return text;
+  }
   PlayerCore p0(players[0], threads);
   PlayerCore p1(players[1], threads);
-  std::string text;
   {
     py::gil_scoped_release release;
     const RecordSink sink = records ? record_files(*records) : RecordSink{};
@@ -647,8 +671,10 @@ void bind_game(py::module_& m) {
   m.def("match_json", &match_json, py::arg("game"), py::arg("players"), py::arg("games"),
         py::arg("seed"), py::arg("noise"), py::arg("table"), py::arg("records"),
         py::arg("threads"), py::arg("first_game") = 0, py::arg("physics") = py::none(),
+        py::arg("jobs") = 1,
         "The summary text `breakshot match` prints for the same arguments (physics: JSON text"
-        " of the game's physics, or None for the defaults).");
+        " of the game's physics, or None for the defaults; jobs: games at once, 0 one per"
+        " core).");
   m.def("match_chunk", &match_chunk, py::arg("game"), py::arg("players"), py::arg("seed"),
         py::arg("noise"), py::arg("table"), py::arg("first_game"), py::arg("games"),
         py::arg("threads"), py::arg("records"), py::arg("physics") = py::none(),

@@ -75,6 +75,27 @@ def test_first_game_equals_the_cli(tmp_path, run_cli):
                  table="7ft")[0] == r.stdout
 
 
+@pytest.mark.parametrize("jobs,threads", [(2, None), (0, None), (3, 1)])
+def test_jobs_give_the_cli_summary_and_records(tmp_path, run_cli, jobs, threads):
+    args = ("--game", "nine_ball", "--players", "baseline,beginner", "--games", 5, "--seed", 3,
+            "--noise", "tournament", "--table", "8ft", "--jobs", 1)
+    r = run_cli("match", *args, "--records", tmp_path / "cli", check=True)
+    text = breakshot.match_json("nine_ball", ("baseline", "beginner"), games=5, seed=3,
+                                noise="tournament", table="8ft", records=tmp_path / "py",
+                                threads=threads, jobs=jobs)
+    assert text == r.stdout
+    names = sorted(p.name for p in (tmp_path / "cli").iterdir())
+    assert len(names) == 5
+    for name in names:
+        assert (tmp_path / "py" / name).read_text() == (tmp_path / "cli" / name).read_text()
+
+
+def test_bad_jobs_are_refused():
+    for bad in (-1, 1.5, True, "2"):
+        with pytest.raises(ValueError, match="jobs"):
+            breakshot.match("nine_ball", ("baseline", "baseline"), jobs=bad)
+
+
 def test_summed_chunks_equal_match_sum(tmp_path, run_cli):
     parts = [chunk("nine_ball", ("baseline", "baseline"), f, k)[0] for f, k in [(0, 1), (4, 2)]]
     for i, text in enumerate(parts):
