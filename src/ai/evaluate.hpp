@@ -14,6 +14,7 @@
 #include <exception>
 #include <optional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "breakshot/game.hpp"
@@ -136,24 +137,29 @@ double estimate_sigma(const NoiseModel& noise);
 /// Threads to use: `requested`, or all cores for 0, never more than `units`.
 int worker_count(int requested, std::size_t units);
 
-/// Calls fn(i) for i in [0, n) on `threads` threads and returns the
-/// results in index order. Each unit must be a pure function of its index
-/// (its seed derived from the index, never from the thread that runs it),
-/// so the result is the same for any thread count. The first exception a
+/// Calls fn(i, scratch) for i in [0, n) on `threads` threads and returns
+/// the results in index order; each worker has a Scratch of its own (made
+/// at the start of the call) that its units may keep memory in. Each unit
+/// must be a pure function of its index (its seed derived from the index,
+/// never from the thread that runs it, nor from what a scratch holds), so
+/// the result is the same for any thread count. The first exception a
 /// unit throws is rethrown here.
-template <class T, class Fn>
-std::vector<T> parallel_map(std::size_t n, int threads, Fn&& fn) {
-  std::vector<T> out(n);
+template <class T, class Scratch, class Fn>
+std::vector<T> parallel_map_with(std::size_t n, int threads, Fn&& fn) {
   const int workers = worker_count(threads, n);
+  std::vector<Scratch> scratch(static_cast<std::size_t>(std::max(workers, 1)));
+  std::vector<T> out(n);
   if (workers <= 1) {
-    for (std::size_t i = 0; i < n; ++i) out[i] = fn(i);
+    for (std::size_t i = 0; i < n; ++i) out[i] = fn(i, scratch[0]);
     return out;
   }
   std::atomic<std::size_t> next{0};
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
   const auto work = [&](std::size_t w) {
     try {
-      for (std::size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) out[i] = fn(i);
+      for (std::size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) {
+        out[i] = fn(i, scratch[w]);
+      }
     } catch (...) {
       errors[w] = std::current_exception();
       next.store(n);  // the others stop taking units
@@ -170,38 +176,18 @@ std::vector<T> parallel_map(std::size_t n, int threads, Fn&& fn) {
   return out;
 }
 
-/// parallel_map whose units also get their worker's ShotWorkspace (one
-/// per worker, made at the start of the call): fn(i, workspace). The
-/// workspace only keeps memory between units, so the result is the same
-/// for any thread count.
+/// parallel_map_with without a scratch: fn(i).
+template <class T, class Fn>
+std::vector<T> parallel_map(std::size_t n, int threads, Fn&& fn) {
+  struct None {};
+  return parallel_map_with<T, None>(n, threads, [&fn](std::size_t i, None&) { return fn(i); });
+}
+
+/// parallel_map_with a ShotWorkspace per worker (Rules::apply re-arms its
+/// simulation from unit to unit): fn(i, workspace).
 template <class T, class Fn>
 std::vector<T> parallel_map_ws(std::size_t n, int threads, Fn&& fn) {
-  const int workers = worker_count(threads, n);
-  std::vector<ShotWorkspace> work(static_cast<std::size_t>(std::max(workers, 1)));
-  std::vector<T> out(n);
-  if (workers <= 1) {
-    for (std::size_t i = 0; i < n; ++i) out[i] = fn(i, work[0]);
-    return out;
-  }
-  std::atomic<std::size_t> next{0};
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
-  const auto run = [&](std::size_t w) {
-    try {
-      for (std::size_t i = next.fetch_add(1); i < n; i = next.fetch_add(1)) out[i] = fn(i, work[w]);
-    } catch (...) {
-      errors[w] = std::current_exception();
-      next.store(n);  // the others stop taking units
-    }
-  };
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<std::size_t>(workers - 1));
-  for (int w = 1; w < workers; ++w) pool.emplace_back(run, static_cast<std::size_t>(w));
-  run(0);
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
-  return out;
+  return parallel_map_with<T, ShotWorkspace>(n, threads, std::forward<Fn>(fn));
 }
 
 }  // namespace breakshot::ai_detail
