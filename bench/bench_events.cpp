@@ -15,38 +15,11 @@
 
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
+#include "ideal_gas.hpp"
 
 using namespace breakshot;
 
 namespace {
-
-double unit(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
-
-Scenario ideal_gas(int n, std::uint64_t seed) {
-  const double r = 0.01;
-  const double side = std::sqrt(n * M_PI * r * r / 0.3);
-  Scenario s;
-  s.physics.model = Model::ideal;
-  s.table = make_rectangle({0, 0}, {side, side});
-  const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-  const double pitch = side / cols;
-  const double slack = (pitch - 2 * r) / 2 * 0.9;
-  std::mt19937_64 g(seed);
-  for (int k = 0; k < n; ++k) {
-    BallSpec b{"g" + std::to_string(k), r, 0.01, 1.0};
-    BallState st;
-    st.position = {(k % cols + 0.5) * pitch + slack * (2 * unit(g) - 1),
-                   (k / cols + 0.5) * pitch + slack * (2 * unit(g) - 1)};
-    const double a = 2 * M_PI * unit(g);
-    st.velocity = {std::cos(a), std::sin(a)};
-    st.state = MotionState::moving;
-    s.balls.push_back(b);
-    s.start.push_back(st);
-  }
-  s.until.rest = false;
-  s.until.time = 1e300;
-  return s;
-}
 
 Scenario friction_break() {
   Scenario s;
@@ -79,7 +52,7 @@ Scenario friction_break() {
 
 void BM_IdealGas(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
-  Scenario s = ideal_gas(n, 42);
+  Scenario s = bench::ideal_gas(n, 42);
   // Enough events per iteration that set-up is negligible and the gas is
   // well mixed.
   const std::uint64_t events = n <= 16 ? 200000 : 500000;

@@ -42,6 +42,7 @@
 #include "breakshot/rack.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
+#include "ideal_gas.hpp"
 #include "random_shots.hpp"
 
 // Every allocation of the program is counted (a header before each block
@@ -87,34 +88,6 @@ double peak_resident_bytes() {
   return 1024.0 * static_cast<double>(u.ru_maxrss);
 }
 
-Scenario ideal_gas(long n, std::uint64_t seed) {
-  const double r = 0.01;
-  const double side = std::sqrt(static_cast<double>(n) * M_PI * r * r / 0.3);
-  Scenario s;
-  s.physics.model = Model::ideal;
-  s.table = make_rectangle({0, 0}, {side, side});
-  const long cols = static_cast<long>(std::ceil(std::sqrt(static_cast<double>(n))));
-  const double pitch = side / static_cast<double>(cols);
-  const double slack = (pitch - 2 * r) / 2 * 0.9;
-  std::mt19937_64 g(seed);
-  s.balls.reserve(static_cast<std::size_t>(n));
-  s.start.reserve(static_cast<std::size_t>(n));
-  for (long k = 0; k < n; ++k) {
-    BallSpec b{"g" + std::to_string(k), r, 0.01, 1.0};
-    BallState st;
-    st.position = {(static_cast<double>(k % cols) + 0.5) * pitch + slack * (2 * unit(g) - 1),
-                   (static_cast<double>(k / cols) + 0.5) * pitch + slack * (2 * unit(g) - 1)};
-    const double a = 2 * M_PI * unit(g);
-    st.velocity = {std::cos(a), std::sin(a)};
-    st.state = MotionState::moving;
-    s.balls.push_back(b);
-    s.start.push_back(st);
-  }
-  s.until.rest = false;
-  s.until.time = 1e300;
-  return s;
-}
-
 /// One size of the gas, in a process of its own: memory is the peak of
 /// the bytes allocated (scenario, simulation, events) less what was
 /// allocated before, per ball; the process's peak resident set is printed
@@ -128,7 +101,7 @@ int gas(long n) {
   // run needs, and grow with the events asked for, not the balls.
   const std::size_t before = g_live;
   g_peak = g_live;
-  Scenario s = ideal_gas(n, 7);
+  Scenario s = bench::ideal_gas(n, 7);
   Simulation sim(std::move(s));
   const std::uint64_t want = std::max<std::uint64_t>(200000, 4 * static_cast<std::uint64_t>(n));
   const std::uint64_t start_events = sim.event_count();

@@ -679,20 +679,7 @@ export class TableView {
     }
     for (let k = 1; k <= 3; k++) spots.push([-d, (W * k) / 4], [L + d, (W * k) / 4]);
     for (const [x, y] of spots) {
-      const cx = this.sx(x);
-      const cy = this.sy(y);
-      const r = Math.max(2, this.px(DIAMOND));
-      ctx.beginPath();
-      ctx.moveTo(cx, cy - r);
-      ctx.lineTo(cx + r * 0.62, cy);
-      ctx.lineTo(cx, cy + r);
-      ctx.lineTo(cx - r * 0.62, cy);
-      ctx.closePath();
-      ctx.fillStyle = '#efe8d6';
-      ctx.fill();
-      ctx.strokeStyle = 'rgba(0, 0, 0, 0.35)';
-      ctx.lineWidth = 0.75;
-      ctx.stroke();
+      this.drawDiamond(ctx, x, y);
     }
 
     // head string and spots, faint
@@ -716,6 +703,24 @@ export class TableView {
     this.staticLayer = layer;
   }
 
+  /** A sight diamond on the rail at table point (x, y). */
+  drawDiamond(ctx, x, y) {
+    const cx = this.sx(x);
+    const cy = this.sy(y);
+    const r = Math.max(2, this.px(DIAMOND));
+    ctx.beginPath();
+    ctx.moveTo(cx, cy - r);
+    ctx.lineTo(cx + r * 0.62, cy);
+    ctx.lineTo(cx, cy + r);
+    ctx.lineTo(cx - r * 0.62, cy);
+    ctx.closePath();
+    ctx.fillStyle = '#efe8d6';
+    ctx.fill();
+    ctx.strokeStyle = 'rgba(0, 0, 0, 0.35)';
+    ctx.lineWidth = 0.75;
+    ctx.stroke();
+  }
+
   /** The carom table's diamonds (on the rails, level with the engine's
    *  points on the cushion noses) and its five spots: top, centre, bottom
    *  and the two starting spots. */
@@ -732,20 +737,7 @@ export class TableView {
       else if (py >= W - eps) y = W + d;
       else if (px <= eps) x = -d;
       else if (px >= L - eps) x = L + d;
-      const cx = this.sx(x);
-      const cy = this.sy(y);
-      const r = Math.max(2, this.px(DIAMOND));
-      ctx.beginPath();
-      ctx.moveTo(cx, cy - r);
-      ctx.lineTo(cx + r * 0.62, cy);
-      ctx.lineTo(cx, cy + r);
-      ctx.lineTo(cx - r * 0.62, cy);
-      ctx.closePath();
-      ctx.fillStyle = '#efe8d6';
-      ctx.fill();
-      ctx.strokeStyle = 'rgba(0, 0, 0, 0.35)';
-      ctx.lineWidth = 0.75;
-      ctx.stroke();
+      this.drawDiamond(ctx, x, y);
     }
     const spots = [m.top_spot, m.centre_spot, m.bottom_spot, ...(m.starting_spots || [])];
     ctx.fillStyle = 'rgba(255, 255, 255, 0.7)';
