@@ -89,21 +89,49 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
     }
   }
 
+  // Raw views of the working memory: the loops below run hundreds of
+  // times per impact, and the vectors' sizes do not change in them.
+  Vec2* const P = p.data();
+  Vec2* const V = v.data();
+  ClusterPair* const Q = pairs.data();
+  const std::size_t np = pairs.size();
+  const std::size_t nb = p.size();
+
   // The step: from the fastest closing speed in the cluster, the shortest
   // contact there will be (slower contacts last longer).
   double fastest = 0.0;
-  for (const ClusterPair& q : pairs) {
-    const Vec2 d = p[static_cast<std::size_t>(q.b)] - p[static_cast<std::size_t>(q.a)];
+  for (std::size_t k = 0; k < np; ++k) {
+    const ClusterPair& q = Q[k];
+    const Vec2 d = P[q.b] - P[q.a];
     const double len = norm(d);
-    if (len > 0.0) {
-      fastest = std::max(fastest, -dot(v[static_cast<std::size_t>(q.b)] - v[static_cast<std::size_t>(q.a)], d) / len);
-    }
+    if (len > 0.0) fastest = std::max(fastest, -dot(V[q.b] - V[q.a], d) / len);
   }
-  if (pairs.empty() || !(fastest > 0.0)) return;
+  if (np == 0 || !(fastest > 0.0)) return;
+  // Pairs of the same balls (all of them, in a rack) have the same
+  // duration: it is computed once for each run of equal pairs.
   double shortest = std::numeric_limits<double>::infinity();
-  for (const ClusterPair& q : pairs) shortest = std::min(shortest, contact_duration(q, fastest));
+  double last_reduced = -1.0;
+  double last_stiffness = -1.0;
+  double last_duration = 0.0;
+  for (std::size_t k = 0; k < np; ++k) {
+    const ClusterPair& q = Q[k];
+    if (q.reduced != last_reduced || q.stiffness != last_stiffness) {
+      last_reduced = q.reduced;
+      last_stiffness = q.stiffness;
+      last_duration = contact_duration(q, fastest);
+    }
+    shortest = std::min(shortest, last_duration);
+  }
   const double dt = shortest / kStepsPerContact;
   const double horizon = kHorizonContacts * shortest;
+
+  // The pairs pressed together, in pair order (room for all of them, so
+  // that adding one is a store).
+  pressed.resize(np);
+  std::size_t* const pressed_at = pressed.data();
+  std::size_t n_pressed = 0;
+  // Each body's mass, for the kicks.
+  const ClusterBody* const body = bodies.data();
 
   // Forces at the current positions, and the pairs that have one (in
   // pair order, so that the kicks add up in the same order as over every
@@ -111,14 +139,14 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
   // stale one, which nothing reads.
   const auto compute_forces = [&]() {
     bool any = false;
-    pressed.clear();
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-      ClusterPair& q = pairs[k];
+    n_pressed = 0;
+    for (std::size_t k = 0; k < np; ++k) {
+      ClusterPair& q = Q[k];
       // d = p_b - p_a and dd = d.x d.x + d.y d.y, the two lanes at once:
       // the same IEEE operations as Vec2's, so the same bits.
       V2 pa, pb;
-      std::memcpy(&pa, &p[static_cast<std::size_t>(q.a)], sizeof pa);
-      std::memcpy(&pb, &p[static_cast<std::size_t>(q.b)], sizeof pb);
+      std::memcpy(&pa, &P[q.a], sizeof pa);
+      std::memcpy(&pb, &P[q.b], sizeof pb);
       const V2 dv = pb - pa;
       const V2 sq = dv * dv;
       const double dd = sq[0] + sq[1];
@@ -129,18 +157,18 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
       if (overlap > 0.0 && len > 0.0) {
         q.force = d * (q.stiffness * overlap * std::sqrt(overlap) / len);
         any = true;
-        if (q.force.x != 0.0 || q.force.y != 0.0) pressed.push_back(k);
+        if (q.force.x != 0.0 || q.force.y != 0.0) pressed_at[n_pressed++] = k;
       }
     }
     return any;
   };
   const auto kick = [&](double h) {
-    for (const std::size_t k : pressed) {
-      ClusterPair& q = pairs[k];
+    for (std::size_t m = 0; m < n_pressed; ++m) {
+      ClusterPair& q = Q[pressed_at[m]];
       const Vec2 j = q.force * h;
       q.impulse = q.impulse + j;
-      v[static_cast<std::size_t>(q.a)] = v[static_cast<std::size_t>(q.a)] - j / bodies[static_cast<std::size_t>(q.a)].mass;
-      v[static_cast<std::size_t>(q.b)] = v[static_cast<std::size_t>(q.b)] + j / bodies[static_cast<std::size_t>(q.b)].mass;
+      V[q.a] = V[q.a] - j / body[q.a].mass;
+      V[q.b] = V[q.b] + j / body[q.b].mass;
     }
   };
 
@@ -151,9 +179,10 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
       // Free flight: on to the next contact among the watched pairs, if it
       // comes within the horizon.
       double next = std::numeric_limits<double>::infinity();
-      for (const ClusterPair& q : pairs) {
-        const Vec2 d = p[static_cast<std::size_t>(q.b)] - p[static_cast<std::size_t>(q.a)];
-        const Vec2 w = v[static_cast<std::size_t>(q.b)] - v[static_cast<std::size_t>(q.a)];
+      for (std::size_t k = 0; k < np; ++k) {
+        const ClusterPair& q = Q[k];
+        const Vec2 d = P[q.b] - P[q.a];
+        const Vec2 w = V[q.b] - V[q.a];
         const double dw = dot(d, w);
         const double ww = dot(w, w);
         if (!(dw < 0.0) || !(ww > 0.0)) continue;
@@ -167,10 +196,10 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
         next = std::min(next, (-dw - std::sqrt(disc)) / ww);
       }
       if (!(next <= horizon)) break;
-      for (std::size_t k = 0; k < p.size(); ++k) p[k] = p[k] + v[k] * next;
+      for (std::size_t k = 0; k < nb; ++k) P[k] = P[k] + V[k] * next;
     }
     kick(0.5 * dt);
-    for (std::size_t k = 0; k < p.size(); ++k) p[k] = p[k] + v[k] * dt;
+    for (std::size_t k = 0; k < nb; ++k) P[k] = P[k] + V[k] * dt;
     touching = compute_forces();
     kick(0.5 * dt);
   }

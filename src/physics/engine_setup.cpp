@@ -29,8 +29,8 @@ void Engine::reset(const Scenario& scenario) {
   limit_hit_ = false;
   left_cloth_ = false;
   moving_ = 0;
-  traj_.clear();
-  radius_.clear();
+  // traj_ and radius_ keep their elements: set_up_balls overwrites
+  // every one of them.
   ideal_ = false;
   convex_ = false;
   counter_.clear();
@@ -60,6 +60,9 @@ void Engine::set_up() {
 // Each ball's trajectory from its state at t = 0.
 void Engine::set_up_balls() {
   const std::size_t n = scenario_.balls.size();
+  // Each trajectory as a new engine has it: the new elements are made
+  // clear, those that reset kept are cleared below.
+  const std::size_t kept = std::min(traj_.size(), n);
   traj_.resize(n);
   radius_.resize(n);
   for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
@@ -67,6 +70,7 @@ void Engine::set_up_balls() {
   counter_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     Trajectory& tr = traj_[i];
+    if (i < kept) tr = Trajectory{};
     tr.t0 = 0.0;
     tr.p0 = scenario_.start[i].position;
     tr.w0 = scenario_.start[i].spin;

@@ -28,6 +28,7 @@ void Engine::set_up_walls() {
                          [](const Wall& w) { return w.kind != WallKind::segment; });
 
   // Boxes around the walls, to skip the ones a ball's path never nears.
+  wall_box_.reserve(scenario_.table.walls.size());
   for (const Wall& w : scenario_.table.walls) {
     Box b;
     if (w.kind == WallKind::segment) {
@@ -53,6 +54,7 @@ void Engine::set_up_walls() {
     all.hi = {std::max(all.hi.x, b.hi.x), std::max(all.hi.y, b.hi.y)};
   }
   const double run_size = norm(all.hi - all.lo) / 16.0;
+  wall_runs_.reserve(wall_box_.size());
   for (std::size_t w = 0; w < wall_box_.size(); ++w) {
     const Box& b = wall_box_[w];
     if (!wall_runs_.empty()) {
