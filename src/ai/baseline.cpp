@@ -328,7 +328,10 @@ class Planner {
       if (segment_distance(p, a, b) < 2.0 * R_ + kBallMargin) return false;
     }
     if (!walls) return true;
+    // Walls further than R + kWallMargin pass (geometry.hpp, PathReach).
+    const ai::PathReach reach(a, b, R_ + kWallMargin);
     for (const Wall& w : table_.walls) {
+      if (reach.beyond(w)) continue;
       const double need =
           std::min({R_ + kWallMargin, wall_distance(w, a, a), wall_distance(w, b, b)});
       if (wall_distance(w, a, b) < need - 1e-12) return false;

@@ -52,6 +52,22 @@ struct Layout {
 /// start is none).
 bool balls_clear(const Layout& lay, double R, Vec2 a, Vec2 b, int skip1, int skip2 = -1);
 
+/// The segment from a to b, for proving walls far from it at once: every
+/// point of a wall that `beyond` accepts lies further than `reach` from
+/// every point of the segment, by a margin far beyond rounding (1e-7 m),
+/// so a test of the wall's distance against `reach` or less would pass.
+class PathReach {
+ public:
+  PathReach(Vec2 a, Vec2 b, double reach);
+  bool beyond(const Wall& w) const;
+
+ private:
+  Vec2 a_;
+  Vec2 lo_, hi_;  // the segment's box grown by the reach
+  Vec2 u_;        // unit direction from a to b (zero if a == b)
+  double reach_;
+};
+
 /// True if a ball centre moving from a to b stays R (and kWallMargin)
 /// clear of every cushion and jaw; an end already closer (a ball on a
 /// rail, a bounce point) may keep its distance but not come closer.

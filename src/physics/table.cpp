@@ -197,7 +197,14 @@ bool contains(const Table& table, Vec2 p) {
 double wall_clearance(const Table& table, Vec2 p, double r) {
   double d = std::numeric_limits<double>::infinity();
   for (const Wall& w : table.walls) {
-    if (w.kind == WallKind::segment) d = std::min(d, segment_distance(p, w.a, w.b));
+    if (w.kind != WallKind::segment) continue;
+    // A wall whose box lies further along an axis than the nearest wall
+    // so far (with room for rounding) cannot be nearer: skipped, the
+    // least distance is the same.
+    const double gx = std::max(std::min(w.a.x, w.b.x) - p.x, p.x - std::max(w.a.x, w.b.x));
+    const double gy = std::max(std::min(w.a.y, w.b.y) - p.y, p.y - std::max(w.a.y, w.b.y));
+    if (std::max(gx, gy) > d + 1e-7) continue;
+    d = std::min(d, segment_distance(p, w.a, w.b));
   }
   if (!contains(table, p)) return -d - r;
   return d - r;
