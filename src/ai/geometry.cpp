@@ -114,7 +114,9 @@ std::optional<Approach> approach_line(const Table& table, double R, const Layout
   if (!walls_clear(table, R, from, end)) return std::nullopt;
   // Walls near the pocket only: the rails along the way were checked above.
   double room = kInf;
+  const PathReach near_pocket(pk.centre, pk.centre, 0.2);
   for (const Wall& w : table.walls) {
+    if (near_pocket.beyond(w)) continue;  // further than 0.2 m, proved cheaply
     if (wall_distance(w, pk.centre, pk.centre) > 0.2) continue;
     room = std::min(room, wall_distance(w, from, end) - R);
   }
