@@ -19,6 +19,7 @@ void Engine::reserve_cluster_work() {
   const std::size_t pairs = n * (n - 1) / 2;
   cluster_.group.reserve(n);
   cluster_.place.reserve(n);
+  cluster_.member.reserve(n);
   cluster_.near.reserve(n);
   cluster_.bodies.reserve(n);
   cluster_.scratch.position.reserve(n);
@@ -81,18 +82,33 @@ void Engine::gather_cluster(std::int32_t i, std::int32_t j, double t) {
     // Every ball's place at t, once (balls out of play or in flight are
     // never gathered).
     std::vector<Vec2>& at = cluster_.place;
+    std::vector<std::uint8_t>& member = cluster_.member;
     at.clear();
+    member.assign(static_cast<std::size_t>(n), 0);
     for (std::int32_t k = 0; k < n; ++k) {
       const Trajectory& tk = traj_[static_cast<std::size_t>(k)];
+      const bool gathered = !out_of_play(tk.state) && tk.state != MotionState::airborne;
       at.push_back(out_of_play(tk.state) ? Vec2{} : position_at(tk, t));
+      // Balls never gathered count as members: nothing is tested for them.
+      member[static_cast<std::size_t>(k)] = gathered ? 0 : 1;
     }
+    member[static_cast<std::size_t>(i)] = 1;
+    member[static_cast<std::size_t>(j)] = 1;
     for (std::size_t g = 0; g < group.size(); ++g) {
       const auto ug = static_cast<std::size_t>(group[g]);
       const Vec2 pg = traj_[ug].p0;
       for (std::int32_t k = 0; k < n; ++k) {
-        const MotionState sk = traj_[static_cast<std::size_t>(k)].state;
-        if (out_of_play(sk) || sk == MotionState::airborne) continue;
-        join(ug, pg, k, at[static_cast<std::size_t>(k)]);
+        const auto uk = static_cast<std::size_t>(k);
+        if (member[uk]) continue;  // in the group already, or never gathered
+        // join's test, norm(d) - r_k - r_g < kClusterGap, cannot hold when
+        // the squared distance is beyond (kClusterGap + r_k + r_g)^2 by far
+        // more than rounding: the square root is skipped.
+        const Vec2 d = at[uk] - pg;
+        const double reach = kClusterGap + radius_[uk] + radius_[ug];
+        if (norm2(d) > reach * reach * (1.0 + 1e-9)) continue;
+        const std::size_t before = group.size();
+        join(ug, pg, k, at[uk]);
+        if (group.size() > before) member[uk] = 1;
       }
     }
   }

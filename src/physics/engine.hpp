@@ -183,6 +183,7 @@ class Engine {
   struct ClusterWork {
     std::vector<std::int32_t> group;
     std::vector<Vec2> place;
+    std::vector<std::uint8_t> member;  // 1 for the balls of the group (no grid)
     std::vector<std::int32_t> near;  // candidates of the cells nearby
     std::int32_t reach = 1;          // cells searched on each side
     std::vector<ClusterBody> bodies;

@@ -20,6 +20,7 @@ void Engine::reset(const Scenario& scenario) {
   // keeping its capacity.
   cluster_.group.clear();
   cluster_.place.clear();
+  cluster_.member.clear();
   cluster_.near.clear();
   cluster_.reach = 1;
   cluster_.bodies.clear();
