@@ -15,7 +15,7 @@ Kinematics Engine::kinematics(std::int32_t i) const {
   k.v = velocity_at(A, t);
   k.a = t < A.t_end ? A.acc : Vec2{};
   k.t_end = A.t_end;
-  k.radius = scenario_.balls[static_cast<std::size_t>(i)].radius;
+  k.radius = radius_[static_cast<std::size_t>(i)];  // the packed copy: no reach into the scenario
   k.still = !translating(A.state);
   k.box_lo = A.box_lo;
   k.box_hi = A.box_hi;

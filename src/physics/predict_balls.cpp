@@ -81,6 +81,35 @@ void Engine::predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0
   y0 = std::max(0, y0);
   x1 = std::min(grid_.nx() - 1, x1);
   y1 = std::min(grid_.ny() - 1, y1);
+  // The candidates first, in the order they are examined, each one's
+  // trajectory asked for from memory as it is found: in a large scene
+  // they lie far apart in memory, and the loads then overlap instead of
+  // each waiting for the last. The order, and so every result, is that
+  // of walking the cells' lists directly (which is done past kBatch).
+  constexpr int kBatch = 64;
+  std::int32_t batch[kBatch];
+  int count = 0;
+  bool full = false;
+  for (std::int32_t y = y0; y <= y1 && !full; ++y) {
+    for (std::int32_t x = x0; x <= x1 && !full; ++x) {
+      for (std::int32_t j = grid_.first(y * grid_.nx() + x); j >= 0; j = grid_.next(j)) {
+        if (j == i) continue;
+        if (count == kBatch) {
+          full = true;
+          break;
+        }
+        const auto uj = static_cast<std::size_t>(j);
+        __builtin_prefetch(&traj_[uj]);
+        __builtin_prefetch(reinterpret_cast<const char*>(&traj_[uj]) + 39);  // the line of v0's end
+        __builtin_prefetch(&radius_[uj]);
+        batch[count++] = j;
+      }
+    }
+  }
+  if (!full) {
+    for (int k = 0; k < count; ++k) predict_ball_pair(ki, batch[k], best);
+    return;
+  }
   for (std::int32_t y = y0; y <= y1; ++y) {
     for (std::int32_t x = x0; x <= x1; ++x) {
       for (std::int32_t j = grid_.first(y * grid_.nx() + x); j >= 0; j = grid_.next(j)) {
