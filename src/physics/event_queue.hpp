@@ -26,29 +26,47 @@ struct Prediction {
   std::uint64_t other_counter = 0;  // partner's counter at prediction
 };
 
-// The balls in a 4-ary min-heap whose nodes hold the time with the ball,
-// so that sifting reads one array (four children share a cache line or
-// two) instead of reaching through each ball's prediction. The keys
-// (time, ball index) are all different, so the ball on top is the one
-// that any correct queue would give: the order of events does not depend
-// on the heap's shape.
+// Few balls (a game of pool) and very many sit in a 4-ary min-heap whose
+// nodes hold the time with the ball, so that sifting reads one array
+// instead of reaching through each ball's prediction. From kBucketBalls
+// up to kBucketMaxBalls they sit in a calendar of time buckets (DynamO's
+// bounded queue, simplified): the ball on top is the earliest of the
+// first bucket that holds any, and moving a ball is taking it out of one
+// list and into another, where a heap pays for several unpredictable
+// comparisons a level (in an ideal gas, 10-25 % more events a second from
+// 200 to 10^4 balls). Beyond about 3x10^5 balls the lists' links are
+// cache misses and the heap is faster again (docs/experiments.md,
+// 2026-11-26). Either way the keys (time, ball index) are all different,
+// so the ball on top is the one that any correct queue would give: the
+// order of events does not depend on how the queue is kept.
+inline constexpr std::size_t kBucketBalls = 128;
+inline constexpr std::size_t kBucketMaxBalls = 262144;
+
 class EventQueue {
  public:
   // Room for n balls, in index order; their predictions are set next,
   // then build() orders them.
   void reset(std::size_t n);
-  // Orders the heap once every ball's prediction is set (bottom-up).
+  // Orders the queue once every ball's prediction is set.
   void build();
 
-  bool empty() const { return heap_.empty(); }
+  bool empty() const { return next_.empty(); }
   // The ball whose event comes first (the queue must not be empty).
-  std::int32_t top() const { return heap_[0].ball; }
+  std::int32_t top() {
+    if (!buckets_) return heap_[0].ball;
+    if (top_ < 0) find_top();
+    return top_;
+  }
 
   const Prediction& next(std::int32_t i) const { return next_[static_cast<std::size_t>(i)]; }
   // Sets ball i's next event; fix(i) then restores the order.
   void set(std::int32_t i, const Prediction& p) {
     next_[static_cast<std::size_t>(i)] = p;
-    heap_[static_cast<std::size_t>(pos_[static_cast<std::size_t>(i)])].time = p.time;
+    if (buckets_) {
+      top_ = -1;
+    } else {
+      heap_[static_cast<std::size_t>(pos_[static_cast<std::size_t>(i)])].time = p.time;
+    }
   }
   void fix(std::int32_t i);
 
@@ -69,9 +87,30 @@ class EventQueue {
   void sift_down(std::size_t pos);
   void sift_up(std::size_t pos);
 
+  // The calendar: bucket k holds the balls whose time t has
+  // floor((t - base_) / width_) = k, for k below the number of buckets;
+  // the others (later, or never) are in the overflow list. Every ball is
+  // in one doubly linked list.
+  static constexpr std::int32_t kOverflow = -1;
+  std::int32_t bucket_for(double t) const;
+  void link(std::int32_t i, std::int32_t bucket);
+  void unlink(std::int32_t i);
+  void find_top();
+  void rebuild();
+
   std::vector<Prediction> next_;   // each ball's earliest event
+  bool buckets_ = false;           // the calendar (else the heap)
   std::vector<Node> heap_;         // 4-ary min-heap: children of k at 4k+1 .. 4k+4
   std::vector<std::int32_t> pos_;  // where each ball sits in heap_
+  std::vector<std::int32_t> head_;       // first ball of each bucket, or -1
+  std::vector<std::int32_t> bucket_of_;  // each ball's bucket, or kOverflow
+  std::vector<std::int32_t> prev_;       // neighbours in the ball's list, or -1
+  std::vector<std::int32_t> after_;
+  std::int32_t overflow_ = -1;  // first ball of the overflow list
+  double base_ = 0.0;
+  double width_ = 1.0;
+  std::int32_t cur_ = 0;   // no ball is in a bucket before this one
+  std::int32_t top_ = -1;  // the ball on top, if known
 };
 
 }  // namespace breakshot::detail
