@@ -7,6 +7,8 @@
 //                              peak_rss_mib" (set-up excluded from the
 //                              time; bytes counted by this program's
 //                              operator new)
+//   scaling gas N --still K    the same with K of the balls, spread
+//                              through the box, hardly moving (1 um/s)
 //   scaling breaks             a triangle rack of 3 .. 28 balls on a 9 ft
 //                              table, struck at 7.5 m/s (pool model, ball
 //                              clusters): microseconds and events per break,
@@ -92,9 +94,13 @@ double peak_resident_bytes() {
 /// the bytes allocated (scenario, simulation, events) less what was
 /// allocated before, per ball; the process's peak resident set is printed
 /// too.
-int gas(long n) {
+int gas(long n, long still) {
   if (n < 2) {
     std::fprintf(stderr, "scaling gas: at least 2 balls\n");
+    return 2;
+  }
+  if (still < 0 || still > n) {
+    std::fprintf(stderr, "scaling gas: --still must be between 0 and the number of balls\n");
     return 2;
   }
   // Events are kept (Simulation::events): they are part of the memory a
@@ -102,6 +108,11 @@ int gas(long n) {
   const std::size_t before = g_live;
   g_peak = g_live;
   Scenario s = bench::ideal_gas(n, 7);
+  // Balls spread through the box that hardly move (1 um/s): their next
+  // events lie ages away, a test of how the event queue copes.
+  for (long k = 0; k < still; ++k) {
+    s.start[static_cast<std::size_t>(k * (n / still))].velocity = {1e-6, 0.0};
+  }
   Simulation sim(std::move(s));
   const std::uint64_t want = std::max<std::uint64_t>(200000, 4 * static_cast<std::uint64_t>(n));
   const std::uint64_t start_events = sim.event_count();
@@ -233,12 +244,25 @@ int threads(int max_threads) {
 
 int main(int argc, char** argv) {
   const std::string what = argc > 1 ? argv[1] : "";
-  if (what == "gas" && argc > 2) return gas(std::atol(argv[2]));
+  if (what == "gas" && argc > 2) {
+    const bool still = argc > 4 && std::string(argv[3]) == "--still";
+    if (argc > 3 && !still) {
+      std::fprintf(stderr, "scaling gas: unknown option %s (--still K)\n", argv[3]);
+      return 2;
+    }
+    char* end = nullptr;
+    const long k = still ? std::strtol(argv[4], &end, 10) : 0;
+    if (still && (end == argv[4] || *end != '\0')) {
+      std::fprintf(stderr, "scaling gas: --still needs a whole number, not '%s'\n", argv[4]);
+      return 2;
+    }
+    return gas(std::atol(argv[2]), k);
+  }
   if (what == "breaks") return breaks();
   if (what == "threads") {
     const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     return threads(argc > 2 ? std::max(1, std::atoi(argv[2])) : cores);
   }
-  std::fprintf(stderr, "usage: scaling gas BALLS | breaks | threads [MAX_THREADS]\n");
+  std::fprintf(stderr, "usage: scaling gas BALLS [--still K] | breaks | threads [MAX_THREADS]\n");
   return 2;
 }

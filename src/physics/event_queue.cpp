@@ -20,6 +20,7 @@ void EventQueue::reset(std::size_t n) {
     bucket_of_.assign(n, kOverflow);
     prev_.assign(n, -1);
     after_.assign(n, -1);
+    spread_.reserve(n);
     overflow_ = -1;
     cur_ = 0;
     return;
@@ -105,15 +106,15 @@ void EventQueue::find_top() {
 
 // Lays the calendar out again from the balls of the overflow list (all of
 // them, when called): its start is the earliest finite time, and its
-// buckets as wide as four times the mean distance of the finite times from
-// it, over the number of buckets (so about four balls to a bucket, and the
-// calendar reaching past most balls' times). With no finite time, every
-// ball stays in the overflow list and cur_ past the last bucket.
+// buckets as wide as six times the median distance of the finite times
+// from it over the number of buckets (so a few balls to a bucket, and the
+// calendar reaching past most balls' times). The median, not the mean: a
+// ball whose next event is ages away must not widen every bucket. With no
+// finite time, every ball stays in the overflow list and cur_ past the
+// last bucket.
 void EventQueue::rebuild() {
   const auto nb = static_cast<std::int32_t>(head_.size());
   double lo = INFINITY;
-  double sum = 0.0;
-  std::size_t count = 0;
   for (std::int32_t j = overflow_; j >= 0; j = after_[static_cast<std::size_t>(j)]) {
     const double t = next_[static_cast<std::size_t>(j)].time;
     if (std::isfinite(t)) lo = std::min(lo, t);
@@ -122,15 +123,15 @@ void EventQueue::rebuild() {
     cur_ = nb;
     return;
   }
+  spread_.clear();
   for (std::int32_t j = overflow_; j >= 0; j = after_[static_cast<std::size_t>(j)]) {
     const double t = next_[static_cast<std::size_t>(j)].time;
-    if (std::isfinite(t)) {
-      sum += t - lo;
-      ++count;
-    }
+    if (std::isfinite(t)) spread_.push_back(t - lo);
   }
+  const auto mid = spread_.begin() + static_cast<std::ptrdiff_t>(spread_.size() / 2);
+  std::nth_element(spread_.begin(), mid, spread_.end());
   base_ = lo;
-  width_ = 4.0 * (sum / static_cast<double>(count)) / static_cast<double>(nb);
+  width_ = 6.0 * *mid / static_cast<double>(nb);
   if (!(width_ > 0.0) || !std::isfinite(width_)) width_ = 1.0;
   cur_ = 0;
   std::int32_t j = overflow_;

@@ -106,6 +106,7 @@ class EventQueue {
   std::vector<std::int32_t> bucket_of_;  // each ball's bucket, or kOverflow
   std::vector<std::int32_t> prev_;       // neighbours in the ball's list, or -1
   std::vector<std::int32_t> after_;
+  std::vector<double> spread_;  // rebuild()'s working memory
   std::int32_t overflow_ = -1;  // first ball of the overflow list
   double base_ = 0.0;
   double width_ = 1.0;
