@@ -80,6 +80,11 @@ Table make_polygon(const std::vector<Vec2>& vertices);
 /// wall or if p lies outside the table.
 double wall_clearance(const Table& table, Vec2 p, double r);
 
+/// Whether that clearance is at least zero (the disk lies in the table,
+/// touching no wall), answered sooner: the first wall closer than r ends
+/// the search, and walls whose box is further than r are skipped.
+bool disk_fits(const Table& table, Vec2 p, double r);
+
 /// Distance from p to the segment from a to b.
 double segment_distance(Vec2 p, Vec2 a, Vec2 b);
 

@@ -313,7 +313,7 @@ class Planner {
     return out;
   }
 
-  bool ghost_fits(Vec2 g) const { return wall_clearance(table_, g, R_) >= 0.0; }
+  bool ghost_fits(Vec2 g) const { return disk_fits(table_, g, R_); }
 
   /// True if a ball moving along the segment a-b keeps 2R (plus the
   /// margin) from every object ball but `skip` (a ball it starts beside

@@ -217,7 +217,7 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
                    [](const Pot& x, const Pot& y) { return x.rank > y.rank; });
   for (const Pot& pot : pots) {
     const Vec2 b = state.position[static_cast<std::size_t>(pot.ball)];
-    if (wall_clearance(table, pot.ghost, R) < 0.0) continue;
+    if (!disk_fits(table, pot.ghost, R)) continue;
     if (!ai::walls_clear(table, R, cue, pot.ghost)) continue;
     if (!ai::pocket_approach(table, R, lay, b, pot.pocket, pot.ball)) continue;
     if (best_ball) *best_ball = pot.ball;

@@ -87,7 +87,7 @@ namespace {
 /// Whether the ball that strikes a ball at `from` toward `dir` fits at its
 /// ghost ball's place (2R behind, on the line).
 bool ghost_fits(const Table& table, double R, Vec2 from, Vec2 dir) {
-  return wall_clearance(table, from - dir * (2.0 * R), R) >= 0.0;
+  return disk_fits(table, from - dir * (2.0 * R), R);
 }
 
 /// The line from `from` toward the point `off` pocket radii across the

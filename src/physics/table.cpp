@@ -170,6 +170,21 @@ double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   return norm(p - (a + ab * s));
 }
 
+bool disk_fits(const Table& table, Vec2 p, double r) {
+  // wall_clearance(table, p, r) >= 0 holds exactly when p is inside and
+  // every segment wall is at least r away (d - r >= 0 is d >= r for
+  // doubles). A wall whose box lies further than r along an axis (with
+  // room for rounding) is further than r.
+  for (const Wall& w : table.walls) {
+    if (w.kind != WallKind::segment) continue;
+    const double gx = std::max(std::min(w.a.x, w.b.x) - p.x, p.x - std::max(w.a.x, w.b.x));
+    const double gy = std::max(std::min(w.a.y, w.b.y) - p.y, p.y - std::max(w.a.y, w.b.y));
+    if (std::max(gx, gy) > r + 1e-7) continue;
+    if (segment_distance(p, w.a, w.b) < r) return false;
+  }
+  return contains(table, p);
+}
+
 bool contains(const Table& table, Vec2 p) {
   // The bed of a pocket table lies inside its outline, which runs along
   // the cushion noses and out around the pockets (a test checks it against
