@@ -170,6 +170,14 @@ double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   return norm(p - (a + ab * s));
 }
 
+// How far p lies outside the box of segment wall w along the farther
+// axis (negative inside): a lower bound on its distance to the wall.
+static double box_gap(const Wall& w, Vec2 p) {
+  const double gx = std::max(std::min(w.a.x, w.b.x) - p.x, p.x - std::max(w.a.x, w.b.x));
+  const double gy = std::max(std::min(w.a.y, w.b.y) - p.y, p.y - std::max(w.a.y, w.b.y));
+  return std::max(gx, gy);
+}
+
 bool disk_fits(const Table& table, Vec2 p, double r) {
   // wall_clearance(table, p, r) >= 0 holds exactly when p is inside and
   // every segment wall is at least r away (d - r >= 0 is d >= r for
@@ -177,9 +185,7 @@ bool disk_fits(const Table& table, Vec2 p, double r) {
   // room for rounding) is further than r.
   for (const Wall& w : table.walls) {
     if (w.kind != WallKind::segment) continue;
-    const double gx = std::max(std::min(w.a.x, w.b.x) - p.x, p.x - std::max(w.a.x, w.b.x));
-    const double gy = std::max(std::min(w.a.y, w.b.y) - p.y, p.y - std::max(w.a.y, w.b.y));
-    if (std::max(gx, gy) > r + 1e-7) continue;
+    if (box_gap(w, p) > r + 1e-7) continue;
     if (segment_distance(p, w.a, w.b) < r) return false;
   }
   return contains(table, p);
@@ -216,9 +222,7 @@ double wall_clearance(const Table& table, Vec2 p, double r) {
     // A wall whose box lies further along an axis than the nearest wall
     // so far (with room for rounding) cannot be nearer: skipped, the
     // least distance is the same.
-    const double gx = std::max(std::min(w.a.x, w.b.x) - p.x, p.x - std::max(w.a.x, w.b.x));
-    const double gy = std::max(std::min(w.a.y, w.b.y) - p.y, p.y - std::max(w.a.y, w.b.y));
-    if (std::max(gx, gy) > d + 1e-7) continue;
+    if (box_gap(w, p) > d + 1e-7) continue;
     d = std::min(d, segment_distance(p, w.a, w.b));
   }
   if (!contains(table, p)) return -d - r;
