@@ -462,6 +462,19 @@ TEST(Simulation, ResetRunsExactlyAsANewSimulation) {
   cases.emplace_back("friction gas of 70", gas(70, 3, Model::friction));
   cases.emplace_back("snooker break", make_break_scenario("snooker", "12ft", 1, 8.0));
   cases.emplace_back("8-ball break again", make_break_scenario("eight_ball", "9ft", 9, 9.0));
+  // Shots in a row on one table (reset keeps the walls' boxes then):
+  // two more breaks, and an L-shaped room (corner walls) before and after
+  // a rectangle of the same size, and back.
+  cases.emplace_back("8-ball break 5", make_break_scenario("eight_ball", "9ft", 5, 7.0));
+  cases.emplace_back("8-ball break 6", make_break_scenario("eight_ball", "9ft", 6, 8.0));
+  for (int k = 0; k < 3; ++k) {
+    Scenario room = box(0, 0, 2, 2);
+    if (k != 2) room.table = make_polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
+    add(room, spec("a", 0.05, 0.1), at(0.3, 0.5, 1.1 + 0.2 * k, 0.9));
+    add(room, spec("b", 0.05, 0.1), at(1.5, 0.4, -0.4, 0.3 * k));
+    room.until.time = 6.0;
+    cases.emplace_back("room " + std::to_string(k), room);
+  }
   Scenario two = box(0, 0, 1, 1);
   add(two, spec("a", 0.05, 0.1), at(0.2, 0.3, 0.7, 0.4));
   add(two, spec("b", 0.05, 0.2), at(0.6, 0.6, -0.3, 0.2));

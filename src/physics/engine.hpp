@@ -90,7 +90,9 @@ class Engine {
 
  private:
   // --- set-up (engine_setup.cpp, and the files named)
-  void set_up();  // everything the constructors do after taking the scenario
+  // Everything the constructors do after taking the scenario; `walls`
+  // false keeps the walls' boxes and runs (reset on the same walls).
+  void set_up(bool walls = true);
   void set_up_balls();
   void reserve_events();
   void reserve_cluster_work();     // collide_cluster.cpp
@@ -134,6 +136,9 @@ class Engine {
   void predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0, std::int32_t x1,
                      std::int32_t y0, std::int32_t y1, Prediction& best) const;
   void predict_ball_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
+  void predict_ideal_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
+  void predict_moving_pair(const Kinematics& ki, std::int32_t j, std::uint32_t need,
+                           Prediction& best) const;
   // After predict_ball_pair's cheap rejections only.
   void predict_accelerating_pair(const Kinematics& ki, std::int32_t j, Prediction& best) const;
   void predict_walls(const Kinematics& ki, Prediction& best) const;
@@ -199,6 +204,24 @@ class Engine {
   std::size_t moving_ = 0;  // balls not at rest
   std::vector<Trajectory> traj_;
   std::vector<double> radius_;  // a copy of each ball's radius, packed
+  // What the partner search reads of each ball (predict_balls.hpp),
+  // packed: its trajectory's box and whether it is in play and moving.
+  // sync_sweep(i) writes it wherever ball i's state or box changes
+  // (set_motion, set_motion3, take_pocket, take_off_table).
+  static constexpr std::uint32_t kInPlay = 1;
+  static constexpr std::uint32_t kTranslating = 2;
+  struct Sweep {
+    Vec2 lo, hi;
+    std::uint32_t flags = 0;
+  };
+  std::vector<Sweep> sweep_;
+  void sync_sweep(std::size_t i) {
+    const Trajectory& tr = traj_[i];
+    Sweep& s = sweep_[i];
+    s.lo = tr.box_lo;
+    s.hi = tr.box_hi;
+    s.flags = (out_of_play(tr.state) ? 0u : kInPlay) | (translating(tr.state) ? kTranslating : 0u);
+  }
   bool ideal_ = false;          // no ball ever accelerates
   bool convex_ = false;         // the table has no corner walls
   std::vector<std::uint64_t> counter_;  // events each ball took part in
@@ -235,6 +258,7 @@ inline void Engine::set_motion(std::int32_t i, Vec2 v, Vec3 w, bool rolls) {
   const bool active = !resting(tr.state);
   if (active && !was_active) ++moving_;
   if (!active && was_active) --moving_;
+  sync_sweep(ui);
 }
 
 inline void Engine::set_velocity(std::int32_t i, Vec2 v) {

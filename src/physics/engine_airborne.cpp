@@ -94,6 +94,7 @@ void Engine::set_motion3(std::int32_t i, Vec2 v, double vz, Vec3 w) {
   }
   const bool was_active = !resting(tr.state);
   start_airborne(tr, v, vz, std::max(z, 0.0), w, ph);
+  sync_sweep(ui);
   if (!was_active) ++moving_;
   const double apex = z + (vz > 0.0 ? vz * vz / (2.0 * ph.gravity) : 0.0);
   if (apex > kRisen) left_cloth_ = true;
@@ -110,6 +111,7 @@ void Engine::take_off_table(std::int32_t i, double t) {
   set_motion(i, {}, {});
   tr.state = MotionState::off_table;
   update_box(tr);
+  sync_sweep(static_cast<std::size_t>(i));
   if (grid_.used()) grid_.unlink(i);
 }
 

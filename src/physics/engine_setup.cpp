@@ -14,7 +14,29 @@ Engine::Engine(const Scenario& scenario) : scenario_(scenario) { set_up(); }
 
 Engine::Engine(Scenario&& scenario) : scenario_(std::move(scenario)) { set_up(); }
 
+namespace {
+
+// Do two lists of walls have the same geometry (names aside)? The walls'
+// boxes and runs depend on nothing else.
+bool same_wall_geometry(const std::vector<Wall>& a, const std::vector<Wall>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const Wall& x = a[k];
+    const Wall& y = b[k];
+    if (x.kind != y.kind || x.a != y.a || x.b != y.b || x.normal != y.normal ||
+        x.radius != y.radius) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 void Engine::reset(const Scenario& scenario) {
+  // A new shot on the same table (the usual case: play_shots, the AI's
+  // rollouts) keeps the walls' boxes and runs.
+  const bool same_walls = same_wall_geometry(scenario_.table.walls, scenario.table.walls);
   scenario_ = scenario;  // assignment reuses the vectors' and strings' memory
   // Everything else as a new engine has it, every container emptied but
   // keeping its capacity.
@@ -33,25 +55,27 @@ void Engine::reset(const Scenario& scenario) {
   // traj_ and radius_ keep their elements: set_up_balls overwrites
   // every one of them.
   ideal_ = false;
-  convex_ = false;
   counter_.clear();
   event_.clear();
   events_.clear();
   cue_result_.reset();
-  wall_box_.clear();
-  wall_runs_.clear();
+  if (!same_walls) {
+    convex_ = false;
+    wall_box_.clear();
+    wall_runs_.clear();
+  }
   pair_keys_.clear();
   pair_values_.clear();
   grid_.clear();
   record_ = nullptr;
-  set_up();
+  set_up(!same_walls);
 }
 
-void Engine::set_up() {
+void Engine::set_up(bool walls) {
   set_up_balls();
   reserve_events();
   reserve_cluster_work();
-  set_up_walls();
+  if (walls) set_up_walls();
   set_up_pair_restitution();
   set_up_cells();
   strike_cue();
@@ -66,6 +90,7 @@ void Engine::set_up_balls() {
   const std::size_t kept = std::min(traj_.size(), n);
   traj_.resize(n);
   radius_.resize(n);
+  sweep_.resize(n);
   for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
   ideal_ = scenario_.physics.model == Model::ideal;
   counter_.assign(n, 0);

@@ -68,6 +68,7 @@ void Engine::take_pocket(std::int32_t i, double t) {
   set_motion(i, {}, {});
   tr.state = MotionState::pocketed;
   update_box(tr);
+  sync_sweep(static_cast<std::size_t>(i));
   if (grid_.used()) grid_.unlink(i);
 }
 

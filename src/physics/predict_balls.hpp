@@ -4,6 +4,7 @@
 // cells around the ball's own. The rest is in predict_balls.cpp.
 #pragma once
 
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 
@@ -13,44 +14,63 @@
 namespace breakshot::detail {
 
 // Inlined into the neighbour loops: it is most of the cost of an event.
-[[gnu::always_inline]] inline void Engine::predict_ball_pair(const Kinematics& ki,
-                                                              std::int32_t j,
-                                                              Prediction& best) const {
+// In the ideal model no ball ever accelerates: the quadratic case,
+// written out.
+[[gnu::always_inline]] inline void Engine::predict_ideal_pair(const Kinematics& ki,
+                                                               std::int32_t j,
+                                                               Prediction& best) const {
   const Trajectory& B = traj_[static_cast<std::size_t>(j)];
-  if (ideal_) {
-    // No ball ever accelerates: the quadratic case, written out because
-    // this loop is most of the cost of an event.
-    const double t = origin_;
-    const double dt = t - B.t0;
-    const Vec2 dp = B.p0 + B.v0 * dt - ki.p;
-    const Vec2 dv = B.v0 - ki.v;
-    const double b = dot(dp, dv);
-    if (b >= 0.0) return;  // not approaching
-    const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
-    const double c = norm2(dp) - sigma * sigma;
-    // The root c / (-b + sqrt(b^2 - a c)) is at least c / (-2 b): skip
-    // the square root when even that is later than the best so far.
-    if (c > 0.0 && c > (best.time - t) * (-2.0 * b)) return;
-    // first_contact_quadratic, inlined.
-    double tau = 0.0;
-    if (c > 0.0) {
-      const double disc = b * b - norm2(dv) * c;
-      if (disc < 0.0) return;
-      tau = c / (-b + std::sqrt(disc));
-    }
-    consider(best, t + tau, EventKind::ball, j, counter_[static_cast<std::size_t>(j)]);
-    return;
-  }
-  // The cheap rejections inline (most pairs end here), the rest out of
-  // line in predict_accelerating_pair.
-  if (out_of_play(B.state)) return;
-  if (ki.still && !translating(B.state)) return;
+  const double t = origin_;
+  const double dt = t - B.t0;
+  const Vec2 dp = B.p0 + B.v0 * dt - ki.p;
+  const Vec2 dv = B.v0 - ki.v;
+  const double b = dot(dp, dv);
+  if (b >= 0.0) return;  // not approaching
   const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
-  if (B.box_lo.x - ki.box_hi.x > sigma || ki.box_lo.x - B.box_hi.x > sigma ||
-      B.box_lo.y - ki.box_hi.y > sigma || ki.box_lo.y - B.box_hi.y > sigma) {
+  const double c = norm2(dp) - sigma * sigma;
+  // The root c / (-b + sqrt(b^2 - a c)) is at least c / (-2 b): skip
+  // the square root when even that is later than the best so far.
+  if (c > 0.0 && c > (best.time - t) * (-2.0 * b)) return;
+  // first_contact_quadratic, inlined.
+  double tau = 0.0;
+  if (c > 0.0) {
+    const double disc = b * b - norm2(dv) * c;
+    if (disc < 0.0) return;
+    tau = c / (-b + std::sqrt(disc));
+  }
+  consider(best, t + tau, EventKind::ball, j, counter_[static_cast<std::size_t>(j)]);
+}
+
+// The other models. `need` is kTranslating for a ball in place (it meets
+// only balls that move), else kInPlay.
+[[gnu::always_inline]] inline void Engine::predict_moving_pair(const Kinematics& ki,
+                                                                std::int32_t j, std::uint32_t need,
+                                                                Prediction& best) const {
+  // The cheap rejections inline (most pairs end here), the rest out of
+  // line in predict_accelerating_pair. A ball out of play meets nothing,
+  // and a ball in place only balls that move; then the boxes.
+  const Sweep& S = sweep_[static_cast<std::size_t>(j)];
+  // Debug builds (the sanitizer run of the tests) check the copy.
+  [[maybe_unused]] const Trajectory& B = traj_[static_cast<std::size_t>(j)];
+  assert(S.lo.x == B.box_lo.x && S.lo.y == B.box_lo.y && S.hi.x == B.box_hi.x &&
+         S.hi.y == B.box_hi.y && ((S.flags & kInPlay) != 0) == !out_of_play(B.state) &&
+         ((S.flags & kTranslating) != 0) == translating(B.state));
+  if (!(S.flags & need)) return;
+  const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
+  if (S.lo.x - ki.box_hi.x > sigma || ki.box_lo.x - S.hi.x > sigma ||
+      S.lo.y - ki.box_hi.y > sigma || ki.box_lo.y - S.hi.y > sigma) {
     return;  // their paths never come within reach
   }
   predict_accelerating_pair(ki, j, best);
+}
+
+inline void Engine::predict_ball_pair(const Kinematics& ki, std::int32_t j,
+                                      Prediction& best) const {
+  if (ideal_) {
+    predict_ideal_pair(ki, j, best);
+  } else {
+    predict_moving_pair(ki, j, ki.still ? kTranslating : kInPlay, best);
+  }
 }
 
 // Every other ball, or with the grid those of the 3 x 3 cells around.
@@ -61,9 +81,16 @@ inline void Engine::predict_partners(std::int32_t i, const Kinematics& ki, Predi
     const std::int32_t cy = cell / grid_.nx();
     predict_cells(i, ki, cx - 1, cx + 1, cy - 1, cy + 1, best);
   } else {
+    // The balls before i, then those after it: the order of a loop over
+    // every other ball, and the model's test chosen once.
     const auto n = static_cast<std::int32_t>(traj_.size());
-    for (std::int32_t j = 0; j < n; ++j) {
-      if (j != i) predict_ball_pair(ki, j, best);
+    if (ideal_) {
+      for (std::int32_t j = 0; j < i; ++j) predict_ideal_pair(ki, j, best);
+      for (std::int32_t j = i + 1; j < n; ++j) predict_ideal_pair(ki, j, best);
+    } else {
+      const std::uint32_t need = ki.still ? kTranslating : kInPlay;
+      for (std::int32_t j = 0; j < i; ++j) predict_moving_pair(ki, j, need, best);
+      for (std::int32_t j = i + 1; j < n; ++j) predict_moving_pair(ki, j, need, best);
     }
   }
 }
