@@ -40,6 +40,7 @@ struct ClusterPair {
   int a = 0;
   int b = 0;
   double reach = 0.0;      ///< sum of the radii
+  double reach2 = 0.0;     ///< reach * reach
   double stiffness = 0.0;  ///< k in F = k d^(3/2)
   double reduced = 0.0;    ///< reduced mass
   Vec2 force;              ///< on b at the current positions (minus on a)

@@ -81,6 +81,7 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
       q.a = a;
       q.b = b;
       q.reach = A.radius + B.radius;
+      q.reach2 = q.reach * q.reach;
       if (norm(B.position - A.position) - q.reach > kWatchGap) continue;
       const double r_star = A.radius * B.radius / q.reach;
       q.stiffness = 4.0 / 3.0 * e_star * std::sqrt(r_star);
@@ -150,7 +151,7 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
       const V2 dv = pb - pa;
       const V2 sq = dv * dv;
       const double dd = sq[0] + sq[1];
-      if (dd >= q.reach * q.reach) continue;  // apart: no force, and no square root
+      if (dd >= q.reach2) continue;  // apart: no force, and no square root
       const Vec2 d{dv[0], dv[1]};
       const double len = std::sqrt(dd);
       const double overlap = q.reach - len;
@@ -186,7 +187,7 @@ void cluster_impact(const std::vector<ClusterBody>& bodies, const ClusterRestitu
         const double dw = dot(d, w);
         const double ww = dot(w, w);
         if (!(dw < 0.0) || !(ww > 0.0)) continue;
-        const double gap2 = dot(d, d) - q.reach * q.reach;
+        const double gap2 = dot(d, d) - q.reach2;
         if (gap2 <= 0.0) {
           next = 0.0;
           break;

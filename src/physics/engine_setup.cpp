@@ -3,6 +3,8 @@
 // pair restitutions and the clusters' working memory is in the files of
 // those concepts.
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <utility>
 
@@ -94,16 +96,36 @@ void Engine::set_up_balls() {
   for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
   ideal_ = scenario_.physics.model == Model::ideal;
   counter_.assign(n, 0);
+  // A ball at rest (every component of its motion +0.0) starts the same
+  // trajectory wherever it is: the first one of each radius is worked
+  // out, the others copy it and take their own place (a rack's balls).
+  const auto at_rest = [](const BallState& s) {
+    const double parts[6] = {s.velocity.x, s.velocity.y, s.vz, s.spin.x, s.spin.y, s.spin.z};
+    for (double x : parts) {
+      if (std::bit_cast<std::uint64_t>(x) != 0) return false;
+    }
+    return true;
+  };
+  std::size_t rest_model = n;  // a ball at rest worked out, if any
   for (std::size_t i = 0; i < n; ++i) {
     Trajectory& tr = traj_[i];
+    const BallState& start = scenario_.start[i];
+    if (rest_model < n && radius_[i] == radius_[rest_model] && at_rest(start)) {
+      tr = traj_[rest_model];
+      tr.p0 = start.position;
+      tr.box_lo = start.position;  // the box of a ball in place (update_box)
+      tr.box_hi = start.position;
+      sync_sweep(i);
+      continue;
+    }
     if (i < kept) tr = Trajectory{};
     tr.t0 = 0.0;
     tr.p0 = scenario_.start[i].position;
     tr.w0 = scenario_.start[i].spin;
     tr.state = MotionState::stationary;
     tr.t_end = kInf;
-    set_motion3(static_cast<std::int32_t>(i), scenario_.start[i].velocity, scenario_.start[i].vz,
-                scenario_.start[i].spin);
+    set_motion3(static_cast<std::int32_t>(i), start.velocity, start.vz, start.spin);
+    if (rest_model == n && at_rest(start) && !translating(tr.state)) rest_model = i;
   }
 }
 
