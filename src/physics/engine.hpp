@@ -205,22 +205,36 @@ class Engine {
   std::vector<Trajectory> traj_;
   std::vector<double> radius_;  // a copy of each ball's radius, packed
   // What the partner search reads of each ball (predict_balls.hpp),
-  // packed: its trajectory's box and whether it is in play and moving.
-  // sync_sweep(i) writes it wherever ball i's state or box changes
-  // (set_motion, set_motion3, take_pocket, take_off_table).
+  // packed: its trajectory's box, its radius (twice, for both axes at
+  // once) and whether it is in play and moving; for the first 32 balls
+  // the last two also as bits 2j of two words. sync_sweep(i) writes them
+  // wherever ball i's state or box changes (set_motion, set_motion3,
+  // take_pocket, take_off_table, set_up_balls).
   static constexpr std::uint32_t kInPlay = 1;
   static constexpr std::uint32_t kTranslating = 2;
   struct Sweep {
     Vec2 lo, hi;
+    double radius[2] = {0.0, 0.0};
     std::uint32_t flags = 0;
   };
   std::vector<Sweep> sweep_;
+  std::uint64_t in_play_bits_ = 0;
+  std::uint64_t translating_bits_ = 0;
   void sync_sweep(std::size_t i) {
     const Trajectory& tr = traj_[i];
     Sweep& s = sweep_[i];
     s.lo = tr.box_lo;
     s.hi = tr.box_hi;
-    s.flags = (out_of_play(tr.state) ? 0u : kInPlay) | (translating(tr.state) ? kTranslating : 0u);
+    s.radius[0] = radius_[i];
+    s.radius[1] = radius_[i];
+    const bool in_play = !out_of_play(tr.state);
+    const bool moves = translating(tr.state);
+    s.flags = (in_play ? kInPlay : 0u) | (moves ? kTranslating : 0u);
+    if (i < 32) {
+      const std::uint64_t bit = std::uint64_t{1} << (2 * i);
+      in_play_bits_ = in_play ? in_play_bits_ | bit : in_play_bits_ & ~bit;
+      translating_bits_ = moves ? translating_bits_ | bit : translating_bits_ & ~bit;
+    }
   }
   bool ideal_ = false;          // no ball ever accelerates
   bool convex_ = false;         // the table has no corner walls

@@ -93,6 +93,8 @@ void Engine::set_up_balls() {
   traj_.resize(n);
   radius_.resize(n);
   sweep_.resize(n);
+  in_play_bits_ = 0;
+  translating_bits_ = 0;
   for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
   ideal_ = scenario_.physics.model == Model::ideal;
   counter_.assign(n, 0);

@@ -4,8 +4,12 @@
 // cells around the ball's own. The rest is in predict_balls.cpp.
 #pragma once
 
+#include <bit>
 #include <cassert>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <cstdint>
 
 #include "physics/engine.hpp"
@@ -87,6 +91,56 @@ inline void Engine::predict_partners(std::int32_t i, const Kinematics& ki, Predi
     if (ideal_) {
       for (std::int32_t j = 0; j < i; ++j) predict_ideal_pair(ki, j, best);
       for (std::int32_t j = i + 1; j < n; ++j) predict_ideal_pair(ki, j, best);
+    } else if (n <= 32) {
+      // The cheap rejections of predict_moving_pair for every ball at
+      // once, without a branch (which way each goes is as good as random,
+      // and a mispredicted branch costs more than the tests): two bits
+      // per ball (one per axis), set where the boxes stay apart. Then the
+      // balls left, in index order.
+#ifndef NDEBUG
+      for (std::int32_t j = 0; j < n; ++j) {  // debug builds check the copies
+        const auto uj = static_cast<std::size_t>(j);
+        const Trajectory& B = traj_[uj];
+        const Sweep& S = sweep_[uj];
+        assert(S.lo == B.box_lo && S.hi == B.box_hi && S.radius[0] == radius_[uj] &&
+               S.radius[1] == radius_[uj]);
+        assert(((in_play_bits_ >> (2 * j)) & 1) == (out_of_play(B.state) ? 0u : 1u));
+        assert(((translating_bits_ >> (2 * j)) & 1) == (translating(B.state) ? 1u : 0u));
+      }
+#endif
+      std::uint64_t apart = 0;
+#if defined(__SSE2__)
+      // Both axes at once: the same subtractions and comparisons.
+      const __m128d k_lo = _mm_set_pd(ki.box_lo.y, ki.box_lo.x);
+      const __m128d k_hi = _mm_set_pd(ki.box_hi.y, ki.box_hi.x);
+      const __m128d k_r = _mm_set1_pd(ki.radius);
+      for (std::int32_t j = 0; j < n; ++j) {
+        const Sweep& S = sweep_[static_cast<std::size_t>(j)];
+        const __m128d reach = _mm_add_pd(k_r, _mm_loadu_pd(S.radius));
+        const __m128d far = _mm_or_pd(_mm_cmpgt_pd(_mm_sub_pd(_mm_loadu_pd(&S.lo.x), k_hi), reach),
+                                      _mm_cmpgt_pd(_mm_sub_pd(k_lo, _mm_loadu_pd(&S.hi.x)), reach));
+        apart |= static_cast<std::uint64_t>(_mm_movemask_pd(far)) << (2 * j);
+      }
+#else
+      for (std::int32_t j = 0; j < n; ++j) {
+        const Sweep& S = sweep_[static_cast<std::size_t>(j)];
+        const double sigma = ki.radius + S.radius[0];
+        const auto x = static_cast<std::uint64_t>((S.lo.x - ki.box_hi.x > sigma) |
+                                                  (ki.box_lo.x - S.hi.x > sigma));
+        const auto y = static_cast<std::uint64_t>((S.lo.y - ki.box_hi.y > sigma) |
+                                                  (ki.box_lo.y - S.hi.y > sigma));
+        apart |= (x | (y << 1)) << (2 * j);
+      }
+#endif
+      // A ball out of play meets nothing, a ball in place only balls that
+      // move; and i is not its own partner.
+      std::uint64_t near = ~(apart | (apart >> 1)) & (ki.still ? translating_bits_ : in_play_bits_);
+      near &= ~(std::uint64_t{1} << (2 * i));
+      while (near != 0) {
+        const int j = std::countr_zero(near) / 2;
+        near &= near - 1;
+        predict_accelerating_pair(ki, j, best);
+      }
     } else {
       const std::uint32_t need = ki.still ? kTranslating : kInPlay;
       for (std::int32_t j = 0; j < i; ++j) predict_moving_pair(ki, j, need, best);
