@@ -209,7 +209,8 @@ class Engine {
   // once) and whether it is in play and moving; for the first 32 balls
   // the last two also as bits 2j of two words. sync_sweep(i) writes them
   // wherever ball i's state or box changes (set_motion, set_motion3,
-  // take_pocket, take_off_table, set_up_balls).
+  // take_pocket, take_off_table, set_up_balls). Not kept in the ideal
+  // model, whose partner test reads the trajectories.
   static constexpr std::uint32_t kInPlay = 1;
   static constexpr std::uint32_t kTranslating = 2;
   struct Sweep {
@@ -221,6 +222,7 @@ class Engine {
   std::uint64_t in_play_bits_ = 0;
   std::uint64_t translating_bits_ = 0;
   void sync_sweep(std::size_t i) {
+    if (ideal_) return;  // the ideal model's partner test reads the trajectories
     const Trajectory& tr = traj_[i];
     Sweep& s = sweep_[i];
     s.lo = tr.box_lo;

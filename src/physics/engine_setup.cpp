@@ -92,11 +92,11 @@ void Engine::set_up_balls() {
   const std::size_t kept = std::min(traj_.size(), n);
   traj_.resize(n);
   radius_.resize(n);
-  sweep_.resize(n);
-  in_play_bits_ = 0;
-  translating_bits_ = 0;
   for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
   ideal_ = scenario_.physics.model == Model::ideal;
+  sweep_.resize(ideal_ ? 0 : n);
+  in_play_bits_ = 0;
+  translating_bits_ = 0;
   counter_.assign(n, 0);
   // A ball at rest (every component of its motion +0.0) starts the same
   // trajectory wherever it is: the first one of each radius is worked

@@ -102,7 +102,7 @@ void Engine::predict_cells(std::int32_t i, const Kinematics& ki, std::int32_t x0
         __builtin_prefetch(&traj_[uj]);
         __builtin_prefetch(reinterpret_cast<const char*>(&traj_[uj]) + 39);  // the line of v0's end
         __builtin_prefetch(&radius_[uj]);
-        __builtin_prefetch(&sweep_[uj]);
+        if (!ideal_) __builtin_prefetch(&sweep_[uj]);
         batch[count++] = j;
       }
     }
