@@ -113,16 +113,27 @@ def plot_gas(exe, a):
 def plot_breaks(exe, a):
     br = rows(run(exe, "breaks"))
     write_csv(os.path.join(a.out, "scaling-breaks.csv"), br)
-    balls = [int(r["balls"]) for r in br]
+    tri = [r for r in br if r["rack"] == "triangle"]
+    games = [r for r in br if r["rack"] != "triangle"]
+    balls = [int(r["balls"]) for r in tri]
     fig, ax = plt.subplots(figsize=(6, 4))
-    ax.plot(balls, [float(r["us_per_break"]) for r in br], "o-", color="tab:blue")
-    ax.set_xlabel("balls in the rack (triangle of 2 to 7 rows)")
+    ax.plot(balls, [float(r["us_per_break"]) for r in tri], "o-", color="tab:blue",
+            label="triangle, 9 ft: microseconds")
+    ax.plot([int(r["balls"]) for r in games], [float(r["us_per_break"]) for r in games], "D",
+            color="navy", label="the games' breaks: microseconds")
+    for r in games:
+        label = {"nine_ball": "9-ball", "eight_ball": "8-ball", "snooker": "snooker, 12 ft"}
+        ax.annotate(label.get(r["rack"], r["rack"]), (int(r["balls"]), float(r["us_per_break"])),
+                    textcoords="offset points", xytext=(7, -10), fontsize=8, color="navy")
+    ax.set_xlabel("object balls in the rack")
     ax.set_ylabel("microseconds per break", color="tab:blue")
     axb = ax.twinx()
-    axb.plot(balls, [float(r["events_per_break"]) for r in br], "s--", color="tab:red")
-    axb.set_ylabel("events per break", color="tab:red")
-    ax.set_title("Break cost against the rack (9 ft, 7.5 m/s, clusters)")
+    axb.plot(balls, [float(r["events_per_break"]) for r in tri], "s--", color="tab:red",
+             label="triangle: events")
+    axb.set_ylabel("events per break (triangle)", color="tab:red")
+    ax.set_title("Break cost against the rack (7.5 m/s, clusters)")
     ax.grid(True, alpha=0.3)
+    ax.legend(loc="upper left", fontsize=8)
     save(fig, os.path.join(a.out, "scaling-breaks.svg"))
 
 

@@ -11,8 +11,10 @@
 //                              through the box, hardly moving (1 um/s)
 //   scaling breaks             a triangle rack of 3 .. 28 balls on a 9 ft
 //                              table, struck at 7.5 m/s (pool model, ball
-//                              clusters): microseconds and events per break,
-//                              racks cycled (64 jitter seeds)
+//                              clusters), then the 9-ball, 8-ball and
+//                              snooker breaks of the games (their racks
+//                              and tables, 7.5 m/s): microseconds and
+//                              events per break, racks cycled (64 seeds)
 //   scaling threads [MAX]      random 15-ball shots per second through
 //                              play_shots, and 9-ball baseline games per
 //                              minute through play_match --jobs, on 1 ..
@@ -168,33 +170,53 @@ Scenario triangle_break(int rows, std::uint64_t seed) {
   return s;
 }
 
-int breaks() {
-  std::printf("balls,us_per_break,events_per_break\n");
-  for (int rows = 2; rows <= 7; ++rows) {
-    std::vector<Scenario> racks;
-    for (std::uint64_t seed = 1; seed <= 64; ++seed) racks.push_back(triangle_break(rows, seed));
-    const int balls = rows * (rows + 1) / 2;
-    // Warm up, then whole passes for at least a second.
-    std::uint64_t events = 0;
+// Microseconds and events per break over 64 racks, cycled: a warm-up
+// pass, then whole passes for at least a second.
+void time_breaks(const char* rack, int balls, const std::vector<Scenario>& racks) {
+  std::uint64_t events = 0;
+  for (const Scenario& r : racks) {
+    Simulation sim(r);
+    sim.advance_to_rest();
+  }
+  std::size_t done = 0;
+  const auto t0 = Clock::now();
+  double secs = 0.0;
+  do {
     for (const Scenario& r : racks) {
       Simulation sim(r);
       sim.advance_to_rest();
+      events += sim.event_count();
     }
-    std::size_t done = 0;
-    const auto t0 = Clock::now();
-    double secs = 0.0;
-    do {
-      for (const Scenario& r : racks) {
-        Simulation sim(r);
-        sim.advance_to_rest();
-        events += sim.event_count();
-      }
-      done += racks.size();
-      secs = seconds_since(t0);
-    } while (secs < 1.0);
-    std::printf("%d,%.1f,%.1f\n", balls, secs * 1e6 / static_cast<double>(done),
-                static_cast<double>(events) / static_cast<double>(done));
-    std::fflush(stdout);
+    done += racks.size();
+    secs = seconds_since(t0);
+  } while (secs < 1.0);
+  std::printf("%s,%d,%.1f,%.1f\n", rack, balls, secs * 1e6 / static_cast<double>(done),
+              static_cast<double>(events) / static_cast<double>(done));
+  std::fflush(stdout);
+}
+
+int breaks() {
+  std::printf("rack,balls,us_per_break,events_per_break\n");
+  for (int rows = 2; rows <= 7; ++rows) {
+    std::vector<Scenario> racks;
+    for (std::uint64_t seed = 1; seed <= 64; ++seed) racks.push_back(triangle_break(rows, seed));
+    time_breaks("triangle", rows * (rows + 1) / 2, racks);
+  }
+  // The games' own breaks (make_break_scenario: their racks and tables,
+  // the cue ball at 7.5 m/s as above; snooker's break-off takes the end
+  // of the back row of reds, on the 12 ft table).
+  struct Game {
+    const char* name;
+    const char* size;
+    int balls;
+  };
+  for (const Game& game : {Game{"nine_ball", "9ft", 9}, Game{"eight_ball", "9ft", 15},
+                           Game{"snooker", "12ft", 21}}) {
+    std::vector<Scenario> racks;
+    for (std::uint64_t seed = 1; seed <= 64; ++seed) {
+      racks.push_back(make_break_scenario(game.name, game.size, seed, 7.5));
+    }
+    time_breaks(game.name, game.balls, racks);
   }
   return 0;
 }
