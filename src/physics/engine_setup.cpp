@@ -4,8 +4,8 @@
 // those concepts.
 #include <algorithm>
 #include <bit>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 #include "physics/engine.hpp"

@@ -7,10 +7,10 @@
 #include <bit>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#include <cstdint>
 
 #include "physics/engine.hpp"
 #include "physics/prediction.hpp"
