@@ -56,11 +56,12 @@ namespace breakshot::detail {
   const Sweep& S = sweep_[static_cast<std::size_t>(j)];
   // Debug builds (the sanitizer run of the tests) check the copy.
   [[maybe_unused]] const Trajectory& B = traj_[static_cast<std::size_t>(j)];
-  assert(S.lo.x == B.box_lo.x && S.lo.y == B.box_lo.y && S.hi.x == B.box_hi.x &&
-         S.hi.y == B.box_hi.y && ((S.flags & kInPlay) != 0) == !out_of_play(B.state) &&
+  assert(S.lo == B.box_lo && S.hi == B.box_hi &&
+         S.radius[0] == radius_[static_cast<std::size_t>(j)] &&
+         ((S.flags & kInPlay) != 0) == !out_of_play(B.state) &&
          ((S.flags & kTranslating) != 0) == translating(B.state));
   if (!(S.flags & need)) return;
-  const double sigma = ki.radius + radius_[static_cast<std::size_t>(j)];
+  const double sigma = ki.radius + S.radius[0];
   if (S.lo.x - ki.box_hi.x > sigma || ki.box_lo.x - S.hi.x > sigma ||
       S.lo.y - ki.box_hi.y > sigma || ki.box_lo.y - S.hi.y > sigma) {
     return;  // their paths never come within reach
