@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/large_pages.hpp"
+
 namespace breakshot::detail {
 
 bool CellGrid::build(Vec2 lo, Vec2 hi, std::size_t n, double max_radius) {
@@ -19,7 +21,12 @@ bool CellGrid::build(Vec2 lo, Vec2 hi, std::size_t n, double max_radius) {
   origin_ = lo;
   nx_ = std::max<std::int32_t>(1, static_cast<std::int32_t>(nx));
   ny_ = std::max<std::int32_t>(1, static_cast<std::int32_t>(ny));
-  head_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), -1);
+  const std::size_t cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  reserve_large(head_, cells);
+  reserve_large(next_, n);
+  reserve_large(prev_, n);
+  reserve_large(ball_cell_, n);
+  head_.assign(cells, -1);
   next_.assign(n, -1);
   prev_.assign(n, -1);
   ball_cell_.assign(n, -1);

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "physics/engine.hpp"
+#include "physics/large_pages.hpp"
 
 namespace breakshot::detail {
 
@@ -90,10 +91,14 @@ void Engine::set_up_balls() {
   // Each trajectory as a new engine has it: the new elements are made
   // clear, those that reset kept are cleared below.
   const std::size_t kept = std::min(traj_.size(), n);
+  reserve_large(traj_, n);
+  reserve_large(radius_, n);
+  reserve_large(counter_, n);
   traj_.resize(n);
   radius_.resize(n);
   for (std::size_t i = 0; i < n; ++i) radius_[i] = scenario_.balls[i].radius;
   ideal_ = scenario_.physics.model == Model::ideal;
+  if (!ideal_) reserve_large(sweep_, n);
   sweep_.resize(ideal_ ? 0 : n);
   in_play_bits_ = 0;
   translating_bits_ = 0;
@@ -187,6 +192,7 @@ void Engine::strike_cue() {
 // Every ball's earliest event, and the queue in order.
 void Engine::predict_all() {
   const std::size_t n = scenario_.balls.size();
+  reserve_large(event_, n);
   event_.resize(n);
   queue_.reset(n);
   for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::int32_t>(i));

@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/large_pages.hpp"
+
 namespace breakshot::detail {
 
 void EventQueue::reset(std::size_t n) {
+  reserve_large(next_, n);
   next_.resize(n);
   buckets_ = n >= kBucketBalls && n < kBucketMaxBalls;
   top_ = -1;
@@ -16,6 +19,10 @@ void EventQueue::reset(std::size_t n) {
     pos_.clear();
     // As many buckets as balls: rebuild() sizes them so that a few balls
     // fall in each.
+    reserve_large(head_, n);
+    reserve_large(bucket_of_, n);
+    reserve_large(prev_, n);
+    reserve_large(after_, n);
     head_.assign(n, -1);
     bucket_of_.assign(n, kOverflow);
     prev_.assign(n, -1);
@@ -25,6 +32,8 @@ void EventQueue::reset(std::size_t n) {
     cur_ = 0;
     return;
   }
+  reserve_large(heap_, n);
+  reserve_large(pos_, n);
   heap_.resize(n);
   pos_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
