@@ -398,7 +398,7 @@ function frameFigures(gaps, work) {
   };
 }
 
-test('a break animates at 60 frames a second', async ({ browser, url }) => {
+test('a break animates, its frame times printed', async ({ browser, url }) => {
   const { page, context, problems } = await openPage(browser, url);
   const runs = Number(args.frames ?? 1);
   const gaps = [];
@@ -412,9 +412,10 @@ test('a break animates at 60 frames a second', async ({ browser, url }) => {
   const ms = (x) => x.toFixed(1);
   console.log(`      frames ${f.frames} (${runs} break${runs > 1 ? 's' : ''}): interval median ${ms(f.median)} ms, p95 ${ms(f.p95)}, max ${ms(f.max)}, ` +
     `dropped ${f.dropped}; the page's work per frame median ${ms(f.workMedian)} ms, p95 ${ms(f.workP95)}, max ${ms(f.workMax)}`);
+  // The figures are a measurement (docs/web.md), not a pass mark: they
+  // move with the machine and its load, and tests never assert timings.
+  // What is checked is that the break animated at all, without errors.
   check(f.frames > 60, 'the break animated only ' + f.frames + ' frames');
-  check(f.median < 18, `the median frame interval is ${ms(f.median)} ms: below 60 frames a second`);
-  check(f.workP95 < 8, `the page's work takes ${ms(f.workP95)} ms a frame at the 95th percentile`);
   check(problems.length === 0, problems.join('\n'));
   await context.close();
 });
