@@ -12,9 +12,10 @@
 #   2. compiles bench/shot_workloads.cpp of the working tree twice, with the
 #      same flags, against each build's headers and libraries;
 #   3. checks that both give the same results (a digest of every final
-#      table of every workload, and the events and final tables of 20,000
-#      shots of bench/soak across the models and games): a speed-up that
-#      changes results is not one;
+#      table of every workload and of large gases, which the cell grid
+#      serves, and the events and final tables of 20,000 shots of
+#      bench/soak across the models and games): a speed-up that changes
+#      results is not one;
 #   4. times the workloads (8-ball and 9-ball breaks with racks cycled,
 #      random 15-ball shots cycled; "-rearm": one simulation re-armed for
 #      every shot where the commit has Simulation::reset, else a new one
@@ -41,7 +42,7 @@ while [ $# -gt 0 ]; do
     --seconds) seconds="$2"; shift 2 ;;
     --no-callgrind) callgrind=0; shift ;;
     --workloads) workloads="$2"; shift 2 ;;
-    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "compare.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) [ -z "$old" ] || { echo "compare.sh: one commit only" >&2; exit 2; }; old="$1"; shift ;;
   esac
@@ -104,6 +105,16 @@ for w in $workloads; do
     status=3
   fi
 done
+# Scenes of 48 balls and more, which the cell grid serves (the workloads
+# above are smaller): ideal and friction gases.
+a=$("$bin_old" gas digest | awk '{print $3}')
+b=$("$bin_new" gas digest | awk '{print $3}')
+if [ "$a" = "$b" ]; then
+  echo "gas (cell grid): identical ($a)"
+else
+  echo "gas (cell grid): DIFFER ($short $a, working tree $b)"
+  status=3
+fi
 # The soak's 20,000 shots of every kind (pool layouts, raised cues,
 # breaks, snooker, three-cushion, gases): their events and final tables.
 a=$("$soak_old" --shots 20000 --threads 2 --out "$work/soak-violation-old.json" | grep -E '^(digest|[a-z0-9/ -]+ +[0-9]+ +[0-9]+$)' | md5sum | cut -c1-16) || true

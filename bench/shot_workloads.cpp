@@ -12,11 +12,14 @@
 //   shot_workloads WORKLOAD digest         one pass over the inputs; prints
 //                                          a digest of every final table
 //
-// WORKLOAD: break8, break9, random15, each as a new Simulation per shot;
+// WORKLOAD: break8, break9, random15, gas, each as a new Simulation per shot;
 // with "-rearm" (break8-rearm, ...) one Simulation re-armed for every shot
 // (Simulation::reset), the way play_shots and the AI play them, where the
 // library has it (BREAKSHOT_SIMULATION_RESET), else a new one per shot as
-// before. The digest (FNV-1a over the bits of
+// before. "gas": scenes large enough for the cell grid (from 48 balls):
+// ideal gases of 3000 disks for 30,000 events and gases of 1000 disks of the
+// friction model to rest, four seeds each (compare.sh checks its digest).
+// The digest (FNV-1a over the bits of
 // every ball's final position, velocity, spin and motion state and the event count) is equal
 // for two builds only if they give the same results.
 #include <algorithm>
@@ -28,8 +31,10 @@
 #include <string>
 #include <vector>
 
+#include "breakshot/physics.hpp"
 #include "breakshot/rack.hpp"
 #include "breakshot/simulation.hpp"
+#include "ideal_gas.hpp"
 #include "random_shots.hpp"
 
 namespace {
@@ -54,6 +59,17 @@ std::vector<Scenario> inputs(const std::string& name) {
     }
   } else if (workload == "random15") {
     out = breakshot::bench::random_shots(4096);
+  } else if (workload == "gas") {
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+      Scenario ideal = breakshot::bench::ideal_gas(3000, seed);
+      ideal.max_events = 30000;  // never at rest: stopped by the event limit
+      out.push_back(ideal);
+      Scenario friction = breakshot::bench::ideal_gas(1000, seed + 100);
+      friction.physics = breakshot::default_physics(breakshot::Model::friction);
+      friction.physics.deceleration = 0.5;
+      friction.until.rest = true;
+      out.push_back(friction);
+    }
   }
   return out;
 }
@@ -101,7 +117,7 @@ extern "C" __attribute__((noinline)) std::uint64_t bs_run_shots(const Scenario* 
 int main(int argc, char** argv) {
   if (argc < 3) {
     std::fprintf(stderr,
-                 "usage: shot_workloads break8|break9|random15 time SECONDS|count N|digest\n");
+                 "usage: shot_workloads break8|break9|random15|gas time SECONDS|count N|digest\n");
     return 2;
   }
   const std::string workload = argv[1];
@@ -110,7 +126,7 @@ int main(int argc, char** argv) {
   const std::vector<Scenario> shots = inputs(base_name(workload, &rearm));
   if (shots.empty()) {
     std::fprintf(stderr,
-                 "shot_workloads: unknown workload '%s' (break8, break9, random15, each also "
+                 "shot_workloads: unknown workload '%s' (break8, break9, random15, gas, each also "
                  "with -rearm)\n",
                  workload.c_str());
     return 2;
