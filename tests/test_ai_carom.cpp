@@ -73,9 +73,9 @@ TEST(AiCarom, EveryLevelPlaysALegalShot) {
   }
 }
 
-// The champion makes the set-up shot most of the time under its own
-// noise: 24 decisions with their own seeds, each played with a noise
-// draw of its own.
+// The champion finds the set-up shot every time, and makes it under its
+// own noise: 24 decisions with their own seeds, each played as chosen and
+// with a noise draw of its own.
 TEST(AiCarom, ChampionScoresASetUpShot) {
   AiLevel level = ai_level("champion");
   level.threads = 2;
@@ -83,17 +83,23 @@ TEST(AiCarom, ChampionScoresASetUpShot) {
   const GameState s = setup();
   constexpr int kTries = 24;
   int made = 0;
+  int found = 0;
   for (int k = 0; k < kTries; ++k) {
     const Action a = p->decide(rules(), s, 1000 + static_cast<std::uint64_t>(k));
     ASSERT_TRUE(std::holds_alternative<Shoot>(a));
     Shoot played = std::get<Shoot>(a);
+    if (point(rules().apply(s, Action{played}))) ++found;
     played.strike = perturb(played.strike, level.noise, kCaromBallRadius,
                             mix_seed(77, static_cast<std::uint64_t>(k)));
     if (point(rules().apply(s, Action{played}))) ++made;
   }
-  // 16 of the 24 when written; at least half (most of the time) with room
-  // for small changes of the engine.
-  EXPECT_GE(made, kTries / 2) << made << " of " << kTries;
+  EXPECT_EQ(found, kTries);
+  // Under noise: 16 of the 24 with breakshot 0.1's spin decay (37.8
+  // rad/s^2), 10 with the measured one (10 rad/s^2). Side spin that lasts
+  // makes a three-cushion path more sensitive to the tip's noise, and the
+  // champion's search has not been fitted to it yet (docs/ai.md); at least
+  // a third, with room for small changes of the engine.
+  EXPECT_GE(made, kTries / 3) << made << " of " << kTries;
 }
 
 // Same seed, same decision, for one thread or several.

@@ -214,6 +214,7 @@ TEST(ClusterImpact, TheGamesBreakSpreadsTheRack) {
       s.physics.ball_clusters = clusters;
       s.physics.ball_ball_friction_curve = kThrowFitTPA28;
       s.physics.airborne = false;
+      s.physics.spinning_friction = kLegacySpinningFriction;
       s.table.cushion.model = CushionModel::han_2005_v0;
       s.table.cushion.restitution = default_cushion_restitution(CushionModel::han_2005_v0);
       for (BallSpec& b : s.balls) b.wall_restitution = s.table.cushion.restitution;

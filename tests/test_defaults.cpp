@@ -58,7 +58,7 @@ TEST(Defaults, AreTheDocumentedValues) {
   EXPECT_EQ(ideal.gravity, 9.81);
   EXPECT_EQ(ideal.sliding_friction, 0.2);
   EXPECT_EQ(ideal.rolling_friction, 0.01);
-  EXPECT_EQ(ideal.spinning_friction, 0.044);
+  EXPECT_EQ(ideal.spinning_friction, 0.0117);
   EXPECT_EQ(ideal.deceleration, 0.01 * 9.81);
   EXPECT_EQ(ideal.collapse_speed, 1e-5);
   const PhysicsParams pool = default_physics(Model::pool);

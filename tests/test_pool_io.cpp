@@ -87,7 +87,7 @@ TEST(PoolRead, ModelDefaults) {
   EXPECT_EQ(p.gravity, 9.81);
   EXPECT_EQ(p.sliding_friction, 0.2);
   EXPECT_EQ(p.rolling_friction, 0.01);
-  EXPECT_EQ(p.spinning_friction, 0.044);
+  EXPECT_EQ(p.spinning_friction, 0.0117);  // docs/physics.md, "Spin about the vertical"
   EXPECT_TRUE(s.until.rest);  // "rest" by default
   EXPECT_FALSE(s.cue.has_value());
   EXPECT_EQ(s.balls[0].radius, 0.028575);

@@ -157,6 +157,62 @@ TEST(RecordVersions, LegacyPhysicsKeepsTheSummarysGames) {
 }
 
 // ---------------------------------------------------------------------------
+// Version 2 records written before the spinning friction was recorded
+// (tests/data/records_v2/README.md): played with 0.044, which they do not
+// name.
+
+std::string v2_data_file(const std::string& name) {
+  const std::string path = std::string(BREAKSHOT_SOURCE_DIR) + "/tests/data/records_v2/" + name;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(RecordVersions, RecordsWrittenBeforeTheSpinningFrictionReplayOnIt) {
+  struct File {
+    GameType game;
+    const char* name;
+  };
+  for (const File& f : {File{GameType::nine_ball, "nine_ball_club_seed1_game1.json"},
+                        File{GameType::three_cushion, "three_cushion_club_seed1_game1.json"}}) {
+    const std::string text = v2_data_file(f.name);
+    ASSERT_EQ(text.find("spinning_friction"), std::string::npos) << f.name;
+    const GameRecord r = read_ok(text);
+    EXPECT_EQ(r.config.physics.spinning_friction, kLegacySpinningFriction) << f.name;
+    GamePhysics then;  // the defaults of the time
+    then.spinning_friction = kLegacySpinningFriction;
+    EXPECT_TRUE(r.config.physics == then) << f.name;
+    const ReplayReport rep = replay(r);
+    EXPECT_TRUE(rep.identical) << f.name << ": " << rep.message;
+    EXPECT_GT(r.actions.size(), 4u) << f.name;
+    EXPECT_EQ(write_record(r), text) << f.name;
+
+    // The same game played now on that physics, by name: the same bytes.
+    MatchOptions opt;
+    opt.game = f.game;
+    opt.table_size = r.config.table_size;
+    opt.carom = r.config.carom;
+    opt.physics = then;
+    opt.players = {"club", "club"};
+    opt.seed = 1;
+    opt.noise = parse_noise("tournament");
+    auto p0 = make_player("club");
+    auto p1 = make_player("club");
+    std::vector<std::string> records;
+    (void)play_match(opt, *p0, *p1,
+                     [&](int, const GameRecord& g) { records.push_back(write_record(g)); });
+    ASSERT_EQ(records.size(), 1u);
+    EXPECT_EQ(records[0], text) << f.name;
+
+    // On the measured spinning friction the recorded shots come out
+    // otherwise: the record does depend on what it leaves out.
+    GameRecord now = r;
+    now.config.physics.spinning_friction = kSpinningFriction;
+    EXPECT_FALSE(replay(now).identical) << f.name;
+  }
+}
+
+// ---------------------------------------------------------------------------
 // Version 2
 
 GameRecord small_record() {
@@ -185,7 +241,7 @@ TEST(RecordVersions, Version2RoundTripKeepsTheEngineAndThePhysics) {
   EXPECT_NE(text.find("\n  \"physics\": {\"cushion_model\":\"mathavan_2010\","
                       "\"ball_ball_model\":\"mathavan_2014\","
                       "\"ball_ball_friction\":{\"a\":0.016,\"b\":0.219,\"c\":0.691},"
-                      "\"airborne\":true},\n"),
+                      "\"airborne\":true,\"spinning_friction\":0.0117},\n"),
             std::string::npos)
       << text;
   const GameRecord back = read_ok(text);
@@ -199,10 +255,29 @@ TEST(RecordVersions, Version2RoundTripKeepsTheEngineAndThePhysics) {
   r.config.physics.ball_ball_friction_curve = FrictionCurve{};
   r.config.physics.ball_ball_friction = 0.06;
   const std::string constant = write_record(r);
-  EXPECT_NE(constant.find("\"ball_ball_friction\":0.06,\"airborne\":true}"), std::string::npos)
+  EXPECT_NE(constant.find("\"ball_ball_friction\":0.06,\"airborne\":true,"), std::string::npos)
       << constant;
   EXPECT_TRUE(read_ok(constant) == r);
   EXPECT_EQ(write_record(read_ok(constant)), constant);
+
+  // The spinning friction: written unless it is breakshot 0.1's 0.044, and
+  // read as 0.044 when absent (the records written before it was recorded).
+  r.config.physics.spinning_friction = kLegacySpinningFriction;
+  const std::string old_spin = write_record(r);
+  EXPECT_EQ(old_spin.find("spinning_friction"), std::string::npos) << old_spin;
+  EXPECT_TRUE(read_ok(old_spin) == r);
+  r.config.physics.spinning_friction = 0.02;
+  EXPECT_TRUE(read_ok(write_record(r)) == r);
+  for (const char* bad : {"0", "-0.01", "\"fast\""}) {
+    std::string text_bad = write_record(r);
+    const std::size_t at = text_bad.find("\"spinning_friction\":0.02");
+    ASSERT_NE(at, std::string::npos);
+    text_bad.replace(at, 24, std::string("\"spinning_friction\":") + bad);
+    const auto parsed = read_record(text_bad);
+    ASSERT_TRUE(std::holds_alternative<RecordError>(parsed)) << bad;
+    EXPECT_EQ(std::get<RecordError>(parsed).path, "physics.spinning_friction") << bad;
+  }
+  r.config.physics.spinning_friction = kSpinningFriction;
 
   // The engine takes part in equality: a record says who made it.
   GameRecord other = r;
@@ -403,8 +478,13 @@ TEST(RecordVersions, SummaryShowsThePhysicsOnlyWhenNotTheDefault) {
   ojson doc = ojson::parse(text);
   doc["physics"] = ojson::parse(
       "{\"cushion_model\":\"han_2005\",\"ball_ball_model\":\"friction\","
-      "\"ball_ball_friction\":{\"a\":0.016,\"b\":0.219,\"c\":0.691},\"airborne\":true}");
+      "\"ball_ball_friction\":{\"a\":0.016,\"b\":0.219,\"c\":0.691},\"airborne\":true,"
+      "\"spinning_friction\":0.0117}");
   EXPECT_THROW((void)read_match_summary(doc.dump(2)), std::invalid_argument);
+  // Without "spinning_friction" it is the legacy one's, not the default.
+  doc["physics"].erase("spinning_friction");
+  const MatchSummary old_spin = read_match_summary(doc.dump(2));
+  EXPECT_EQ(old_spin.physics.spinning_friction, kLegacySpinningFriction);
 }
 
 }  // namespace

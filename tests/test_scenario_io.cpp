@@ -121,7 +121,7 @@ TEST(ScenarioRead, Defaults) {
   EXPECT_EQ(p.gravity, 9.81);
   EXPECT_EQ(p.sliding_friction, 0.2);
   EXPECT_EQ(p.rolling_friction, 0.01);
-  EXPECT_EQ(p.spinning_friction, 0.044);
+  EXPECT_EQ(p.spinning_friction, 0.0117);  // docs/physics.md, "Spin about the vertical"
   EXPECT_EQ(p.deceleration, 0.01 * 9.81);
   EXPECT_EQ(p.collapse_speed, 1e-5);
   EXPECT_EQ(s.balls[1].radius, 0.028575);

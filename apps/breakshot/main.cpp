@@ -8,6 +8,7 @@
 //                   [--target N] [--innings-limit N] [--equalizing-inning on|off] (three-cushion)
 //                   [--first-game N] [--jobs N] [--cushion-model NAME] [--ball-ball-model NAME]
 //                   [--ball-ball-friction tpa28|tpb3|A,B,C|MU] [--airborne on|off]
+//                   [--spinning-friction measured|legacy|MU]
 //   breakshot match-sum SUMMARY...
 //     (--noise is the noise of players without one of their own; AI levels
 //     shoot with their level's noise)
@@ -209,6 +210,7 @@ struct MatchArgs {
   std::string ball_ball_model;     // empty: the default
   std::string ball_ball_friction;  // empty: the default
   std::string airborne;            // "on", "off"; empty: the default
+  std::string spinning_friction;   // "measured", "legacy" or a number; empty: the default
   std::string target;              // three-cushion; empty: the default
   std::string innings_limit;       // three-cushion; empty: the default
   std::string equalizing_inning;   // three-cushion: "on", "off"; empty: the default
@@ -294,6 +296,18 @@ bs::GamePhysics match_physics(const MatchArgs& a) {
     p.airborne = a.airborne == "on";
   } else if (!a.airborne.empty()) {
     throw BadArgument{"--airborne: expected on or off, not '" + a.airborne + "'"};
+  }
+  if (a.spinning_friction == "measured") {
+    p.spinning_friction = bs::kSpinningFriction;
+  } else if (a.spinning_friction == "legacy") {
+    p.spinning_friction = bs::kLegacySpinningFriction;
+  } else if (!a.spinning_friction.empty()) {
+    double mu = 0.0;
+    if (!parse_whole(a.spinning_friction, mu) || !std::isfinite(mu) || !(mu > 0.0)) {
+      throw BadArgument{"--spinning-friction: expected measured, legacy or a number > 0, not '" +
+                        a.spinning_friction + "'"};
+    }
+    p.spinning_friction = mu;
   }
   return p;
 }
@@ -640,6 +654,11 @@ int main(int argc, char** argv) {
                     "on (default): balls may leave the cloth (jumps, hops, balls off the "
                     "table); off: they stay on it, as in the legacy physics")
       ->type_name("on|off");
+  match->add_option("--spinning-friction", match_args.spinning_friction,
+                    "Spinning friction mu_sp (side spin decays at 5 mu_sp g / 2R): measured "
+                    "(default, 0.0117: 10 rad/s^2 on a pool ball), legacy (0.044, FastFiz's, "
+                    "as in the legacy physics) or a number > 0")
+      ->type_name("SPEC");
   match->add_flag("--timing", match_args.timing,
                   "Add each player's decision times (median, p90, max seconds) to the summary; "
                   "they vary from run to run");
@@ -659,8 +678,10 @@ int main(int argc, char** argv) {
       "'breakshot match-sum' adds the chunks' summaries into the match's.\n"
       "\n"
       "The physics options choose the pool model's laws (the scenario fields\n"
-      "table.cushion_model, physics.ball_ball_model and physics.ball_ball_friction,\n"
-      "docs/scenario.md). Records always carry the physics; the summary shows it\n"
+      "table.cushion_model, physics.ball_ball_model, physics.ball_ball_friction,\n"
+      "physics.airborne and physics.spinning_friction, docs/scenario.md). The legacy\n"
+      "physics: --cushion-model han_2005_v0 --ball-ball-friction tpa28 --airborne off\n"
+      "--spinning-friction legacy. Records always carry the physics; the summary shows it\n"
       "(\"physics\") only when it is not the default.");
 
   std::vector<std::string> sum_files;

@@ -68,17 +68,22 @@ struct GamePhysics {
   /// Balls may leave the cloth (`physics.airborne`): jump shots, hops,
   /// balls off the table.
   bool airborne = true;
+  /// The spinning friction (`physics.spinning_friction`): side spin
+  /// decays at 5 mu_sp g / (2R) (kSpinningFriction, measured).
+  double spinning_friction = kSpinningFriction;
   bool operator==(const GamePhysics&) const = default;
 };
 
 /// The physics of breakshot 0.1's games, by its names: "han_2005_v0"
 /// cushions, "friction" ball-ball impacts with Alciatore's TP A-28
-/// friction curve (kThrowFitTPA28), balls that stay on the cloth. Version
+/// friction curve (kThrowFitTPA28), balls that stay on the cloth, FastFiz's
+/// spinning friction (kLegacySpinningFriction). Version
 /// 1 game records and
 /// "v1." share links were played with it, and replay on it. Spelled out
 /// field by field: it stays this physics when GamePhysics's defaults move.
 inline constexpr GamePhysics kLegacyGamePhysics{CushionModel::han_2005_v0, BallBallModel::friction,
-                                                true, kThrowFitTPA28, 0.0, false};
+                                                true, kThrowFitTPA28, 0.0, false,
+                                                kLegacySpinningFriction};
 
 /// Why `physics` cannot be played (a friction curve that is no curve, a
 /// negative or non-finite constant friction), naming the field; nullopt

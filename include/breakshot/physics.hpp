@@ -66,6 +66,20 @@ inline constexpr FrictionCurve kThrowFitTPA28{0.009951, 0.108, 1.088};
 /// default: the measured table wins over the clean-ball theory.
 inline constexpr FrictionCurve kThrowFitTPB3{0.016, 0.219, 0.691};
 
+/// The default spinning friction mu_sp: a pool ball's spin about the
+/// vertical then decays at 5 mu_sp g / (2R) = 10.0 rad/s^2, the middle of
+/// the measured 5-15 rad/s^2 of Alciatore's "pool physics property
+/// constants" (docs/physics.md, "Spin about the vertical"). One
+/// coefficient for every ball: a snooker ball's spin decays at 10.9
+/// rad/s^2, a carom ball's at 9.3.
+inline constexpr double kSpinningFriction = 0.0117;
+
+/// breakshot 0.1's spinning friction (FastFiz's figure): 37.7 rad/s^2 for
+/// a pool ball, three times the measured. Part of the legacy physics
+/// (kLegacyGamePhysics); a game record or link without a
+/// "spinning_friction" was played with it.
+inline constexpr double kLegacySpinningFriction = 0.044;
+
 /// Every physics parameter, with the defaults documented in
 /// docs/scenario.md. Units are SI.
 struct PhysicsParams {
@@ -90,7 +104,9 @@ struct PhysicsParams {
   double deceleration = 0.0981;
   double sliding_friction = 0.2;
   double rolling_friction = 0.01;
-  double spinning_friction = 0.044;
+  /// mu_sp: spin about the vertical decays at 5 mu_sp g / (2R) in every
+  /// state (kSpinningFriction, from the measured spin deceleration).
+  double spinning_friction = kSpinningFriction;
   /// Closing speed (m/s) below which a ball-ball collision is treated as
   /// elastic, and the separating speed a pair in pushing contact leaves
   /// with. This is the rule that keeps inelastic clusters from

@@ -562,7 +562,9 @@ def _physics_args(args) -> Optional[dict]:
     """The physics options of `match` as breakshot.physics_of's dict (None
     when none is given)."""
     airborne = getattr(args, "airborne", None)
-    if not (args.cushion_model or args.ball_ball_model or args.ball_ball_friction or airborne):
+    spin = getattr(args, "spinning_friction", None)
+    if not (args.cushion_model or args.ball_ball_model or args.ball_ball_friction or airborne
+            or spin):
         return None
     from .game import physics_of
 
@@ -583,8 +585,18 @@ def _physics_args(args) -> Optional[dict]:
                              f"not {friction!r}")
     if airborne not in (None, "on", "off"):
         raise ValueError(f"--airborne: expected on or off, not {airborne!r}")
+    spinning: Any = spin or "measured"
+    if spinning not in ("measured", "legacy"):
+        try:
+            spinning = float(spinning)
+        except ValueError:
+            raise ValueError(f"--spinning-friction: expected measured, legacy or a number > 0, "
+                             f"not {spin!r}") from None
+        if not spinning > 0 or spinning == float("inf"):
+            raise ValueError(f"--spinning-friction: expected measured, legacy or a number > 0, "
+                             f"not {spin!r}")
     return physics_of(args.cushion_model or "han_2005", args.ball_ball_model or "friction",
-                      friction, airborne != "off")
+                      friction, airborne != "off", spinning)
 
 
 def _client_for(args):
@@ -632,6 +644,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     m.add_argument("--ball-ball-friction",
                    help="as breakshot match --ball-ball-friction: tpb3, tpa28, A,B,C or MU")
     m.add_argument("--airborne", help="as breakshot match --airborne: on (default) or off")
+    m.add_argument("--spinning-friction",
+                   help="as breakshot match --spinning-friction: measured (default), legacy or MU")
     common(m)
 
     lad = sub.add_parser("ladder", help="every adjacent pair of levels")

@@ -460,7 +460,8 @@ class Game:
     the legacy law, ``"mathavan_2010"`` or ``"impulse_frictional"``),
     ``"ball_ball_model"`` (``"friction"`` or ``"mathavan_2014"``),
     ``"ball_ball_friction"`` (a number, or a curve ``{"a": .., "b": ..,
-    "c": ..}``) and ``"airborne"`` (true by default); see :func:`physics_of`.
+    "c": ..}``), ``"airborne"`` (true by default) and ``"spinning_friction"``
+    (0.0117 by default, the legacy 0.044); see :func:`physics_of`.
 
     Game g of ``breakshot match --seed S`` is ``Game(game, seed=mix_seed(S,
     g), breaker=g % 2, players=(p0, p1), noise=...)`` with
@@ -536,9 +537,12 @@ class Game:
     def physics(self) -> dict:
         """The physics the game is played with: cushion_model,
         ball_ball_model, ball_ball_friction (a number or {"a", "b", "c"})
-        and airborne (a bool; a record writes it only when true)."""
+        airborne (a bool; a record writes it only when true) and
+        spinning_friction (a record writes it only when it is not the legacy
+        0.044)."""
         p = json.loads(self._g.physics_json())
         p.setdefault("airborne", False)
+        p.setdefault("spinning_friction", 0.044)
         return p
 
     @property
@@ -790,13 +794,17 @@ def _physics(physics: Optional[dict]) -> Optional[str]:
 
 def physics_of(cushion_model: str = "han_2005", ball_ball_model: str = "friction",
                ball_ball_friction: Union[float, dict, str] = "tpb3",
-               airborne: bool = True) -> dict:
+               airborne: bool = True,
+               spinning_friction: Union[float, str] = "measured") -> dict:
     """A physics dict for Game, match and match_json. ``ball_ball_friction``
     may also be ``"tpb3"`` (Alciatore's refit to the measured throw, TP
     B-3, the default) or ``"tpa28"`` (his TP A-28 curve), as ``breakshot
-    match --ball-ball-friction`` takes them. The defaults are the engine's;
-    ``physics_of("han_2005_v0", "friction", "tpa28", airborne=False)`` is
-    breakshot 0.1's legacy physics."""
+    match --ball-ball-friction`` takes them; ``spinning_friction``
+    ``"measured"`` (0.0117, the default: side spin decays at 10 rad/s^2 on
+    a pool ball) or ``"legacy"`` (0.044), as ``--spinning-friction`` takes
+    them, or a number > 0. The defaults are the engine's;
+    ``physics_of("han_2005_v0", "friction", "tpa28", airborne=False,
+    spinning_friction="legacy")`` is breakshot 0.1's legacy physics."""
     curves = {"tpa28": {"a": 0.009951, "b": 0.108, "c": 1.088},
               "tpb3": {"a": 0.016, "b": 0.219, "c": 0.691}}
     if isinstance(ball_ball_friction, str):
@@ -804,8 +812,15 @@ def physics_of(cushion_model: str = "han_2005", ball_ball_model: str = "friction
             raise ValueError(f"ball_ball_friction: expected tpa28, tpb3, a number or "
                              f"{{'a', 'b', 'c'}}, not {ball_ball_friction!r}")
         ball_ball_friction = dict(curves[ball_ball_friction])
+    spins = {"measured": 0.0117, "legacy": 0.044}
+    if isinstance(spinning_friction, str):
+        if spinning_friction not in spins:
+            raise ValueError(f"spinning_friction: expected measured, legacy or a number > 0, "
+                             f"not {spinning_friction!r}")
+        spinning_friction = spins[spinning_friction]
     return {"cushion_model": cushion_model, "ball_ball_model": ball_ball_model,
-            "ball_ball_friction": ball_ball_friction, "airborne": bool(airborne)}
+            "ball_ball_friction": ball_ball_friction, "airborne": bool(airborne),
+            "spinning_friction": spinning_friction}
 
 
 def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
@@ -824,8 +839,9 @@ def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
     games - 1 of the match, each exactly as one match from game 0 plays it;
     such a chunk's summary says ``"first_game"`` and chunks add up
     (``breakshot match-sum``). ``physics`` (a dict, see :class:`Game` and
-    :func:`physics_of`) is ``--cushion-model``, ``--ball-ball-model`` and
-    ``--ball-ball-friction``; the summary shows it only when it is not the
+    :func:`physics_of`) is ``--cushion-model``, ``--ball-ball-model``,
+    ``--ball-ball-friction``, ``--airborne`` and ``--spinning-friction``;
+    the summary shows it only when it is not the
     default."""
     if table is None:
         table = _default_table(game)

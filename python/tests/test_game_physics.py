@@ -20,23 +20,26 @@ def test_default_physics_is_the_engines_and_not_in_the_summary(run_cli):
     assert g.physics == bs.physics_of()
     assert g.physics == {"cushion_model": "han_2005", "ball_ball_model": "friction",
                          "ball_ball_friction": {"a": 0.016, "b": 0.219, "c": 0.691},
-                         "airborne": True}
+                         "airborne": True, "spinning_friction": 0.0117}
     text = bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament")
     assert "physics" not in text
     # The default physics by its names: the same bytes.
     assert bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament",
                          physics=bs.physics_of()) == text
     # The legacy physics is named, and it equals the command's.
-    legacy = bs.physics_of("han_2005_v0", "friction", "tpa28", airborne=False)
+    legacy = bs.physics_of("han_2005_v0", "friction", "tpa28", airborne=False,
+                           spinning_friction="legacy")
     old = bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament",
                         physics=legacy)
-    # A summary, as a record, writes "airborne" only when true.
-    assert legacy["airborne"] is False
-    assert json.loads(old)["physics"] == {k: v for k, v in legacy.items() if k != "airborne"}
+    # A summary, as a record, writes "airborne" only when true and
+    # "spinning_friction" only when it is not the legacy 0.044.
+    assert legacy["airborne"] is False and legacy["spinning_friction"] == 0.044
+    assert json.loads(old)["physics"] == {k: v for k, v in legacy.items()
+                                          if k not in ("airborne", "spinning_friction")}
     cli = run_cli("match", "--game", "nine_ball", "--players", "baseline,baseline",
                   "--games", "1", "--seed", "3", "--noise", "tournament",
                   "--cushion-model", "han_2005_v0", "--ball-ball-friction", "tpa28",
-                  "--airborne", "off", check=True)
+                  "--airborne", "off", "--spinning-friction", "legacy", check=True)
     assert old == cli.stdout
 
 
@@ -65,7 +68,8 @@ def test_game_with_other_physics_records_it():
                                                "ball_ball_model": "mathavan_2014",
                                                "ball_ball_friction": 0.06})
     assert g.physics == {"cushion_model": "han_2005", "ball_ball_model": "mathavan_2014",
-                         "ball_ball_friction": 0.06, "airborne": True}
+                         "ball_ball_friction": 0.06, "airborne": True,
+                         "spinning_friction": 0.0117}
     # Fields left out keep their defaults.
     h = bs.Game("eight_ball", seed=5, physics={"cushion_model": "mathavan_2010"})
     assert h.physics["ball_ball_model"] == "friction"
@@ -78,6 +82,8 @@ def test_game_with_other_physics_records_it():
     ({"ball_ball_friction": {"a": 0.5, "b": 0.9, "c": 1}}, "physics.ball_ball_friction.b"),
     ({"ball_ball_friction": -1}, "physics.ball_ball_friction"),
     ({"jump": True}, "physics.jump: unknown field"),
+    ({"spinning_friction": 0}, "physics.spinning_friction: must be > 0"),
+    ({"spinning_friction": "fast"}, "physics.spinning_friction"),
     ("mathavan_2010", "physics: expected a dict"),
 ])
 def test_bad_physics_is_a_value_error_naming_the_field(physics, message):
@@ -92,3 +98,22 @@ def test_physics_of_names_the_curves():
         {"a": 0.016, "b": 0.219, "c": 0.691}
     with pytest.raises(ValueError, match="ball_ball_friction"):
         bs.physics_of(ball_ball_friction="tpb4")
+
+
+def test_physics_of_names_the_spinning_friction_and_the_game_plays_it(run_cli):
+    assert bs.physics_of()["spinning_friction"] == 0.0117
+    assert bs.physics_of(spinning_friction="legacy")["spinning_friction"] == 0.044
+    with pytest.raises(ValueError, match="spinning_friction"):
+        bs.physics_of(spinning_friction="slow")
+    # A game on the legacy spinning friction: its physics says so, its
+    # summary equals the command's, and it differs from the measured one's.
+    g = bs.Game("nine_ball", seed=4, physics={"spinning_friction": 0.044})
+    assert g.physics["spinning_friction"] == 0.044
+    text = bs.match_json("nine_ball", ["baseline", "baseline"], seed=4, noise="tournament",
+                         physics=bs.physics_of(spinning_friction="legacy"))
+    cli = run_cli("match", "--game", "nine_ball", "--players", "baseline,baseline",
+                  "--games", "1", "--seed", "4", "--noise", "tournament",
+                  "--spinning-friction", "legacy", check=True)
+    assert text == cli.stdout
+    assert json.loads(text)["physics"] == {k: v for k, v in bs.physics_of().items()
+                                           if k != "spinning_friction"}

@@ -20,7 +20,8 @@ bool identical(const GamePhysics& a, const GamePhysics& b) {
   return a.cushion_model == b.cushion_model && a.ball_ball_model == b.ball_ball_model &&
          a.ball_ball_friction_fit == b.ball_ball_friction_fit && same_bits(ka.a, kb.a) &&
          same_bits(ka.b, kb.b) && same_bits(ka.c, kb.c) &&
-         same_bits(a.ball_ball_friction, b.ball_ball_friction) && a.airborne == b.airborne;
+         same_bits(a.ball_ball_friction, b.ball_ball_friction) && a.airborne == b.airborne &&
+         same_bits(a.spinning_friction, b.spinning_friction);
 }
 
 bool identical(const GameConfig& a, const GameConfig& b) {

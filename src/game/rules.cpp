@@ -146,6 +146,10 @@ std::optional<std::string> check_game_physics(const GamePhysics& p) {
   } else if (!std::isfinite(p.ball_ball_friction) || p.ball_ball_friction < 0.0) {
     return "physics.ball_ball_friction: must be a finite number >= 0";
   }
+  // Zero would leave a spinning ball spinning for ever: no shot would end.
+  if (!std::isfinite(p.spinning_friction) || !(p.spinning_friction > 0.0)) {
+    return "physics.spinning_friction: must be a finite number > 0";
+  }
   return std::nullopt;
 }
 
@@ -188,6 +192,7 @@ Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_rule
   base_.physics.ball_ball_friction_curve = gp.ball_ball_friction_curve;
   base_.physics.airborne = gp.airborne;
   base_.physics.ball_ball_friction = gp.ball_ball_friction;
+  base_.physics.spinning_friction = gp.spinning_friction;
   // The cushion law as a scenario's table.cushion_model sets it:
   // mathavan_2010 with Mathavan et al.'s own restitution and contact
   // height (the restitution is each ball's wall_restitution).

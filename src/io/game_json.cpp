@@ -6,6 +6,7 @@
 #include <string_view>
 #include <utility>
 #include <variant>
+#include <vector>
 
 namespace breakshot::json_io {
 
@@ -111,6 +112,12 @@ ojson physics_json(const GamePhysics& p) {
   // Written only when on, so that records of games on the cloth keep
   // their bytes; absent reads as false.
   if (p.airborne) j["airborne"] = true;
+  // Written only when it is not breakshot 0.1's, so that records of the
+  // physics before it was recorded keep their bytes; absent reads as
+  // kLegacySpinningFriction.
+  if (p.spinning_friction != kLegacySpinningFriction) {
+    j["spinning_friction"] = p.spinning_friction;
+  }
   return j;
 }
 
@@ -311,16 +318,27 @@ bool GameReader::config(const json& v, const std::string& path, GameConfig& c) {
 }
 
 bool GameReader::physics(const json& v, const std::string& path, GamePhysics& p) {
+  // "airborne" and "spinning_friction" are optional: written only when
+  // they differ from breakshot 0.1's physics, and messages about a
+  // physics without them keep their list of keys.
+  std::vector<std::string_view> keys{"cushion_model", "ball_ball_model", "ball_ball_friction"};
   const bool has_airborne = v.is_object() && v.contains("airborne");
-  if (has_airborne ? !exact_object(v, path, {"cushion_model", "ball_ball_model", "ball_ball_friction",
-                                             "airborne"})
-                   : !exact_object(v, path, {"cushion_model", "ball_ball_model", "ball_ball_friction"})) {
-    return false;
-  }
+  const bool has_spin = v.is_object() && v.contains("spinning_friction");
+  if (has_airborne) keys.emplace_back("airborne");
+  if (has_spin) keys.emplace_back("spinning_friction");
+  if (!exact_object(v, path, keys)) return false;
   p.airborne = false;
   if (has_airborne) {
     if (!v["airborne"].is_boolean()) return fail(member_path(path, "airborne"), "expected true or false");
     p.airborne = v["airborne"].get<bool>();
+  }
+  p.spinning_friction = kLegacySpinningFriction;
+  if (has_spin) {
+    const std::string sp = member_path(path, "spinning_friction");
+    if (!number(v["spinning_friction"], sp, p.spinning_friction)) return false;
+    if (!(p.spinning_friction > 0.0)) {
+      return fail(sp, "must be > 0 (a ball's spin would never stop)");
+    }
   }
   const auto at = [&](std::string_view key) { return member_path(path, key); };
   std::string name;

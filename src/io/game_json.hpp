@@ -7,7 +7,9 @@
 //                "equalizing_inning"}}
 //               (its physics is an object of its own, GamePhysics)
 //   GamePhysics {"cushion_model", "ball_ball_model",
-//                "ball_ball_friction": {"a", "b", "c"} | number}
+//                "ball_ball_friction": {"a", "b", "c"} | number,
+//                "airborne": true (only when on),
+//                "spinning_friction" (only when not 0.044; absent: 0.044)}
 //   NoiseModel  {"phi", "theta", "speed", "a", "b"} (noise.hpp's units)
 //   CueStrike   {"speed", "phi", "theta", "a", "b"}
 //   GameState   {"game", "phase", "player", "breaker", "ball_in_hand", "kitchen_shot",

@@ -11,7 +11,8 @@
 //                three-cushion only: "carom": {"target", "innings_limit",
 //                "equalizing_inning"}},
 //     "physics": {"cushion_model", "ball_ball_model",
-//                 "ball_ball_friction": {"a", "b", "c"} | number},
+//                 "ball_ball_friction": {"a", "b", "c"} | number,
+//                 "airborne": true, "spinning_friction": number},
 //     "players": [NAME, NAME],
 //     "seed": "DECIMAL",
 //     "noise": [NOISE, NOISE],
@@ -25,7 +26,9 @@
 //   "engine" is the library version that played the game (version.hpp)
 //   and "physics" the game's physics choices (GameConfig::physics, by the
 //   scenario names of table.cushion_model, physics.ball_ball_model and
-//   physics.ball_ball_friction). Version 1 records have neither: they were
+//   physics.ball_ball_friction; "airborne" only when on, "spinning_friction"
+//   only when it is not breakshot 0.1's 0.044, which a record without it
+//   was played with). Version 1 records have neither: they were
 //   all written by breakshot 0.1.0 and are read as played with
 //   kLegacyGamePhysics, on which they replay. A physics name or field this
 //   build does not know is refused with the record's version and engine in
