@@ -3,8 +3,9 @@
 // impulse law with the slate's reaction), mathavan_2010 (Mathavan,
 // Jackson and Parkin, "A theoretical analysis of billiard ball dynamics
 // under cushion impacts", Proc. IMechE C 224 (2010) 1863-1873; "Mathavan
-// 2010" below) and impulse_frictional (one frictional impulse with the
-// slate's reaction). Equations: src/physics/cushion.cpp.
+// 2010" below), impulse_frictional (one frictional impulse with the
+// slate's reaction) and stronge_compliant (its own tests:
+// tests/test_cushion_stronge.cpp). Equations: src/physics/cushion.cpp.
 //
 // About Mathavan 2010's figures: their curves (Figs 8-11) exist only as
 // images, which could not be retrieved here, so no digitized point is
@@ -44,7 +45,8 @@ constexpr double kPaperR = 0.02625;  // Mathavan 2010's snooker ball
 constexpr double kPaperM = 0.1406;
 
 constexpr CushionModel kModels[] = {CushionModel::han_2005_v0, CushionModel::han_2005,
-                                    CushionModel::mathavan_2010, CushionModel::impulse_frictional};
+                                    CushionModel::mathavan_2010, CushionModel::impulse_frictional,
+                                    CushionModel::stronge_compliant};
 
 /// Mathavan 2010's constants: e = 0.98, mu_w = 0.14, mu_s = 0.212,
 /// h = 7R/5.

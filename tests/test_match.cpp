@@ -671,12 +671,12 @@ TEST_F(MatchCli, RecordOfAnUnknownPhysicsExitsTwoNamingItsVersion) {
   ASSERT_EQ(play_one().status, 0);
   ojson doc = ojson::parse(slurp(dir_ / "records" / "game-0001.json"));
   doc["engine"]["version"] = "9.0.0";
-  doc["physics"]["cushion_model"] = "stronge_compliant";
+  doc["physics"]["cushion_model"] = "cushion_law_of_2099";
   std::ofstream(dir_ / "future.json", std::ios::binary) << doc.dump();
   const Run r = run("replay " + quote((dir_ / "future.json").string()));
   EXPECT_EQ(r.status, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("invalid record: physics.cushion_model: unknown cushion model "
-                       "\"stronge_compliant\""),
+                       "\"cushion_law_of_2099\""),
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("version 2 record made by breakshot 9.0.0, a newer version"),

@@ -349,7 +349,8 @@ TEST(PoolRead, CushionModel) {
   EXPECT_EQ(d.table.cushion.model, bs::CushionModel::han_2005);
   EXPECT_EQ(d.table.cushion.restitution, 0.84);
   EXPECT_EQ(d.table.cushion.height, 0.0);
-  for (const char* name : {"han_2005_v0", "han_2005", "mathavan_2010", "impulse_frictional"}) {
+  for (const char* name :
+       {"han_2005_v0", "han_2005", "mathavan_2010", "impulse_frictional", "stronge_compliant"}) {
     json doc = pool_base();
     doc["table"]["cushion_model"] = name;
     const bs::Scenario s = read_ok(doc);
@@ -372,7 +373,7 @@ TEST(PoolRead, CushionModel) {
   doc["table"]["cushion_model"] = "han";
   expect_invalid(doc, "table.cushion_model",
                  "unknown cushion model \"han\" (expected \"han_2005_v0\", \"han_2005\", "
-                 "\"mathavan_2010\" or \"impulse_frictional\")");
+                 "\"mathavan_2010\", \"impulse_frictional\" or \"stronge_compliant\")");
   doc["table"]["cushion_model"] = 2005;
   expect_invalid(doc, "table.cushion_model", "expected a string");
 }

@@ -299,10 +299,10 @@ TEST(RecordVersions, UnreplayableRecordsAreRefusedWithTheirVersion) {
       {"cushion model of a newer engine",
        [](ojson& j) {
          j["engine"]["version"] = "0.3.0";
-         j["physics"]["cushion_model"] = "stronge_compliant";
+         j["physics"]["cushion_model"] = "cushion_law_of_2099";
        },
        "physics.cushion_model",
-       {"unknown cushion model \"stronge_compliant\"", "version 2 record",
+       {"unknown cushion model \"cushion_law_of_2099\"", "version 2 record",
         "made by breakshot 0.3.0, a newer version", "this breakshot (" + std::string(kVersion) + ")"}},
       {"unknown cushion model", [](ojson& j) { j["physics"]["cushion_model"] = "han_2006"; },
        "physics.cushion_model",

@@ -351,10 +351,10 @@ TEST(WebApi, LinksSayTheEngineAndThePhysicsAndV1LinksReadAsLegacy) {
   // Physics this build does not have: refused, naming the link's engine.
   json future = other;
   future["e"] = "0.3.0";
-  future["ph"]["cushion_model"] = "stronge_compliant";
+  future["ph"]["cushion_model"] = "cushion_law_of_2099";
   EXPECT_EQ(bs_game_from_link(link_of_body(future.dump(), "v2.").c_str()), nullptr);
   const std::string err = error_of(bs_last_error());
-  EXPECT_TRUE(starts_with(err, "link.ph.cushion_model: unknown cushion model \"stronge_compliant\""))
+  EXPECT_TRUE(starts_with(err, "link.ph.cushion_model: unknown cushion model \"cushion_law_of_2099\""))
       << err;
   EXPECT_NE(err.find("made by breakshot 0.3.0"), std::string::npos) << err;
   // A link format of a later version is named.

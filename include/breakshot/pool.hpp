@@ -143,12 +143,20 @@ enum class CushionModel : std::uint8_t {
   /// Coulomb friction capped by the impulse that stops the slip, and the
   /// friction never doing positive work.
   impulse_frictional,
+  /// "stronge_compliant": Stronge's compliant contact at the nose, the
+  /// slate holding the ball on the cloth: a normal spring that unloads
+  /// stiffer than it loads (energetic restitution e) and a tangential
+  /// spring in series with a Coulomb slider (stiffness ratio
+  /// CushionParams::compliance_ratio), followed through the impact in time
+  /// steps. The tangential spring lets the slip reverse.
+  stronge_compliant,
 };
 
 /// Every cushion model, in the order messages and help texts list them.
 inline constexpr CushionModel kCushionModels[] = {CushionModel::han_2005_v0, CushionModel::han_2005,
                                                   CushionModel::mathavan_2010,
-                                                  CushionModel::impulse_frictional};
+                                                  CushionModel::impulse_frictional,
+                                                  CushionModel::stronge_compliant};
 
 /// Whether m is one of kCushionModels (an enum can hold other values).
 constexpr bool is_cushion_model(CushionModel m) {
@@ -164,12 +172,29 @@ std::string_view cushion_model_name(CushionModel m);
 /// The model of a scenario name; false for an unknown name.
 bool parse_cushion_model(std::string_view name, CushionModel& out);
 
+/// pooltool's default ball-cushion restitution (BallParams.e_c = 0.85),
+/// the default restitution of the stronge_compliant model.
+inline constexpr double kStrongeRestitution = 0.85;
+/// The default ratio eta^2 of the nose's tangential to its normal
+/// compliance (normal over tangential stiffness) for stronge_compliant:
+/// pooltool's default frequency ratio omega_t / omega_n = 1.8 for a sphere
+/// on a half-space, whose tangential-to-normal inverse-mass ratio is 7/2,
+/// so eta^2 = (7/2) / 1.8^2 = 1.0802 (Poisson's ratio 0.14 by
+/// eta^2 = (2 - nu) / (2 (1 - nu))).
+inline constexpr double kStrongeComplianceRatio = 3.5 / (1.8 * 1.8);
+/// The range of CushionParams::compliance_ratio a scenario may give: the
+/// law's time step resolves tangential frequencies up to sqrt(350) times
+/// the normal one (docs/physics.md, "Cushions").
+inline constexpr double kMinComplianceRatio = 0.01;
+inline constexpr double kMaxComplianceRatio = 100.0;
+
 /// Each cushion law's default restitution (`table.cushion_restitution`
 /// when not given; docs/physics.md, "Cushions"): han_2005_v0 keeps
 /// breakshot 0.1's 0.75; han_2005's 0.84 and impulse_frictional's 0.914
 /// make a rolling ball driven straight in come back at 0.914 of its
 /// speed, as Mathavan et al. 2010's model does with its own fitted
-/// constants; mathavan_2010 takes those constants, e = 0.98.
+/// constants; mathavan_2010 takes those constants, e = 0.98;
+/// stronge_compliant takes pooltool's default cushion restitution, 0.85.
 constexpr double default_cushion_restitution(CushionModel m) {
   switch (m) {
     case CushionModel::han_2005_v0:
@@ -180,6 +205,8 @@ constexpr double default_cushion_restitution(CushionModel m) {
       return 0.98;
     case CushionModel::impulse_frictional:
       return 0.914;
+    case CushionModel::stronge_compliant:
+      return kStrongeRestitution;
   }
   return 0.75;
 }
@@ -215,6 +242,11 @@ struct CushionParams {
   /// The simulation sets it to physics.sliding_friction, the same cloth's
   /// friction; Mathavan et al. measured 0.212 on their snooker cloth.
   double cloth_friction = 0.212;
+  /// The ratio eta^2 of the nose's tangential to its normal compliance
+  /// (its normal over its tangential stiffness), stronge_compliant only
+  /// (`table.cushion_compliance_ratio`). In [0.01, 100]; elastic bodies
+  /// have 1 to 1.5 (Poisson's ratio 0 to 0.5).
+  double compliance_ratio = kStrongeComplianceRatio;
 };
 
 /// The nose's height above the cloth (m) for a ball of `radius`: the
@@ -244,7 +276,7 @@ struct CushionImpact {
 /// params.nose_height), changes velocity and spin together and keeps the
 /// ball on the cloth (no hop). The result never moves into the cushion
 /// (v.n >= 0 up to rounding) and never has more kinetic energy (for
-/// mathavan_2010 up to the integration's round-off). A ball not moving
+/// mathavan_2010 and stronge_compliant up to the integration's error). A ball not moving
 /// into the cushion (v.n >= 0) is returned unchanged. The mass cancels
 /// out. Only arithmetic and sqrt are used: results are bit-identical
 /// wherever IEEE doubles are. Equations and their derivation:

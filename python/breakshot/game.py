@@ -457,7 +457,8 @@ class Game:
     draw; 0 means no limit. ``physics`` (None: the defaults) chooses the
     pool model's laws, as ``breakshot match`` does: a dict with any of
     ``"cushion_model"`` (``"han_2005"``, the default, ``"han_2005_v0"``,
-    the legacy law, ``"mathavan_2010"`` or ``"impulse_frictional"``),
+    the legacy law, ``"mathavan_2010"``, ``"impulse_frictional"`` or
+    ``"stronge_compliant"``),
     ``"ball_ball_model"`` (``"friction"`` or ``"mathavan_2014"``),
     ``"ball_ball_friction"`` (a number, or a curve ``{"a": .., "b": ..,
     "c": ..}``), ``"airborne"`` (true by default) and ``"spinning_friction"``

@@ -351,7 +351,8 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 
   if (shape == "rectangle") {
     if (!known_fields(*t, path, {"shape", "min", "max", "cushion_restitution",
-                                 "cushion_friction", "nose_height", "cushion_model", "cushion_height"})) {
+                                 "cushion_friction", "nose_height", "cushion_model", "cushion_height",
+                                 "cushion_compliance_ratio"})) {
       return false;
     }
     const json* lo = find(*t, "min");
@@ -374,7 +375,8 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 
   if (shape == "polygon") {
     if (!known_fields(*t, path, {"shape", "vertices", "cushion_restitution",
-                                 "cushion_friction", "nose_height", "cushion_model", "cushion_height"})) {
+                                 "cushion_friction", "nose_height", "cushion_model", "cushion_height",
+                                 "cushion_compliance_ratio"})) {
       return false;
     }
     const json* vs = find(*t, "vertices");
@@ -397,7 +399,8 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 
   if (shape == "pool") {
     if (!known_fields(*t, path, {"shape", "size", "cushion_restitution", "cushion_friction",
-                                 "nose_height", "cushion_model", "cushion_height"})) {
+                                 "nose_height", "cushion_model", "cushion_height",
+                                 "cushion_compliance_ratio"})) {
       return false;
     }
     const json* size_v = find(*t, "size");
@@ -418,7 +421,8 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
   if (shape == "snooker") {
     if (!known_fields(*t, path,
                       {"shape", "cushion_restitution", "cushion_friction", "nose_height",
-                       "cushion_model", "cushion_height"})) {
+                       "cushion_model", "cushion_height",
+                       "cushion_compliance_ratio"})) {
       return false;
     }
     s.table = make_snooker_table();
@@ -428,7 +432,8 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
   if (shape == "carom") {
     if (!known_fields(*t, path,
                       {"shape", "cushion_restitution", "cushion_friction", "nose_height",
-                       "cushion_model", "cushion_height"})) {
+                       "cushion_model", "cushion_height",
+                       "cushion_compliance_ratio"})) {
       return false;
     }
     s.table = make_carom_table();
@@ -448,7 +453,8 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 bool ScenarioReader::read_cushion(const json& t, Scenario& s) {
   const bool pool_cushions = s.table.shape == "pool" || s.table.shape == "snooker" ||
                              s.table.shape == "carom" || s.physics.model == Model::pool;
-  for (const char* key : {"cushion_friction", "nose_height", "cushion_model", "cushion_height"}) {
+  for (const char* key : {"cushion_friction", "nose_height", "cushion_model", "cushion_height",
+                          "cushion_compliance_ratio"}) {
     if (find(t, key) != nullptr && !pool_cushions) {
       return fail(member_path("table", key),
                   "only the pool model's cushions have this field (a pool, snooker or "
@@ -500,6 +506,20 @@ bool ScenarioReader::read_cushion(const json& t, Scenario& s) {
     }
     // Against each ball's radius: validate() (the balls come next).
     cp.height = height;
+  }
+  if (const json* v = find(t, "cushion_compliance_ratio")) {
+    const std::string path = "table.cushion_compliance_ratio";
+    if (cp.model != CushionModel::stronge_compliant) {
+      return fail(path, "only the \"stronge_compliant\" cushion law has this field (table."
+                        "cushion_model is \"" + std::string(cushion_model_name(cp.model)) + "\")");
+    }
+    double eta2 = 0.0;
+    if (!number(*v, path, eta2)) return false;
+    if (!(eta2 >= kMinComplianceRatio && eta2 <= kMaxComplianceRatio)) {
+      return fail(path, "must be between 0.01 and 100 (the tangential over the normal "
+                        "compliance; elastic bodies have 1 to 1.5), not " + format_number(eta2));
+    }
+    cp.compliance_ratio = eta2;
   }
   return true;
 }

@@ -164,6 +164,10 @@ std::optional<ScenarioError> check_cushion(const Scenario& s) {
     return ScenarioError{"table.cushion_friction", "must be finite and >= 0, not " +
                                                        num(c.friction)};
   }
+  if (!(c.compliance_ratio >= kMinComplianceRatio && c.compliance_ratio <= kMaxComplianceRatio)) {
+    return ScenarioError{"table.cushion_compliance_ratio",
+                         "must be between 0.01 and 100, not " + num(c.compliance_ratio)};
+  }
   if (!in_unit_interval(c.restitution)) {
     return ScenarioError{"table.cushion_restitution",
                          "restitution must be in [0, 1], not " + num(c.restitution)};
