@@ -214,3 +214,21 @@ def test_command_prints_what_breakshot_match_prints(run_cli, root):
                           "1", "--seed", "0", "--noise", "none"], capture_output=True, text=True)
     assert bad.returncode == 2
     assert "unknown player 'nobody'" in bad.stderr
+
+
+def test_physics_options_take_the_spinning_friction():
+    from types import SimpleNamespace
+
+    def args(**kw):
+        base = dict(cushion_model=None, ball_ball_model=None, ball_ball_friction=None,
+                    airborne=None, spinning_friction=None)
+        base.update(kw)
+        return SimpleNamespace(**base)
+
+    assert bd._physics_args(args()) is None
+    assert bd._physics_args(args(spinning_friction="legacy")) == \
+        breakshot.physics_of(spinning_friction="legacy")
+    assert bd._physics_args(args(spinning_friction="0.02"))["spinning_friction"] == 0.02
+    for bad in ("slow", "0", "-1", "inf"):
+        with pytest.raises(ValueError, match="--spinning-friction"):
+            bd._physics_args(args(spinning_friction=bad))
