@@ -74,6 +74,31 @@ TEST(CushionStronge, FrictionlessAtCentreHeightIsReflectionScaledByE) {
   EXPECT_NEAR(r0.velocity.x, 0.0, 1e-12);
 }
 
+// A restitution so small that 1/e^2 overflows: the impact still ends at
+// the largest compression with finite numbers (as e = 0), on the impact
+// and in a run that a scenario sets up with it.
+TEST(CushionStronge, TinyRestitutionStaysFinite) {
+  for (const double e : {1e-90, 1e-100, 1e-160, 1e-200, 5e-324}) {
+    const CushionImpact r = cushion_impact({1.0, 0.3}, {-10.0, 35.0, 40.0}, kN, kMass, kR,
+                                           stronge(e, 0.14, 1.08));
+    EXPECT_TRUE(std::isfinite(r.velocity.x) && std::isfinite(r.velocity.y)) << e;
+    EXPECT_TRUE(std::isfinite(r.spin.x) && std::isfinite(r.spin.y) && std::isfinite(r.spin.z))
+        << e;
+    EXPECT_LE(r.velocity.x, 1e-12) << e;  // never into the rail
+  }
+  auto parsed = bs::read_scenario(R"({"physics": {"model": "pool"},
+    "table": {"shape": "pool", "size": "9ft", "cushion_model": "stronge_compliant",
+              "cushion_restitution": 1e-200},
+    "balls": [{"id": "cue", "position": [0.9, 0.35]}],
+    "cue": {"ball": "cue", "speed": 3.0, "phi": 30.0, "theta": 0.0, "a": 0.3, "b": 0.1}})");
+  ASSERT_TRUE(std::holds_alternative<bs::Scenario>(parsed));
+  const bs::RunResult run = bs::simulate(std::get<bs::Scenario>(parsed));
+  EXPECT_TRUE(run.complete);
+  for (const bs::BallState& b : run.final_balls) {
+    EXPECT_TRUE(std::isfinite(b.position.x) && std::isfinite(b.position.y));
+  }
+}
+
 // Gross slip (Stronge's condition u0/a0 > mu ((1 + e) beta - eta^2 / e),
 // beta = 7/2 along the rail): friction mu F throughout, so the slip drops
 // by beta mu (1 + e) a0 and v_y by mu (1 + e) v_x, w_z by (5/2R) times

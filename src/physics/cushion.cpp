@@ -665,7 +665,9 @@ Local stronge_compliant(Local b, double R, double s, double c, double e, double 
     compressed = true;
     break;
   }
-  if (compressed && e > 0.0 && st.x > 0.0) {
+  // Below 1e-100 the restitution returns at most 1e-200 of the energy:
+  // nothing a double can show, and 1/e^2 would overflow.
+  if (compressed && e > 1e-100 && st.x > 0.0) {
     // Restitution: the spring unloads with stiffness 1/e^2 from the
     // largest compression x_m; its stretch beyond the unloaded length
     // (1 - e^2) x_m is e^2 x_m, so the force x_m is continuous.
