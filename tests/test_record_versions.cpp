@@ -36,8 +36,9 @@ namespace {
 using namespace breakshot;
 using ojson = nlohmann::ordered_json;
 
-std::string data_file(const std::string& name) {
-  const std::string path = std::string(BREAKSHOT_SOURCE_DIR) + "/tests/data/records_v1/" + name;
+/// A file of tests/data/records_v1 (or of another folder of tests/data).
+std::string data_file(const std::string& name, const std::string& folder = "records_v1") {
+  const std::string path = std::string(BREAKSHOT_SOURCE_DIR) + "/tests/data/" + folder + "/" + name;
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -161,13 +162,6 @@ TEST(RecordVersions, LegacyPhysicsKeepsTheSummarysGames) {
 // (tests/data/records_v2/README.md): played with 0.044, which they do not
 // name.
 
-std::string v2_data_file(const std::string& name) {
-  const std::string path = std::string(BREAKSHOT_SOURCE_DIR) + "/tests/data/records_v2/" + name;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(RecordVersions, RecordsWrittenBeforeTheSpinningFrictionReplayOnIt) {
   struct File {
     GameType game;
@@ -175,7 +169,7 @@ TEST(RecordVersions, RecordsWrittenBeforeTheSpinningFrictionReplayOnIt) {
   };
   for (const File& f : {File{GameType::nine_ball, "nine_ball_club_seed1_game1.json"},
                         File{GameType::three_cushion, "three_cushion_club_seed1_game1.json"}}) {
-    const std::string text = v2_data_file(f.name);
+    const std::string text = data_file(f.name, "records_v2");
     ASSERT_EQ(text.find("spinning_friction"), std::string::npos) << f.name;
     const GameRecord r = read_ok(text);
     EXPECT_EQ(r.config.physics.spinning_friction, kLegacySpinningFriction) << f.name;
