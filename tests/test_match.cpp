@@ -335,6 +335,62 @@ TEST(Match, PlayerWithItsOwnNoiseShootsWithIt) {
   }
 }
 
+// A player named at a noise (NAME@NOISE): its name and noise are its own,
+// an AI level plans with that noise, the plain name keeps the level's.
+TEST(Match, PlayerNamedAtANoise) {
+  const PlayerName read = read_player_name("champion@0.5x");
+  EXPECT_EQ(read.base, "champion");
+  EXPECT_EQ(read.noise_spec, "0.5x");
+  ASSERT_TRUE(read.noise.has_value());
+  EXPECT_EQ(*read.noise, parse_noise("0.5x"));
+  EXPECT_FALSE(read_player_name("champion").noise.has_value());
+
+  const auto champion = make_player("champion@0.5x");
+  EXPECT_EQ(champion->name(), "champion@0.5x");
+  EXPECT_EQ(champion->noise(), parse_noise("0.5x"));
+  EXPECT_EQ(make_player("champion")->noise(), parse_noise("tournament"));
+  const auto steady = make_player("baseline@none");
+  EXPECT_EQ(steady->name(), "baseline@none");
+  EXPECT_EQ(steady->noise(), NoiseModel{});
+  EXPECT_FALSE(make_player("baseline")->noise().has_value());
+  EXPECT_FALSE(check_player("expert@2x", GameType::snooker).has_value());
+
+  // In a match: the summary and the records say the name and its noise.
+  MatchOptions opt;
+  opt.game = GameType::nine_ball;
+  opt.players = {"beginner@none", "baseline@0.5x"};
+  opt.games = 2;
+  opt.seed = 4;
+  opt.noise = parse_noise("tournament");
+  std::vector<GameRecord> records;
+  const MatchSummary s = play_match(opt, [&](int, const GameRecord& r) { records.push_back(r); });
+  EXPECT_EQ(s.players[0].name, "beginner@none");
+  EXPECT_EQ(s.players[0].noise, "none");
+  EXPECT_EQ(s.players[1].noise, "0.5x");
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_EQ(records[0].players[1], "baseline@0.5x");
+  EXPECT_EQ(records[0].noise[1], parse_noise("0.5x"));
+  EXPECT_TRUE(replay(records[1]).identical);
+
+  // Bad names: what is wrong, named.
+  const std::pair<const char*, const char*> bad[] = {
+      {"club@", "no noise after the '@'"},
+      {"@0.5x", "no player before the '@'"},
+      {"club@0.5x@1x", "more than one '@'"},
+      {"club@fast", "noise: unknown spec \"fast\""},
+      {"club@-1x", "is not a finite number >= 0"},
+  };
+  for (const auto& [name, why] : bad) {
+    EXPECT_THROW((void)make_player(name), std::invalid_argument) << name;
+    const std::optional<std::string> msg = check_player(name, GameType::nine_ball);
+    ASSERT_TRUE(msg.has_value()) << name;
+    EXPECT_NE(msg->find(why), std::string::npos) << *msg;
+    EXPECT_NE(msg->find(std::string("\"") + name + "\""), std::string::npos) << *msg;
+  }
+  EXPECT_NE(check_player("clubb@1x", GameType::nine_ball)->find("unknown player \"clubb\""),
+            std::string::npos);
+}
+
 TEST(Match, RefusedActionStopsTheGameNamingThePlayer) {
   const Rules rules(GameConfig{});
   Stubborn stubborn;

@@ -1215,3 +1215,44 @@ TEST(WebCompat, FromCharsIsTheStandards) {
 }
 
 }  // namespace
+
+// A seat at a named noise (LEVEL@NOISE, players.hpp): the seat shoots with
+// that noise, which its record carries, and the AI plans with it; a bad
+// name is an error naming the seat and what is wrong.
+TEST(WebApi, SeatsAtANamedNoise) {
+  GamePtr g = new_game(
+      R"({"game": "nine_ball", "seed": "5", "players": ["club@0.5x", "beginner@none"],
+          "ai_budget": 40})");
+  ASSERT_NE(g, nullptr);
+  for (int k = 0; k < 4; ++k) {
+    if (json::parse(state_of(g.get()))["phase"] == "game_over") break;
+    step_ai(g.get(), nullptr);
+  }
+  const auto parsed = bs::read_record(record_of(g.get()));
+  ASSERT_TRUE(std::holds_alternative<bs::GameRecord>(parsed));
+  const bs::GameRecord& rec = std::get<bs::GameRecord>(parsed);
+  EXPECT_EQ(rec.players[0], "club@0.5x");
+  EXPECT_EQ(rec.noise[0], bs::parse_noise("0.5x"));
+  EXPECT_EQ(rec.noise[1], bs::NoiseModel{});
+  EXPECT_GE(rec.actions.size(), 2u);
+  EXPECT_TRUE(bs::replay(rec).identical);
+  // A hint at a named noise, for the seat to act.
+  if (json::parse(state_of(g.get()))["phase"] != "game_over") {
+    const json hint = J(bs_game_ai_action(g.get(), "beginner@0.5x"));
+    EXPECT_TRUE(hint.contains("action")) << hint.dump();
+  }
+  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "beginner@")), "level: player"))
+      << bs_last_error();
+
+  const std::pair<const char*, const char*> bad[] = {
+      {R"(["club@fast", "human"])", "players[0]: player \"club@fast\": noise: unknown spec"},
+      {R"(["human", "@1x"])", "players[1]: player \"@1x\": no player before the '@'"},
+      {R"(["clubb@1x", "human"])", "players[0]: \"human\" or unknown"},
+  };
+  for (const auto& [players, message] : bad) {
+    const std::string config = std::string(R"({"game": "nine_ball", "players": )") + players + "}";
+    EXPECT_EQ(bs_game_new(config.c_str()), nullptr) << players;
+    EXPECT_TRUE(starts_with(error_of(bs_last_error()), message))
+        << players << ": " << bs_last_error();
+  }
+}

@@ -593,7 +593,8 @@ int main(int argc, char** argv) {
       ->type_name("GAME")
       ->required();
   match->add_option("--players", match_args.players,
-                    "The two players, by name, comma separated (e.g. baseline,baseline)")
+                    "The two players, by name, comma separated (e.g. baseline,baseline); "
+                    "NAME@NOISE plays that player at a noise of its own (e.g. champion@0.5x)")
       ->type_name("A,B")
       ->required();
   match->add_option("--games", match_args.games, "Number of games (>= 1); breaks alternate")

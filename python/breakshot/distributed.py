@@ -191,10 +191,10 @@ def _check_names(game, names, table) -> None:
     bad noise spec is refused by the first task, as ValueError)."""
     if game not in _core.game_names():
         raise ValueError(f"game: unknown game {game!r} (known: {', '.join(_core.game_names())})")
-    known = _core.player_names()
     for name in names:
-        if name not in known:
-            raise ValueError(f"players: unknown player {name!r} (known: {', '.join(known)})")
+        why = _core.check_player(name, game) if isinstance(name, str) else "expected a name"
+        if why is not None:
+            raise ValueError(f"players: {why}")
     if game == "snooker":
         if table != "12ft":
             raise ValueError(f"table: unknown table size {table!r} (snooker: 12ft)")

@@ -695,7 +695,10 @@ class Game:
 
 class Player:
     """A computer player by name: ``"baseline"`` or an AI level (see
-    :func:`players`).
+    :func:`players`), or either at a noise of its own, ``NAME@NOISE``
+    (``"champion@0.5x"``: the champion shooting, and planning, at half the
+    tournament noise; NOISE is a noise spec as ``breakshot match --noise``
+    takes it).
 
     ``Player(level="baseline", seed=None, threads=None)``. ``decide(game)``
     returns the player's action for the game's state now. The decision's

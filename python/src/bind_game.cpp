@@ -625,6 +625,13 @@ void bind_game(py::module_& m) {
   m.def("game_names", &game_type_names, "The games the library plays (GameType names).");
   m.def("player_names", static_cast<std::vector<std::string> (*)()>(&player_names),
         "The computer players: 'baseline', then the AI levels.");
+  m.def(
+      "check_player",
+      [](const std::string& name, const std::string& game) {
+        return check_player(name, game_arg(game));
+      },
+      py::arg("name"), py::arg("game"),
+      "Why the player `name` (NAME or NAME@NOISE) cannot play `game`, or None.");
   m.def("mix_seed", &mix_seed, py::arg("a"), py::arg("b"),
         "SplitMix64 seed mixing (noise.hpp): game g of a match has seed mix_seed(seed, g).");
   m.def("player_seed", &GameSeeds::player, py::arg("game_seed"), py::arg("action"),

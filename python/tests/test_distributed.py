@@ -130,7 +130,7 @@ def test_sweep_gives_simulate_in_order(client, root):
 
 
 def test_bad_arguments_name_what_is_wrong(client):
-    with pytest.raises(ValueError, match="unknown player 'nobody'"):
+    with pytest.raises(ValueError, match='unknown player "nobody"'):
         bd.match(client, "nine_ball", ("baseline", "nobody"), games=1)
     with pytest.raises(ValueError, match="games"):
         bd.match(client, "nine_ball", ("baseline", "baseline"), games=0)
@@ -213,7 +213,7 @@ def test_command_prints_what_breakshot_match_prints(run_cli, root):
                           "1", "--game", "nine_ball", "--players", "baseline,nobody", "--games",
                           "1", "--seed", "0", "--noise", "none"], capture_output=True, text=True)
     assert bad.returncode == 2
-    assert "unknown player 'nobody'" in bad.stderr
+    assert 'unknown player "nobody"' in bad.stderr
 
 
 def test_physics_options_take_the_spinning_friction():

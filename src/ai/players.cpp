@@ -7,8 +7,10 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "breakshot/ai.hpp"
+#include "breakshot/noise.hpp"
 
 namespace breakshot {
 
@@ -20,7 +22,38 @@ std::vector<std::string> player_names() {
 
 std::vector<std::string> player_names(GameType /*game*/) { return player_names(); }
 
-std::optional<std::string> check_player(std::string_view name, GameType game) {
+PlayerName read_player_name(std::string_view name) {
+  PlayerName out;
+  const std::size_t at = name.find('@');
+  out.base = std::string(name.substr(0, at));
+  if (at == std::string_view::npos) return out;
+  const auto bad = [&](const std::string& why) {
+    throw std::invalid_argument("player \"" + std::string(name) + "\": " + why +
+                                " (a player at a named noise is NAME@NOISE, for example "
+                                "champion@0.5x)");
+  };
+  out.noise_spec = std::string(name.substr(at + 1));
+  if (out.base.empty()) bad("no player before the '@'");
+  if (out.noise_spec.empty()) bad("no noise after the '@'");
+  if (out.noise_spec.find('@') != std::string::npos) bad("more than one '@'");
+  try {
+    out.noise = parse_noise(out.noise_spec);
+  } catch (const std::invalid_argument& e) {
+    // parse_noise's message begins "noise: " and lists the accepted specs.
+    throw std::invalid_argument("player \"" + std::string(name) + "\": " + e.what());
+  }
+  return out;
+}
+
+std::optional<std::string> check_player(std::string_view full_name, GameType game) {
+  std::string_view name = full_name;
+  PlayerName read;
+  try {
+    read = read_player_name(full_name);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  name = read.base;
   const std::vector<std::string> all = player_names();
   const std::vector<std::string> able = player_names(game);
   std::string known;
@@ -28,7 +61,8 @@ std::optional<std::string> check_player(std::string_view name, GameType game) {
   if (std::find(all.begin(), all.end(), name) == all.end()) {
     std::string every;
     for (const std::string& n : all) every += (every.empty() ? "" : ", ") + n;
-    return "unknown player \"" + std::string(name) + "\" (known players: " + every + ")";
+    return "unknown player \"" + std::string(name) + "\" (known players: " + every +
+           "; any of them also as NAME@NOISE)";
   }
   if (std::find(able.begin(), able.end(), name) == able.end()) {
     return "player \"" + std::string(name) + "\" does not play " + std::string(to_string(game)) +
@@ -39,19 +73,45 @@ std::optional<std::string> check_player(std::string_view name, GameType game) {
 
 namespace {
 
-std::unique_ptr<Player> named_player(std::string_view name, std::optional<int> threads) {
-  if (name == "baseline") return make_baseline_player();
-  // The AI levels (include/breakshot/ai.hpp) by their names.
+/// A player at a named noise: the inner player's decisions, its own name
+/// and noise.
+class NamedNoisePlayer final : public Player {
+ public:
+  NamedNoisePlayer(std::unique_ptr<Player> inner, std::string name, NoiseModel noise)
+      : inner_(std::move(inner)), name_(std::move(name)), noise_(noise) {}
+  std::string name() const override { return name_; }
+  std::optional<NoiseModel> noise() const override { return noise_; }
+  Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) override {
+    return inner_->decide(rules, state, seed);
+  }
+
+ private:
+  std::unique_ptr<Player> inner_;
+  std::string name_;
+  NoiseModel noise_;
+};
+
+std::unique_ptr<Player> named_player(std::string_view full_name, std::optional<int> threads) {
+  const PlayerName read = read_player_name(full_name);
+  const std::string& name = read.base;
+  const auto named = [&](std::unique_ptr<Player> p) -> std::unique_ptr<Player> {
+    if (!read.noise) return p;
+    return std::make_unique<NamedNoisePlayer>(std::move(p), std::string(full_name), *read.noise);
+  };
+  if (name == "baseline") return named(make_baseline_player());
+  // The AI levels (include/breakshot/ai.hpp) by their names; one named at
+  // a noise plans with it too.
   const std::vector<std::string> levels = ai_level_names();
   if (std::find(levels.begin(), levels.end(), name) != levels.end()) {
     AiLevel level = ai_level(name);
     if (threads) level.threads = *threads;
-    return make_ai_player(level);
+    if (read.noise) level.noise = *read.noise;
+    return named(make_ai_player(level));
   }
   std::string known;
   for (const std::string& n : player_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown player \"" + std::string(name) + "\" (known players: " +
-                              known + ")");
+                              known + "; any of them also as NAME@NOISE)");
 }
 
 }  // namespace

@@ -98,11 +98,20 @@ std::uint64_t seed_value(const json& v, const std::string& path) {
   return seed;
 }
 
+bs::PlayerName computer_name(const std::string& name, const std::string& path) {
+  try {
+    return bs::read_player_name(name);
+  } catch (const std::invalid_argument& e) {
+    bad(path, e.what());
+  }
+}
+
 std::string seat_name(const json& v, const std::string& path) {
   const std::string& s = text(v, path);
   if (s == kHuman) return s;
+  const bs::PlayerName n = computer_name(s, path);
   try {
-    (void)bs::ai_level(s);
+    (void)bs::ai_level(n.base);
   } catch (const std::invalid_argument& e) {
     bad(path, std::string("\"human\" or ") + e.what());
   }
@@ -125,15 +134,18 @@ std::vector<std::string> computer_players(bs::GameType game) {
   return out;
 }
 
-bool is_baseline(std::string_view name) { return name == "baseline"; }
+bool is_baseline(std::string_view name) {
+  return name.substr(0, name.find('@')) == "baseline";
+}
 
 std::string seat_name(const json& v, const std::string& path, bs::GameType game) {
   if (game == bs::GameType::three_cushion) {
     const std::string& s = text(v, path);
     if (s == kHuman) return s;
+    const std::string base = computer_name(s, path).base;
     const std::vector<std::string> known = computer_players(game);
     for (const std::string& k : known) {
-      if (k == s) return s;
+      if (k == base) return s;
     }
     std::string list;
     for (const std::string& k : known) list += (list.empty() ? "\"" : ", \"") + k + "\"";

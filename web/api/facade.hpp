@@ -36,6 +36,7 @@
 #include "breakshot/ai.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
+#include "breakshot/players.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/session.hpp"
 #include "breakshot/simulation.hpp"
@@ -155,7 +156,11 @@ const std::string& text(const json& v, const std::string& path);
 /// A seed: a decimal string, or an integer number up to 2^53.
 std::uint64_t seed_value(const json& v, const std::string& path);
 
-/// "human" or a known AI level.
+/// A computer player's name read (NAME or NAME@NOISE, players.hpp), or
+/// an error at `path` naming what is wrong.
+bs::PlayerName computer_name(const std::string& name, const std::string& path);
+
+/// "human" or a known AI level (either at a named noise: LEVEL@NOISE).
 std::string seat_name(const json& v, const std::string& path);
 /// "human" or a computer player of `game` (computer_players).
 std::string seat_name(const json& v, const std::string& path, bs::GameType game);
@@ -164,7 +169,8 @@ std::string seat_name(const json& v, const std::string& path, bs::GameType game)
 /// and in snooker also the baseline player; in three-cushion the AI
 /// levels that play it (players.hpp's check_player), then the baseline.
 std::vector<std::string> computer_players(bs::GameType game);
-/// The player `name` (one of computer_players) makes decisions with.
+/// Whether the player `name` (one of computer_players, at a named noise
+/// or not) is the baseline.
 bool is_baseline(std::string_view name);
 
 }  // namespace facade
@@ -207,14 +213,20 @@ struct BsGame {
          std::uint64_t seed, int breaker, std::optional<std::int64_t> budget)
       : session(config, seats_of(seat_names), seed, breaker), seats(seat_names), ai_budget(budget) {}
 
-  /// A human seat plays without noise; an AI seat with its level's noise;
-  /// the baseline (which has no noise of its own) with tournament noise.
+  /// A human seat plays without noise; a computer named at a noise
+  /// (LEVEL@NOISE) with that noise; an AI seat with its level's noise; the
+  /// baseline (which has no noise of its own) with tournament noise.
   static bs::Seats seats_of(const std::array<std::string, 2>& names) {
     bs::Seats s;
     s.names = names;
     for (std::size_t k = 0; k < 2; ++k) {
       if (names[k] == facade::kHuman) {
         s.noise[k] = bs::NoiseModel{};
+        continue;
+      }
+      const bs::PlayerName n = bs::read_player_name(names[k]);
+      if (n.noise) {
+        s.noise[k] = *n.noise;
       } else if (facade::is_baseline(names[k])) {
         s.noise[k] = bs::parse_noise("tournament");
       } else {

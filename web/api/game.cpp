@@ -206,10 +206,12 @@ ojson carom_figures_json(const BsGame& g) {
 }
 
 bs::AiLevel web_level(const std::string& name, const std::optional<std::int64_t>& budget) {
-  bs::AiLevel l = bs::ai_level(name);
+  const bs::PlayerName n = bs::read_player_name(name);
+  bs::AiLevel l = bs::ai_level(n.base);
+  if (n.noise) l.noise = *n.noise;  // it plans with the noise it shoots with
   l.threads = 1;
   l.time_budget = 0.0;
-  l.simulation_budget = budget ? *budget : web_budget(name);
+  l.simulation_budget = budget ? *budget : web_budget(n.base);
   return l;
 }
 
@@ -424,7 +426,7 @@ std::string ai_action_json(BsGame& g, const char* level) {
       (void)seat_name(json(name), "level", state.game);
     } else if (!(snooker && is_baseline(name))) {
       try {
-        (void)bs::ai_level(name);
+        (void)bs::ai_level(bs::read_player_name(name).base);
       } catch (const std::invalid_argument& e) {
         bad("level", e.what());
       }
