@@ -17,6 +17,10 @@
 
 #include "breakshot/ai.hpp"
 #include "breakshot/game.hpp"
+#include "breakshot/noise.hpp"
+#include "breakshot/snooker.hpp"
+#include "breakshot/players.hpp"
+#include "breakshot/match.hpp"
 #include "ai/evaluate.hpp"
 #include "rules_fixtures.hpp"
 
@@ -438,6 +442,39 @@ TEST(ShotGenAll, PostBreakTablesCheckedDeterministicAndTimed) {
     }
     EXPECT_GT(tables, 0);
   }
+}
+
+// The generator's judgement is the ruleset's: on snooker tables of a
+// frame in progress (reds and colours on, after a red and while on the
+// reds), every candidate played without noise is what the rules rule it:
+// a pot with no foul, the intended ball first and the target in its
+// pocket; a safety with no foul. (8-ball and 9-ball: the test above.)
+TEST(ShotGenAll, SnookerCandidatesAreWhatTheRulesRule) {
+  const Rules rules(snooker_config());
+  auto p0 = make_player("baseline");
+  auto p1 = make_player("baseline");
+  const GameRecord frame = play_game(rules, *p0, *p1, 0, 21, parse_noise("tournament"));
+  int tables = 0;
+  int colour_on = 0;
+  int checked = 0;
+  for (std::size_t i = 0; i < frame.actions.size() && tables < 6; i += 3) {
+    const GameState& s = frame.actions[i].after;
+    if (s.phase != Phase::shot || !s.on_table[0] || s.ball_in_hand != BallInHand::none) continue;
+    ++tables;
+    if (s.snooker && s.snooker->colour_on) ++colour_on;
+    for (const CandidateShot& c : generate_shots(rules, s, direct_only())) {
+      ++checked;
+      if (c.target >= 0) {
+        expect_pots(rules, s, c);
+      } else {
+        const Outcome o = rules.apply(s, Action{c.shot});
+        EXPECT_TRUE(o.ruling.fouls.empty()) << what(c) << ": " << describe(o);
+      }
+    }
+  }
+  EXPECT_GE(tables, 4);
+  EXPECT_GE(colour_on, 1);
+  EXPECT_GT(checked, 10);
 }
 
 // ---------------------------------------------------------------------------

@@ -746,65 +746,64 @@ class Generator {
     }
   }
 
-  /// The outcome of a shot judged as the rules would, from the events of
-  /// a simulation run to rest.
+  /// A shot's noiseless play ruled by the game's own rules
+  /// (Rules::apply_events on the events the simulation gave): the facts
+  /// the generator ranks by and the state the ruling leaves.
   struct Judged {
-    bool legal = false;   ///< first hit legal, no foul, 8 safe
+    /// No foul, and the game not lost (8-ball: no 8 before its time).
+    bool legal = false;
+    bool wins = false;  ///< the shot wins the game for the shooter
     int first_hit = -1;
     std::vector<int> pocketed;
     std::vector<int> pocket_of;
     Layout after;
-    bool off_table = false;  ///< some ball left the table
+    GameState next;  ///< the state the ruling leaves
   };
 
-  Judged judge(Simulation& sim) const {
+  /// The candidate shot of a strike: the call (8-ball needs it; 9-ball
+  /// and snooker take it as information), the nomination snooker needs
+  /// after a red (the ball `target`), the declaration of a safety. The
+  /// call is dropped where the rules refuse it (add_pot did so too).
+  Shoot shot_of(const CueStrike& strike, int target, int pocket, bool safety) const {
+    Shoot shot;
+    shot.strike = strike;
+    if (la_.must_nominate) shot.nominate = target;
+    if (safety) {
+      shot.safety = la_.call;  // 8-ball: a declared safety, never called
+      return shot;
+    }
+    shot.call = Call{target, pocket};
+    if (!la_.call && rules_.check(state_, Action{shot})) shot.call.reset();
+    return shot;
+  }
+
+  /// Runs `sim` to rest and rules `shot` on what it did. A shot the rules
+  /// refuse, or a run that does not come to rest, is judged not legal.
+  Judged judge(Simulation& sim, const Shoot& shot) const {
     Judged j;
     if (sim.advance_to_rest() != StopReason::reached || !sim.at_rest()) return j;
+    if (rules_.check(state_, Action{shot})) return j;
     std::vector<Event> events = sim.events();
     for (Event& e : events) {
       if (e.ball >= 0) e.ball = numbers_[static_cast<std::size_t>(e.ball)];
       if (e.other >= 0) e.other = numbers_[static_cast<std::size_t>(e.other)];
     }
-    const ShotFacts f = rules_.facts(events);
-    j.first_hit = f.first_hit;
-    j.pocketed = f.pocketed;
-    j.pocket_of = f.pocket_of;
-    j.after = layout_;
+    std::vector<Vec2> rest = layout_.pos;
     for (std::size_t k = 0; k < numbers_.size(); ++k) {
-      const auto n = static_cast<std::size_t>(numbers_[k]);
-      const BallState st = sim.ball(k);
-      if (st.state == MotionState::pocketed || st.state == MotionState::off_table) {
-        j.after.on[n] = 0;
-        // A ball that left the table (physics.airborne) is a foul under
-        // the rules of both games: such a shot is never planned.
-        if (st.state == MotionState::off_table) j.off_table = true;
-      } else {
-        j.after.pos[n] = st.position;
-      }
+      rest[static_cast<std::size_t>(numbers_[k])] = sim.ball(k).position;
     }
     const bool miscue = sim.cue_result() && sim.cue_result()->miscue;
-    const bool legal_first =
-        std::find(targets_.begin(), targets_.end(), f.first_hit) != targets_.end();
-    const bool scratch = std::find(f.pocketed.begin(), f.pocketed.end(), 0) != f.pocketed.end();
-    // Snooker asks for no cushion after the contact.
-    const bool rail = snooker_ || f.cushion_after_contact || !f.pocketed.empty();
-    j.legal = !miscue && legal_first && !scratch && rail && !j.off_table;
+    Outcome o = rules_.apply_events(state_, shot, std::move(events), rest, miscue);
+    j.first_hit = o.facts.first_hit;
+    j.pocketed = o.facts.pocketed;
+    j.pocket_of = o.facts.pocket_of;
+    j.after.pos = o.state.position;
+    j.after.on = o.state.on_table;
+    const bool over = o.state.phase == Phase::game_over;
+    j.wins = over && o.state.winner == state_.player;
+    j.legal = o.ruling.fouls.empty() && (!over || j.wins);
+    j.next = std::move(o.state);
     return j;
-  }
-
-  /// Snooker: every object ball the shot potted was on, with `nominated`
-  /// the ball on after a red (so no foul for a ball wrongly potted), and
-  /// with a colour on the cue ball hit the nominated ball first.
-  bool snooker_pots_ok(const Judged& j, int nominated) const {
-    if (colour_on_ && j.first_hit != nominated) return false;
-    for (int b : j.pocketed) {
-      if (b <= 0) continue;
-      if (colour_on_ ? b != nominated
-                     : std::find(targets_.begin(), targets_.end(), b) == targets_.end()) {
-        return false;
-      }
-    }
-    return true;
   }
 
   static int pocket_of(const Judged& j, int ball) {
@@ -814,11 +813,10 @@ class Generator {
     return -1;
   }
 
-  bool pot_made(const Judged& j, const Line& l) const {
-    if (!j.legal || j.first_hit != l.first || pocket_of(j, l.target) != l.pocket) return false;
-    if (eight_ && l.target != 8 && pocket_of(j, 8) >= 0) return false;
-    if (snooker_ && !snooker_pots_ok(j, l.target)) return false;
-    return true;
+  /// The line's pot made as the rules see it: no foul, the game not
+  /// lost, the line's first ball hit and its target in its pocket.
+  static bool pot_made(const Judged& j, const Line& l) {
+    return j.legal && j.first_hit == l.first && pocket_of(j, l.target) == l.pocket;
   }
 
   /// The result of correcting an aim: the aim, the run at that aim
@@ -904,37 +902,32 @@ class Generator {
       std::optional<Refined> r =
           refine(l.phi, speed, 0.0, l.watch, 0.0, opt_.refine_iterations + 2, 0.0, l.theta);
       if (!r || !r->sim || !r->probe.reached || r->slope == 0.0) continue;
-      const Judged j = judge(*r->sim);
-      if (!pot_made(j, l)) continue;
       CueStrike strike;
       strike.speed = speed;
       strike.phi = r->phi;
       strike.theta = l.theta;
-      add_pot(l, j, strike, std::clamp(l.prior_scale * prior_from(l.room, r->slope), 0.0, 1.0),
+      const Shoot shot = shot_of(strike, l.target, l.pocket, false);
+      const Judged j = judge(*r->sim, shot);
+      if (!pot_made(j, l)) continue;
+      add_pot(l, j, shot, std::clamp(l.prior_scale * prior_from(l.room, r->slope), 0.0, 1.0),
               out);
     }
   }
 
-  /// A pot of line l that its noiseless play `j` made, as a candidate: the
-  /// call (8-ball: the one the rules need; 9-ball: the same call, which
-  /// the rules ignore but the match counts as a pot attempt; dropped if
-  /// the rules refuse it), kept when the rules allow the shot.
-  void add_pot(const Line& l, const Judged& j, const CueStrike& strike, double prior,
+  /// A pot of line l that the noiseless play `j` of `shot` (shot_of: the
+  /// call 8-ball needs, which in 9-ball and snooker is information, a pot
+  /// attempt for the statistics that the centred aim works on) made, as a
+  /// candidate.
+  void add_pot(const Line& l, const Judged& j, const Shoot& shot, double prior,
                std::vector<CandidateShot>& out) const {
     CandidateShot c;
     c.kind = l.kind;
     c.first = l.first;
     c.target = l.target;
     c.pocket = l.pocket;
-    c.shot.strike = strike;
-    if (la_.must_nominate) c.shot.nominate = l.target;  // snooker: the colour after a red
-    // Called: 8-ball needs it; in 9-ball and snooker it is information
-    // (a pot attempt for the statistics), and the centred aim works on it.
-    c.shot.call = Call{l.target, l.pocket};
-    if (!la_.call && rules_.check(state_, Action{c.shot})) c.shot.call.reset();
+    c.shot = shot;
     c.prior = prior;
-    if (rules_.check(state_, Action{c.shot})) return;
-    c.leave = leave(j, l);
+    c.leave = leave(j);
     out.push_back(c);
   }
 
@@ -990,16 +983,17 @@ class Generator {
           r = refine(base->phi, v, b, l.watch, slope, l.kind == ShotKind::direct ? 2 : 4, a);
         }
         if (!r || !r->sim) continue;
-        const Judged j = judge(*r->sim);
-        if (!pot_made(j, l)) continue;
         CueStrike strike;
         strike.speed = factor == 1.0 && b == 0.0 && a == 0.0 ? speed : v;
         strike.phi = r->phi;
         strike.b = b;
         strike.a = a;
+        const Shoot shot = shot_of(strike, l.target, l.pocket, false);
+        const Judged j = judge(*r->sim, shot);
+        if (!pot_made(j, l)) continue;
         // A little less for the harder strokes, so that ties go to the
         // simpler one.
-        add_pot(l, j, strike,
+        add_pot(l, j, shot,
                 prior * (1.0 - 0.03 * (std::abs(b) + std::abs(a))) * (factor > 2.0 ? 0.97 : 1.0),
                 out);
       }
@@ -1007,89 +1001,46 @@ class Generator {
   }
 
   /// The shooter's best next pot on the table a pot's noiseless play
-  /// left (CandidateShot::leave): 1 when the pot wins the game.
-  double leave(const Judged& j, const Line& l) const {
-    const bool wins = snooker_ ? false : eight_ ? l.target == 8 : pocket_of(j, 9) >= 0;
-    if (wins) return 1.0;
-    GameState next = state_;
-    next.position = j.after.pos;
-    next.on_table = j.after.on;
-    next.ball_in_hand = BallInHand::none;
-    next.kitchen_shot = false;
-    const auto me = static_cast<std::size_t>(state_.player);
-    if (eight_ && next.group[me] == Group::none && l.target != 8) {
-      // An open table: the pot gives the shooter the target's group.
-      const Group g = l.target < 8 ? Group::solids : Group::stripes;
-      next.group[me] = g;
-      next.group[1 - me] = g == Group::solids ? Group::stripes : Group::solids;
-    }
-    if (snooker_ && next.snooker) {
-      // After a red a colour is on; after a colour a red (the colour back
-      // on its spot while reds remain), or the next colour.
-      SnookerState& k = *next.snooker;
-      k.free_ball = false;
-      const bool red = snooker_value(l.target) == 1;
-      k.colour_on = red;
-      bool reds_left = false;
-      for (int b = 1; b <= 15; ++b) reds_left = reds_left || next.on_table[static_cast<std::size_t>(b)];
-      if (!red && (reds_left || colour_on_)) {
-        next.position[static_cast<std::size_t>(l.target)] = rules_.spot_position(next, l.target);
-        next.on_table[static_cast<std::size_t>(l.target)] = 1;
-      }
-    }
+  /// left (CandidateShot::leave), on the state the rules left (groups
+  /// taken, a colour respotted, the ball on): 1 when the pot wins the
+  /// game, 0 when the turn passed.
+  double leave(const Judged& j) const {
+    if (j.wins) return 1.0;
+    if (j.next.phase == Phase::game_over || j.next.player != state_.player) return 0.0;
     if (snooker_) {
       // What the next pot is worth, not only its chance: p (value +
       // carry) as the estimate ranks pots, scaled so that a sure black
       // is 1. A black at 0.8 then outranks a yellow at 0.85.
       int ball = -1;
-      const double p = ai_detail::best_pot_estimate_from(rules_, next, next.position[0], false,
+      const double p = ai_detail::best_pot_estimate_from(rules_, j.next, j.next.position[0], false,
                                                          opt_.leave_sigma_deg, &ball);
       return ball > 0 ? p * (snooker_value(ball) + ai_detail::kSnookerCarry) /
                             (7.0 + ai_detail::kSnookerCarry)
                       : 0.0;
     }
-    return ai_detail::best_pot_estimate(rules_, next, opt_.leave_sigma_deg);
+    return ai_detail::best_pot_estimate(rules_, j.next, opt_.leave_sigma_deg);
   }
 
   // -------------------------------------------------------------------------
   // Safeties
 
-  /// Balls the opponent may hit first on the layout a shot leaves.
-  std::vector<int> opponent_targets(const Layout& lay) const {
-    std::vector<int> out;
-    const auto n = static_cast<int>(lay.on.size());
-    if (snooker_) {
-      // The opponent is on a red while one is left, else the lowest colour.
-      for (int b = 1; b <= 15 && b < n; ++b) {
-        if (lay.on[static_cast<std::size_t>(b)]) out.push_back(b);
-      }
-      for (int b = 16; out.empty() && b < n; ++b) {
-        if (lay.on[static_cast<std::size_t>(b)]) out.push_back(b);
-      }
-      return out;
-    }
-    if (!eight_) {
-      for (int b = 1; b < n; ++b) {
-        if (lay.on[static_cast<std::size_t>(b)]) return {b};
-      }
-      return out;
-    }
-    const Group g = state_.group[static_cast<std::size_t>(1 - state_.player)];
-    for (int b = 1; b < n; ++b) {
-      if (b == 8 || !lay.on[static_cast<std::size_t>(b)]) continue;
-      if (g == Group::none || (g == Group::solids) == (b < 8)) out.push_back(b);
-    }
-    if (out.empty() && lay.on[8]) out.push_back(8);
-    return out;
+  /// Balls the opponent may hit first on the table a shot leaves, as the
+  /// rules say (Rules::targets with the opponent to play).
+  std::vector<int> opponent_targets(const GameState& next) const {
+    GameState opp = next;
+    opp.player = 1 - state_.player;
+    return rules_.targets(opp);
   }
 
-  /// The opponent's easiest direct pot on `lay`, as a geometric prior in
-  /// [0, 1] (0: no pot, or no ball even visible; cheap: no simulation).
-  double opponent_chance(const Layout& lay) const {
+  /// The opponent's easiest direct pot on the table a shot left, as a
+  /// geometric prior in [0, 1] (0: no pot, or no ball even visible;
+  /// cheap: no simulation).
+  double opponent_chance(const Judged& j) const {
+    const Layout& lay = j.after;
     if (!lay.on[0]) return 1.0;
     const Vec2 cue = lay.pos[0];
     double best = 0.0;
-    for (int t : opponent_targets(lay)) {
+    for (int t : opponent_targets(j.next)) {
       const Vec2 b = lay.pos[static_cast<std::size_t>(t)];
       for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
         const std::optional<Approach> ap = approach(lay, b, static_cast<int>(k), t);
@@ -1108,22 +1059,18 @@ class Generator {
 
   void add_safety(const CueStrike& s, int first, bool kick,
                   std::vector<CandidateShot>& found) const {
+    const Shoot shot = shot_of(s, first, -1, true);  // snooker: nominates the colour it hits
     Simulation sim = start(s.phi, s.speed, s.b);
-    const Judged j = judge(sim);
+    const Judged j = judge(sim, shot);
     recycle(std::move(sim));
     if (!j.legal) return;
-    if (eight_ && pocket_of(j, 8) >= 0) return;
-    if (snooker_ && !snooker_pots_ok(j, first)) return;
     CandidateShot c;
     c.kind = kick ? ShotKind::kick : ShotKind::safety;
     c.first = first;
-    c.shot.strike = s;
-    c.shot.safety = la_.call;  // 8-ball: a declared safety, never called
-    if (la_.must_nominate) c.shot.nominate = first;  // snooker: the colour it hits
+    c.shot = shot;
     // Worth to the shooter: how little the opponent is left. Scaled below
     // real pots, which the evaluator prefers when they are on.
-    c.prior = 0.4 * (1.0 - opponent_chance(j.after));
-    if (rules_.check(state_, Action{c.shot})) return;
+    c.prior = 0.4 * (1.0 - opponent_chance(j));
     found.push_back(c);
   }
 
