@@ -742,7 +742,7 @@ class BaselinePlayer final : public Player {
     constexpr std::size_t kMaxTrials = 12;
     for (std::size_t i = 0; i < plans.size() && i < kMaxTrials; ++i) {
       const Shoot s = make_shoot(plans[i].phi, plans[i].speed);
-      if (plays_legally(rules, state, s.strike, targets)) return s;
+      if (plays_legally(rules, state, s, targets)) return s;
     }
     return std::nullopt;
   }
@@ -761,19 +761,21 @@ class BaselinePlayer final : public Player {
       for (double turn : {0.0, 1.0, -1.0, 2.0, -2.0, 4.0, -4.0}) {
         if (trials++ >= kMaxTrials) return std::nullopt;
         const Shoot s = make_shoot(p.phi + turn, p.speed);
-        if (plays_legally(rules, state, s.strike, targets)) return s;
+        if (plays_legally(rules, state, s, targets)) return s;
       }
     }
     return std::nullopt;
   }
 
-  /// True if the strike's first contact is one of `targets`, the cue ball
-  /// stays up, and something is pocketed or reaches a cushion after the
-  /// contact.
-  static bool plays_legally(const Rules& rules, const GameState& state, const CueStrike& strike,
+  /// True if `shot`, played without noise, first meets one of `targets`
+  /// and the game's rules find no foul in it and do not end the game
+  /// against the shooter (Rules::apply_events on the simulated events: the
+  /// ruling a real shot gets, not a copy of the rules).
+  static bool plays_legally(const Rules& rules, const GameState& state, const Shoot& shot,
                             const std::vector<int>& targets) {
+    if (rules.check(state, Action{shot})) return false;
     std::vector<int> numbers;
-    Simulation sim(rules.shot_scenario(state, strike, &numbers));
+    Simulation sim(rules.shot_scenario(state, shot.strike, &numbers));
     sim.advance_to_rest();
     if (!sim.at_rest()) return false;
     std::vector<Event> events = sim.events();
@@ -781,14 +783,15 @@ class BaselinePlayer final : public Player {
       if (e.ball >= 0) e.ball = numbers[static_cast<std::size_t>(e.ball)];
       if (e.other >= 0) e.other = numbers[static_cast<std::size_t>(e.other)];
     }
-    const ShotFacts f = rules.facts(events);
-    if (std::find(targets.begin(), targets.end(), f.first_hit) == targets.end()) return false;
-    if (std::find(f.pocketed.begin(), f.pocketed.end(), 0) != f.pocketed.end()) return false;
-    if (std::find(f.pocketed.begin(), f.pocketed.end(), 8) != f.pocketed.end() &&
-        state.game == GameType::eight_ball) {
-      return false;
+    std::vector<Vec2> rest = state.position;
+    for (std::size_t k = 0; k < numbers.size(); ++k) {
+      rest[static_cast<std::size_t>(numbers[k])] = sim.ball(k).position;
     }
-    return f.cushion_after_contact || !f.pocketed.empty();
+    const bool miscue = sim.cue_result() && sim.cue_result()->miscue;
+    const Outcome o = rules.apply_events(state, shot, std::move(events), rest, miscue);
+    if (std::find(targets.begin(), targets.end(), o.facts.first_hit) == targets.end()) return false;
+    const bool lost = o.state.phase == Phase::game_over && o.state.winner != state.player;
+    return o.ruling.fouls.empty() && !lost;
   }
 
   /// Snooker: concede when snookers are needed, play on after a foul,
