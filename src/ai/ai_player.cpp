@@ -70,6 +70,7 @@
 #include "breakshot/snooker.hpp"
 #include "carom_ai.hpp"
 #include "evaluate.hpp"
+#include "policy.hpp"
 
 namespace breakshot {
 
@@ -234,12 +235,15 @@ class AiPlayer final : public Player {
   std::optional<NoiseModel> noise() const override { return level_.noise; }
 
   Action decide(const Rules& rules, const GameState& state, std::uint64_t seed) override {
-    if (state.game == GameType::three_cushion) {
+    const ai_detail::GamePolicy& policy = ai_detail::game_policy(state.game);
+    if (policy.search == ai_detail::GamePolicy::Search::carom) {
       return ai_detail::carom_action(level_, rules, state, seed);
     }
     Budget budget(level_.simulation_budget, level_.time_budget);
     const LegalActions la = rules.legal_actions(state);
-    if (state.game == GameType::snooker) return snooker_action(rules, state, la, seed, budget);
+    if (policy.search == ai_detail::GamePolicy::Search::snooker) {
+      return snooker_action(rules, state, la, seed, budget);
+    }
     if (!la.choices.empty()) return Decide{choose(rules, state, la, seed, budget)};
     if (state.phase == Phase::break_shot) return break_action(rules, state, la, budget);
     if (la.place != BallInHand::none) return placement_or_shot(rules, state, la, seed, budget);
@@ -250,8 +254,9 @@ class AiPlayer final : public Player {
   bool searches() const { return level_.samples > 0 && level_.candidates > 0; }
   /// The shot generation for `game` (snooker's own where the level has one).
   const ShotGenOptions& generation(GameType game) const {
-    return game == GameType::snooker && level_.snooker_generation ? *level_.snooker_generation
-                                                                  : level_.generation;
+    return ai_detail::game_policy(game).snooker_generation && level_.snooker_generation
+               ? *level_.snooker_generation
+               : level_.generation;
   }
 
   // -------------------------------------------------------------------------
@@ -368,7 +373,7 @@ class AiPlayer final : public Player {
     // shot counts only if the first ball hit drops (docs/rules.md), so it
     // plays out like the safety except that such a ball keeps the turn
     // instead of ending it; the samples say which is worth more.
-    if (state.game == GameType::eight_ball && level_.samples >= 12) {
+    if (ai_detail::game_policy(state.game).unannounced_safeties && level_.samples >= 12) {
       const std::size_t n0 = cands.size();
       for (std::size_t i = 0; i < n0; ++i) {
         if (!cands[i].shot.safety) continue;
@@ -408,7 +413,7 @@ class AiPlayer final : public Player {
     std::vector<std::vector<GameState>> left(n);
     // 9-ball: the ball and pocket of each sample that potted (below).
     std::vector<std::vector<Call>> potted(n);
-    const bool nine = state.game == GameType::nine_ball;
+    const bool nine = ai_detail::game_policy(state.game).rotation;
     const bool keep = level_.lookahead;
 
     // Samples [from, to) of the candidates in `which`: one unit each.
@@ -458,7 +463,8 @@ class AiPlayer final : public Player {
     // strongest level only).
     // Snooker's values are frame chances from the score, where a missed
     // pot already costs what the opponent's visit promises: no charge.
-    const double risk = level_.lookahead && state.game != GameType::snooker ? kMissPenalty : 0.0;
+    const double risk =
+        level_.lookahead && !ai_detail::game_policy(state.game).frame_scoring ? kMissPenalty : 0.0;
     const auto mean = [&](std::size_t c) {
       if (!count[c]) return kNoValue;
       double m = sum[c] / count[c];
@@ -614,7 +620,7 @@ class AiPlayer final : public Player {
       const double stat = position_value(rules, g, shooter, sigma_);
       // Playing safe: the static value without the pot.
       const double safe =
-          g.game == GameType::snooker
+          ai_detail::game_policy(g.game).frame_scoring
               ? ai_detail::snooker_position_value(rules, g, shooter, sigma_, true)
               : stat - ai_detail::kShooterGain * best_pot_estimate(rules, g, sigma_);
       // The shooter's best pots there by promise (speed and spin variants
@@ -840,7 +846,7 @@ class AiPlayer final : public Player {
     // The head ball: the 1 in 9-ball (the only legal first ball), else
     // the object ball nearest the head rail.
     int apex = -1;
-    if (state.game == GameType::nine_ball && !la.targets.empty()) {
+    if (ai_detail::game_policy(state.game).rotation && !la.targets.empty()) {
       apex = la.targets.front();
     } else {
       for (std::size_t b = 1; b < state.on_table.size(); ++b) {
@@ -876,7 +882,7 @@ class AiPlayer final : public Player {
       // noise, measured on the engine, against 0.7 at the head spot).
       offsets = {-0.3, -0.2, -0.1, 0.0, 0.1, 0.2, 0.3};
       // 9-ball's diamond wants a little more pace (11-12 m/s).
-      speeds = state.game == GameType::nine_ball
+      speeds = ai_detail::game_policy(state.game).rotation
                    ? std::vector<double>{kBreakSpeedHard, kBreakSpeedNine}
                    : std::vector<double>{kBreakSpeedMedium, kBreakSpeedHard};
       spread = {0.0, -0.45, 0.45, -0.25, 0.25};
@@ -1063,7 +1069,7 @@ constexpr std::array<std::string_view, 5> kLevelNames{"beginner", "amateur", "cl
 }  // namespace
 
 LookaheadDepth lookahead_depth(const AiLevel& level, GameType game) {
-  const bool nine = game == GameType::nine_ball;
+  const bool nine = ai_detail::game_policy(game).rotation;
   LookaheadDepth d;
   d.candidates = nine && level.lookahead_candidates_nine > 0 ? level.lookahead_candidates_nine
                                                              : level.lookahead_candidates;

@@ -72,6 +72,7 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 #include "geometry.hpp"
+#include "policy.hpp"
 
 namespace breakshot {
 
@@ -568,8 +569,11 @@ class BaselinePlayer final : public Player {
 
   Action decide(const Rules& rules, const GameState& state, std::uint64_t /*seed*/) override {
     const LegalActions la = rules.legal_actions(state);
-    if (state.game == GameType::snooker) return snooker(rules, state, la);
-    if (state.game == GameType::three_cushion) return ai::three_cushion_shot(rules, state);
+    const ai_detail::GamePolicy& policy = ai_detail::game_policy(state.game);
+    if (policy.search == ai_detail::GamePolicy::Search::snooker) return snooker(rules, state, la);
+    if (policy.search == ai_detail::GamePolicy::Search::carom) {
+      return ai::three_cushion_shot(rules, state);
+    }
     if (!la.choices.empty()) return Decide{choose(rules, state, la)};
     if (state.phase == Phase::break_shot) return break_action(rules, state, la);
     if (la.place != BallInHand::none) {
@@ -628,7 +632,7 @@ class BaselinePlayer final : public Player {
     // Straight at the apex: the 1 in 9-ball, the object ball nearest the
     // head (the lowest x) in 8-ball.
     int apex = -1;
-    if (state.game == GameType::nine_ball && !la.targets.empty()) {
+    if (ai_detail::game_policy(state.game).rotation && !la.targets.empty()) {
       apex = la.targets.front();
     } else {
       for (std::size_t b = 1; b < state.on_table.size(); ++b) {

@@ -19,6 +19,7 @@
 
 #include "breakshot/detmath.hpp"
 #include "geometry.hpp"
+#include "policy.hpp"
 
 namespace breakshot::ai_detail {
 
@@ -79,7 +80,7 @@ double shooter_side_value(const Rules& rules, const GameState& s, double sigma) 
     p = best_pot_estimate(rules, s, sigma);
   }
   double v = shooter_value(p);
-  if (s.game == GameType::eight_ball) {
+  if (game_policy(s.game).group_progress) {
     const int me = s.player;
     v += kBallProgress * (group_left(s, s.group[static_cast<std::size_t>(1 - me)]) -
                           group_left(s, s.group[static_cast<std::size_t>(me)]));
@@ -179,7 +180,7 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
     Vec2 ghost;
     double rank;  // p, or in snooker p times what the pot is worth
   };
-  const bool snooker = state.game == GameType::snooker;
+  const bool snooker = game_policy(state.game).frame_scoring;
   std::vector<Pot> pots;
   for (const int t : targets) {
     const Vec2 b = state.position[static_cast<std::size_t>(t)];
@@ -306,7 +307,9 @@ double snooker_position_value(const Rules& rules, const GameState& after, int me
 }
 
 double position_value(const Rules& rules, const GameState& after, int me, double sigma) {
-  if (after.game == GameType::snooker) return snooker_position_value(rules, after, me, sigma, false);
+  if (game_policy(after.game).frame_scoring) {
+    return snooker_position_value(rules, after, me, sigma, false);
+  }
   const auto mine = [&](int who, double v) { return who == me ? v : -v; };
   switch (after.phase) {
     case Phase::game_over:

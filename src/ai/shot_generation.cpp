@@ -56,6 +56,7 @@
 #include "breakshot/table.hpp"
 #include "evaluate.hpp"
 #include "geometry.hpp"
+#include "policy.hpp"
 
 namespace breakshot {
 
@@ -158,15 +159,14 @@ class Generator {
         table_(rules.table()),
         R_(rules.config().ball_radius),
         m_(rules.config().ball_mass),
-        eight_(state.game == GameType::eight_ball),
-        snooker_(state.game == GameType::snooker),
-        colour_on_(snooker_ && state.snooker && state.snooker->colour_on) {
+        policy_(ai_detail::game_policy(state.game)),
+        colour_on_(state.snooker && state.snooker->colour_on) {
     layout_.pos = state.position;
     layout_.on = state.on_table;
     la_ = rules.legal_actions(state);
     // Snooker: the balls on; a free ball (any ball nominated as the ball
     // on after a foul) is not planned.
-    const std::vector<int> planned = snooker_ ? snooker_balls_on(state) : la_.targets;
+    const std::vector<int> planned = policy_.plan_balls_on ? snooker_balls_on(state) : la_.targets;
     for (int t : planned) {
       if (t <= 0 || t >= static_cast<int>(state.on_table.size()) || !on(t)) continue;
       // From the kitchen, a ball behind the head string is fair only once
@@ -190,7 +190,8 @@ class Generator {
     // Snooker's break-off is a shot like any other (at the reds, from
     // the D); the pool games' break has its own search (ai_player.cpp).
     const bool shot_phase =
-        state_.phase == Phase::shot || (snooker_ && state_.phase == Phase::break_shot);
+        state_.phase == Phase::shot ||
+        (policy_.break_is_a_shot && state_.phase == Phase::break_shot);
     if (!shot_phase || !la_.shoot || !on(0) || targets_.empty()) return out;
     std::vector<Line> lines;
     // Whether each target has a direct pot into each pocket: kicks are
@@ -208,7 +209,7 @@ class Generator {
     // Jumps over the balls that block a direct pot (physics.airborne).
     // Snooker has no jump shots: the cue ball jumping over a ball is a
     // foul (docs/rules.md).
-    if (opt_.jumps && base_.physics.airborne && !snooker_) {
+    if (opt_.jumps && base_.physics.airborne && policy_.jumps) {
       for (int t : targets_) {
         for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
           if (direct_ok[static_cast<std::size_t>(t)][k]) continue;
@@ -597,13 +598,14 @@ class Generator {
   /// legal target (so the call is a ball of the shooter's group).
   std::vector<int> combination_targets(int f) const {
     std::vector<int> out;
-    if (eight_) {
+    using Combinations = ai_detail::GamePolicy::Combinations;
+    if (policy_.combinations == Combinations::own_group) {
       for (int t : targets_) {
         if (t != f && t != 8) out.push_back(t);
       }
       return out;
     }
-    if (snooker_) {
+    if (policy_.combinations == Combinations::reds_only) {
       // Snooker: a red off a red. A colour must be both hit first and
       // potted (the nominated ball), so colours have no combinations.
       if (colour_on_) return out;
@@ -1007,7 +1009,7 @@ class Generator {
   double leave(const Judged& j) const {
     if (j.wins) return 1.0;
     if (j.next.phase == Phase::game_over || j.next.player != state_.player) return 0.0;
-    if (snooker_) {
+    if (policy_.frame_scoring) {
       // What the next pot is worth, not only its chance: p (value +
       // carry) as the estimate ranks pots, scaled so that a sure black
       // is 1. A black at 0.8 then outranks a yellow at 0.85.
@@ -1150,9 +1152,8 @@ class Generator {
   const Table& table_;
   double R_;
   double m_;
-  bool eight_;
-  bool snooker_;    // snooker (its pots and safeties are ruled as snooker's)
-  bool colour_on_;  // snooker: a colour is on after a red (it must be nominated)
+  const ai_detail::GamePolicy& policy_;  // the game's strategy (policy.hpp)
+  bool colour_on_;  // snooker: a colour is on after a red
   LegalActions la_;
   std::vector<int> targets_;  // legal first balls that may be aimed at
   Layout layout_;
