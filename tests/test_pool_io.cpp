@@ -511,7 +511,7 @@ TEST(PoolInvalid, Racks) {
   doc["rack"]["game"] = "straight_pool";
   expect_invalid(doc, "rack.game",
                  "unknown game \"straight_pool\" (expected \"eight_ball\", \"nine_ball\", "
-                 "\"snooker\" or \"three_cushion\")");
+                 "\"ten_ball\", \"snooker\" or \"three_cushion\")");
   doc["rack"].erase("game");
   expect_invalid(doc, "rack.game", "missing required field");
   doc = pool_break();

@@ -594,7 +594,7 @@ TEST(Rack, OrderVariesWithTheSeed) {
 
 TEST(Rack, RejectsBadInput) {
   const Table t = make_pool_table("7ft");
-  EXPECT_THROW(make_rack("ten_ball", t, kBallR, 1), std::invalid_argument);
+  EXPECT_THROW(make_rack("straight_pool", t, kBallR, 1), std::invalid_argument);
   EXPECT_THROW(make_rack("", t, kBallR, 1), std::invalid_argument);
   EXPECT_THROW(make_rack("eight_ball", t, 0.0, 1), std::invalid_argument);
   EXPECT_THROW(make_rack("eight_ball", t, -kBallR, 1), std::invalid_argument);

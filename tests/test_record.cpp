@@ -241,8 +241,8 @@ TEST(RecordIo, MalformedRecordsNameThePath) {
       {"unknown ball in hand", [](ojson& j) { j["start"]["ball_in_hand"] = "kitchenette"; },
        "start.ball_in_hand", "unknown ball_in_hand"},
       {"unknown game", [](ojson& j) { j["config"]["game"] = "bowls"; }, "config.game",
-       "unknown game \"bowls\" (expected \"eight_ball\", \"nine_ball\", \"snooker\" or "
-       "\"three_cushion\")"},
+       "unknown game \"bowls\" (expected \"eight_ball\", \"nine_ball\", \"snooker\", "
+       "\"three_cushion\" or \"ten_ball\")"},
       {"unknown action", [](ojson& j) { j["actions"][0]["action"]["type"] = "jump"; },
        "actions[0].action.type", "unknown action type"},
       {"field of another action type",

@@ -2,7 +2,8 @@
 // play matches between computer players; replay game records.
 //
 //   breakshot simulate FILE|- [-o PATH] [--plot PREFIX]
-//   breakshot match --game eight_ball|nine_ball|snooker|three_cushion --players A,B --games N
+//   breakshot match --game eight_ball|nine_ball|ten_ball|snooker|three_cushion --players A,B
+//                   --games N
 //                   --seed S --noise LEVEL [--table 7ft|8ft|9ft|12ft|10ft] [--records DIR]
 //                   [--timing]
 //                   [--target N] [--innings-limit N] [--equalizing-inning on|off] (three-cushion)
@@ -317,7 +318,7 @@ bs::MatchOptions match_options(const MatchArgs& a) {
   const auto game = bs::parse_game_type(a.game);
   if (!game) {
     throw BadArgument{"--game: unknown game '" + a.game +
-                      "' (eight_ball, nine_ball, snooker or three_cushion)"};
+                      "' (eight_ball, nine_ball, ten_ball, snooker or three_cushion)"};
   }
   opt.game = *game;
 
@@ -589,7 +590,8 @@ int main(int argc, char** argv) {
   MatchArgs match_args;
   CLI::App* match = app.add_subcommand(
       "match", "Play games between computer players and print a summary (JSON)");
-  match->add_option("--game", match_args.game, "eight_ball, nine_ball, snooker or three_cushion")
+  match->add_option("--game", match_args.game,
+                    "eight_ball, nine_ball, ten_ball, snooker or three_cushion")
       ->type_name("GAME")
       ->required();
   match->add_option("--players", match_args.players,

@@ -39,9 +39,10 @@ class Ruleset;
 /// The fastest cue stick a game accepts (m/s); a hard break is about 11.
 inline constexpr double kMaxCueSpeed = 20.0;
 
-enum class GameType : std::uint8_t { eight_ball, nine_ball, snooker, three_cushion };
+enum class GameType : std::uint8_t { eight_ball, nine_ball, snooker, three_cushion, ten_ball };
 std::string_view to_string(GameType g);
-/// "eight_ball", "nine_ball", "snooker" or "three_cushion"; nullopt otherwise.
+/// "eight_ball", "nine_ball", "snooker", "three_cushion" or "ten_ball"; nullopt
+/// otherwise.
 std::optional<GameType> parse_game_type(std::string_view s);
 /// The names of every game the library plays, in GameType order.
 std::vector<std::string> game_type_names();

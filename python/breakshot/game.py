@@ -314,9 +314,9 @@ class State:
 
     @property
     def lowest_ball(self) -> Optional[int]:
-        """9-ball: the lowest-numbered object ball on the table (the ball
-        on); None in other games or with none left."""
-        if self.game != "nine_ball":
+        """9-ball and 10-ball: the lowest-numbered object ball on the table
+        (the ball on); None in other games or with none left."""
+        if self.game not in ("nine_ball", "ten_ball"):
             return None
         on = [i for i in range(1, len(self.on_table)) if self.on_table[i]]
         return min(on) if on else None

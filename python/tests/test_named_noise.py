@@ -58,3 +58,4 @@ def test_bad_names_are_value_errors(name, message, run_cli):
                 "--seed", "1", "--noise", "none")
     assert r.returncode == 2
     assert message in r.stderr
+

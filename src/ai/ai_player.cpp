@@ -508,13 +508,16 @@ class AiPlayer final : public Player {
     for (std::size_t c : order) {
       if (value[c] > value[best] || (value[c] == value[best] && c < best)) best = c;
     }
-    // 9-ball: the call is information only (it marks a pot attempt for
-    // the statistics), so a safety or kick whose samples mostly pocket
-    // one ball in one pocket is called for it, as the pot it is expected
-    // to be.
+    // A rotation game whose shots need no call (9-ball: the call is
+    // information only, a pot attempt for the statistics): a safety or
+    // kick whose samples mostly pocket one ball in one pocket is called
+    // for it, as the pot it is expected to be. Where the rules want every
+    // shot called or declared safe (10-ball), the safety stays declared.
     Shoot chosen = cands[best].shot;
-    if (nine && !chosen.call) {
-      chosen.call = expected_pot(potted[best], count[best]);
+    if (nine && !chosen.call && !chosen.safety) {
+      Shoot called = chosen;
+      called.call = expected_pot(potted[best], count[best]);
+      if (called.call && !rules.check(state, Action{called})) chosen = called;
     }
     return Evaluated{chosen, value[best]};
   }

@@ -47,6 +47,8 @@ const GamePolicy& game_policy(GameType game) {
   static constexpr GamePolicy kNine = nine_ball();
   static constexpr GamePolicy kSnooker = snooker();
   static constexpr GamePolicy kCarom = three_cushion();
+  // 10-ball plays 9-ball's rotation strategy (its calls and its choice
+  // after a ball pocketed wrongly come from its rules).
   switch (game) {
     case GameType::eight_ball:
       return kEight;
@@ -56,6 +58,8 @@ const GamePolicy& game_policy(GameType game) {
       return kSnooker;
     case GameType::three_cushion:
       return kCarom;
+    case GameType::ten_ball:
+      return kNine;
   }
   throw std::invalid_argument("game_policy: not a game");
 }

@@ -143,7 +143,7 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
   // balls[i] is the number of the ball on lattice spot i.
   std::vector<Vec2> spots;
   std::vector<int> balls;
-  if ((game == "eight_ball" || game == "nine_ball") &&
+  if ((game == "eight_ball" || game == "nine_ball" || game == "ten_ball") &&
       (table.shape == "snooker" || table.shape == "carom")) {
     throw std::invalid_argument("the " + game + " rack needs a pool table");
   }
@@ -200,6 +200,20 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
     for (int& b : balls) {
       if (b == 0) b = rest[next++];
     }
+  } else if (game == "ten_ball") {
+    // A triangle of 1-2-3-4 (WPA 10-ball): the 1 at the apex on the foot
+    // spot (spot 0), the 10 in the middle of the third row (spot 4), the
+    // others at random.
+    spots = lattice(table.foot_spot, spacing, {1, 2, 3, 4});
+    std::vector<int> rest{2, 3, 4, 5, 6, 7, 8, 9};
+    draws.shuffle(rest);
+    balls.assign(10, 0);
+    balls[0] = 1;
+    balls[4] = 10;
+    std::size_t next = 0;
+    for (int& b : balls) {
+      if (b == 0) b = rest[next++];
+    }
   } else if (game == "snooker") {
     if (table.shape != "snooker") {
       throw std::invalid_argument("the snooker rack needs a snooker table");
@@ -208,7 +222,8 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
   } else {
     throw std::invalid_argument(
         "unknown game \"" + game +
-        "\" (expected \"eight_ball\", \"nine_ball\", \"snooker\" or \"three_cushion\")");
+        "\" (expected \"eight_ball\", \"nine_ball\", \"ten_ball\", \"snooker\" or "
+        "\"three_cushion\")");
   }
 
   for (std::size_t i = 1; i < spots.size(); ++i) spots[i] += draws.in_disk() * kJitter;

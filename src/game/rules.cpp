@@ -125,6 +125,8 @@ std::shared_ptr<const detail::Ruleset> make_ruleset(GameType game) {
       return detail::make_snooker_ruleset();
     case GameType::three_cushion:
       return detail::make_three_cushion_ruleset();
+    case GameType::ten_ball:
+      return detail::make_ten_ball_ruleset();
   }
   throw std::invalid_argument("unknown game type");
 }
@@ -235,7 +237,7 @@ GameState Rules::start(std::uint64_t rack_seed, int breaker) const {
   s.position.assign(static_cast<std::size_t>(ball_count()), Vec2{});
   s.on_table.assign(static_cast<std::size_t>(ball_count()), 0);
   if (ruleset_->start(*this, rack_seed, breaker, s)) return s;
-  const std::string game = config_.game == GameType::eight_ball ? "eight_ball" : "nine_ball";
+  const std::string game(to_string(config_.game));
   for (const RackedBall& b : make_rack(game, table_, config_.ball_radius, rack_seed)) {
     const auto n = static_cast<std::size_t>(std::stoi(b.id));
     s.position[n] = b.position;

@@ -18,8 +18,8 @@ std::optional<E> parse(std::string_view s, const std::array<std::string_view, N>
   return std::nullopt;
 }
 
-constexpr std::array<std::string_view, 4> kGameNames{"eight_ball", "nine_ball", "snooker",
-                                                     "three_cushion"};
+constexpr std::array<std::string_view, 5> kGameNames{"eight_ball", "nine_ball", "snooker",
+                                                     "three_cushion", "ten_ball"};
 constexpr std::array<std::string_view, 3> kGroupNames{"none", "solids", "stripes"};
 constexpr std::array<std::string_view, 7> kPhaseNames{
     "break_shot", "shot", "push_out_choice", "illegal_break_choice", "eight_on_break_choice",

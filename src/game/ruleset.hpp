@@ -142,5 +142,6 @@ std::shared_ptr<const Ruleset> make_eight_ball_ruleset();
 std::shared_ptr<const Ruleset> make_nine_ball_ruleset();
 std::shared_ptr<const Ruleset> make_snooker_ruleset();
 std::shared_ptr<const Ruleset> make_three_cushion_ruleset();
+std::shared_ptr<const Ruleset> make_ten_ball_ruleset();
 
 }  // namespace breakshot::detail

@@ -14,7 +14,7 @@ namespace {
 
 // Every value of each enum, for the messages that list them.
 constexpr GameType kGameTypes[] = {GameType::eight_ball, GameType::nine_ball, GameType::snooker,
-                                   GameType::three_cushion};
+                                   GameType::three_cushion, GameType::ten_ball};
 constexpr Phase kPhases[] = {Phase::break_shot,           Phase::shot,
                              Phase::push_out_choice,      Phase::illegal_break_choice,
                              Phase::eight_on_break_choice, Phase::game_over,

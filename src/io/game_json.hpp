@@ -93,7 +93,7 @@ class GameReader : public Reader {
   bool ruling(const json& v, const std::string& path, Ruling& r);
   bool action(const json& v, const std::string& path, Action& a);
 
-  /// A game name: "eight_ball", "nine_ball", "snooker" or "three_cushion".
+  /// A game name: "eight_ball", "nine_ball", "ten_ball", "snooker" or "three_cushion".
   bool game_type(const json& v, const std::string& path, GameType& out);
   /// A table size: "7ft", "8ft" or "9ft"; "12ft" when game_context is
   /// snooker, "10ft" when it is three_cushion.

@@ -568,15 +568,16 @@ bool ScenarioReader::read_rack(const json& v, Scenario& s) {
   const std::string game_path = "rack.game";
   if (game_v == nullptr) {
     return fail(game_path,
-                "missing required field (\"eight_ball\", \"nine_ball\", \"snooker\" or "
-                "\"three_cushion\")");
+                "missing required field (\"eight_ball\", \"nine_ball\", \"ten_ball\", "
+                "\"snooker\" or \"three_cushion\")");
   }
   if (!game_v->is_string()) return fail(game_path, expected("a string", *game_v));
   const std::string game = game_v->get<std::string>();
-  if (game != "eight_ball" && game != "nine_ball" && game != "snooker" && game != "three_cushion") {
+  if (game != "eight_ball" && game != "nine_ball" && game != "ten_ball" && game != "snooker" &&
+      game != "three_cushion") {
     return fail(game_path, "unknown game \"" + game +
-                               "\" (expected \"eight_ball\", \"nine_ball\", \"snooker\" "
-                               "or \"three_cushion\")");
+                               "\" (expected \"eight_ball\", \"nine_ball\", \"ten_ball\", "
+                               "\"snooker\" or \"three_cushion\")");
   }
   const bool snooker = game == "snooker";
   const bool carom = game == "three_cushion";
