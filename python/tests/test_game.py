@@ -24,7 +24,7 @@ def play_out(game, players):
 
 
 def test_games_and_players_come_from_the_cpp_side():
-    assert breakshot.games() == ["eight_ball", "nine_ball", "snooker", "three_cushion"]
+    assert breakshot.games() == ["eight_ball", "nine_ball", "snooker", "three_cushion", "ten_ball"]
     assert breakshot.players()[0] == "baseline"
     assert set(breakshot.players()[1:]) == {"beginner", "amateur", "club", "expert", "champion"}
 

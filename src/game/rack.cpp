@@ -187,29 +187,20 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
     for (int& b : balls) {
       if (b == 0) b = rest[next++];
     }
-  } else if (game == "nine_ball") {
-    // A diamond of 1-2-3-2-1: the 1 at the apex (spot 0), the 9 in the
-    // middle (spot 4).
-    spots = lattice(table.foot_spot, spacing, {1, 2, 3, 2, 1});
-    std::vector<int> rest{2, 3, 4, 5, 6, 7, 8};
+  } else if (game == "nine_ball" || game == "ten_ball") {
+    // The rotation racks (WPA): 9-ball a diamond of 1-2-3-2-1, 10-ball a
+    // triangle of 1-2-3-4; the 1 at the apex (spot 0), the game ball in
+    // the middle of the third row (spot 4), the others at random.
+    const bool nine = game == "nine_ball";
+    const int game_ball = nine ? 9 : 10;
+    spots = lattice(table.foot_spot, spacing,
+                    nine ? std::vector<int>{1, 2, 3, 2, 1} : std::vector<int>{1, 2, 3, 4});
+    std::vector<int> rest;
+    for (int n = 2; n < game_ball; ++n) rest.push_back(n);
     draws.shuffle(rest);
-    balls.assign(9, 0);
+    balls.assign(static_cast<std::size_t>(game_ball), 0);
     balls[0] = 1;
-    balls[4] = 9;
-    std::size_t next = 0;
-    for (int& b : balls) {
-      if (b == 0) b = rest[next++];
-    }
-  } else if (game == "ten_ball") {
-    // A triangle of 1-2-3-4 (WPA 10-ball): the 1 at the apex on the foot
-    // spot (spot 0), the 10 in the middle of the third row (spot 4), the
-    // others at random.
-    spots = lattice(table.foot_spot, spacing, {1, 2, 3, 4});
-    std::vector<int> rest{2, 3, 4, 5, 6, 7, 8, 9};
-    draws.shuffle(rest);
-    balls.assign(10, 0);
-    balls[0] = 1;
-    balls[4] = 10;
+    balls[4] = game_ball;
     std::size_t next = 0;
     for (int& b : balls) {
       if (b == 0) b = rest[next++];

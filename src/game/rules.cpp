@@ -42,6 +42,30 @@ std::string join_fouls(const std::vector<Foul>& fouls) {
   return out;
 }
 
+std::vector<int> lowest_ball(const GameState& s) {
+  const auto n = static_cast<int>(s.on_table.size());
+  for (int b = 1; b < n; ++b) {
+    if (s.on_table[static_cast<std::size_t>(b)]) return {b};
+  }
+  return {};
+}
+
+void rotation_reply(DecisionRuling& d, Choice choice, const std::string& taken,
+                    const std::string& handed) {
+  GameState& s = d.s;
+  if (choice != Choice::shoot && choice != Choice::pass_back) return;  // refused by check()
+  s.phase = Phase::shot;
+  s.ball_in_hand = BallInHand::none;
+  s.after_push_out = false;
+  if (choice == Choice::shoot) {
+    d.r.text = d.who + " " + taken + ".";
+    return;
+  }
+  d.pass_turn();
+  d.r.turn_continues = false;
+  d.r.text = d.who + " " + handed + " " + player_name(d.opp) + ".";
+}
+
 std::optional<std::string> check_called_pocket(const Rules& rules, const Call& call) {
   const auto pockets = rules.table().pockets.size();
   if (call.pocket < 0 || call.pocket >= static_cast<int>(pockets)) {

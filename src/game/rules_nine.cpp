@@ -19,13 +19,7 @@ class NineBall final : public Ruleset {
     return pool_foul_kinds();
   }
 
-  std::vector<int> targets(const GameState& s) const override {
-    const auto n = static_cast<int>(s.on_table.size());
-    for (int b = 1; b < n; ++b) {
-      if (s.on_table[static_cast<std::size_t>(b)]) return {b};
-    }
-    return {};
-  }
+  std::vector<int> targets(const GameState& s) const override { return lowest_ball(s); }
 
   std::vector<Choice> choices(Phase phase) const override {
     if (phase == Phase::push_out_choice) return {Choice::shoot, Choice::pass_back};
@@ -57,25 +51,7 @@ class NineBall final : public Ruleset {
   }
 
   void decide(DecisionRuling& d, Choice choice) const override {
-    GameState& s = d.s;
-    switch (choice) {
-      case Choice::shoot:
-        s.phase = Phase::shot;
-        s.ball_in_hand = BallInHand::none;
-        s.after_push_out = false;
-        d.r.text = d.who + " takes the table after the push-out.";
-        break;
-      case Choice::pass_back:
-        s.phase = Phase::shot;
-        s.ball_in_hand = BallInHand::none;
-        s.after_push_out = false;
-        d.pass_turn();
-        d.r.turn_continues = false;
-        d.r.text = d.who + " passes the shot back to " + player_name(d.opp) + ".";
-        break;
-      default:
-        break;  // not on offer in 9-ball: check() refuses them
-    }
+    rotation_reply(d, choice, "takes the table after the push-out", "passes the shot back to");
   }
 
   void rule_shot(ShotRuling& x) const override {

@@ -24,13 +24,7 @@ class TenBall final : public Ruleset {
 
   std::vector<Foul> foul_kinds() const override { return pool_foul_kinds(); }
 
-  std::vector<int> targets(const GameState& s) const override {
-    const auto n = static_cast<int>(s.on_table.size());
-    for (int b = 1; b < n; ++b) {
-      if (s.on_table[static_cast<std::size_t>(b)]) return {b};
-    }
-    return {};
-  }
+  std::vector<int> targets(const GameState& s) const override { return lowest_ball(s); }
 
   std::vector<Choice> choices(Phase phase) const override {
     // After a push-out, and after a ball pocketed wrongly: the incoming
@@ -74,25 +68,7 @@ class TenBall final : public Ruleset {
   }
 
   void decide(DecisionRuling& d, Choice choice) const override {
-    GameState& s = d.s;
-    switch (choice) {
-      case Choice::shoot:
-        s.phase = Phase::shot;
-        s.ball_in_hand = BallInHand::none;
-        s.after_push_out = false;
-        d.r.text = d.who + " takes the table.";
-        break;
-      case Choice::pass_back:
-        s.phase = Phase::shot;
-        s.ball_in_hand = BallInHand::none;
-        s.after_push_out = false;
-        d.pass_turn();
-        d.r.turn_continues = false;
-        d.r.text = d.who + " hands the shot back to " + player_name(d.opp) + ".";
-        break;
-      default:
-        break;  // not on offer in 10-ball: check() refuses them
-    }
+    rotation_reply(d, choice, "takes the table", "hands the shot back to");
   }
 
   void rule_shot(ShotRuling& x) const override {

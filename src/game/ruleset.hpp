@@ -130,6 +130,17 @@ class Ruleset {
   }
 };
 
+/// The rotation games' (9-ball, 10-ball) legal first ball: the
+/// lowest-numbered object ball on the table.
+std::vector<int> lowest_ball(const GameState& s);
+
+/// The rotation games' reply to a push-out (and 10-ball's to a ball
+/// pocketed wrongly), Choice::shoot or Choice::pass_back, with the words
+/// of each game: `taken` ("takes the table after the push-out") and
+/// `handed` ("passes the shot back to") follow the player's name.
+void rotation_reply(DecisionRuling& d, Choice choice, const std::string& taken,
+                    const std::string& handed);
+
 /// Why a call's pocket does not exist on the rules' table, or nullopt.
 std::optional<std::string> check_called_pocket(const Rules& rules, const Call& call);
 
