@@ -66,6 +66,33 @@ void rotation_reply(DecisionRuling& d, Choice choice, const std::string& taken,
   d.r.text = d.who + " " + handed + " " + player_name(d.opp) + ".";
 }
 
+void rotation_foul(ShotRuling& x, int game_ball, bool spot_game_ball) {
+  Ruling& r = x.r;
+  if (spot_game_ball) x.spot(game_ball);
+  auto& streak = x.s.fouls_in_a_row[static_cast<std::size_t>(x.shooter)];
+  streak += 1;
+  if (streak >= 3) {
+    x.game_over(x.opp, x.who + " fouled three times in a row");
+    r.text = x.what + "Foul (" + join_fouls(r.fouls) +
+             "), the third in a row: " + player_name(x.opp) + " wins.";
+    return;
+  }
+  x.ball_in_hand_for_opponent(BallInHand::anywhere);
+  r.text = x.what + "Foul (" + join_fouls(r.fouls) + "): " + player_name(x.opp) +
+           " has the cue ball in hand" +
+           (spot_game_ball ? "; the " + std::to_string(game_ball) + " is spotted" : "") +
+           (streak == 2 ? "; " + x.who + " is on two fouls" : "") + ".";
+}
+
+std::optional<std::string> check_call(const Rules& rules, const GameState& s, const Call& call,
+                                      int ball_count) {
+  if (auto why = check_called_pocket(rules, call)) return why;
+  if (call.ball < 1 || call.ball >= ball_count || !s.on_table[static_cast<std::size_t>(call.ball)]) {
+    return "called ball " + std::to_string(call.ball) + " is not on the table";
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> check_called_pocket(const Rules& rules, const Call& call) {
   const auto pockets = rules.table().pockets.size();
   if (call.pocket < 0 || call.pocket >= static_cast<int>(pockets)) {

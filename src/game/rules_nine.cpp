@@ -36,12 +36,7 @@ class NineBall final : public Ruleset {
     if (shot.nominate) return "9-ball has no nominated ball (nominate is snooker's)";
     if (shot.call) {
       // Informational only: a valid pocket and an object ball on the table.
-      const Call& call = *shot.call;
-      if (auto why = check_called_pocket(rules, call)) return why;
-      if (call.ball < 1 || call.ball >= ball_count() ||
-          !s.on_table[static_cast<std::size_t>(call.ball)]) {
-        return "called ball " + std::to_string(call.ball) + " is not on the table";
-      }
+      if (auto why = check_call(rules, s, *shot.call, ball_count())) return why;
       if (shot.push_out) return "a push-out is not a pot attempt: it has no call";
     }
     if (shot.push_out && !(s.phase == Phase::shot && s.push_out_allowed)) {
@@ -90,18 +85,7 @@ class NineBall final : public Ruleset {
     auto& streak = s.fouls_in_a_row[static_cast<std::size_t>(x.shooter)];
     s.push_out_allowed = is_break;  // the shot after the break may be a push-out
     if (!fouls.empty()) {
-      if (nine_in || nine_off) x.spot(9);
-      streak += 1;
-      if (streak >= 3) {
-        x.game_over(x.opp, who + " fouled three times in a row");
-        r.text = what + "Foul (" + join_fouls(fouls) +
-                 "), the third in a row: " + player_name(x.opp) + " wins.";
-      } else {
-        x.ball_in_hand_for_opponent(BallInHand::anywhere);
-        r.text = what + "Foul (" + join_fouls(fouls) + "): " + player_name(x.opp) +
-                 " has the cue ball in hand" + (nine_in || nine_off ? "; the 9 is spotted" : "") +
-                 (streak == 2 ? "; " + who + " is on two fouls" : "") + ".";
-      }
+      rotation_foul(x, 9, nine_in || nine_off);
     } else if (shot.push_out) {
       streak = 0;
       if (nine_in) x.spot(9);

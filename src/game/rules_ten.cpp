@@ -57,12 +57,7 @@ class TenBall final : public Ruleset {
       return "10-ball: every shot but the break calls a ball and a pocket, or is a safety";
     }
     if (shot.call) {
-      const Call& call = *shot.call;
-      if (auto why = check_called_pocket(rules, call)) return why;
-      if (call.ball < 1 || call.ball >= ball_count() ||
-          !s.on_table[static_cast<std::size_t>(call.ball)]) {
-        return "called ball " + std::to_string(call.ball) + " is not on the table";
-      }
+      if (auto why = check_call(rules, s, *shot.call, ball_count())) return why;
     }
     return std::nullopt;
   }
@@ -103,18 +98,7 @@ class TenBall final : public Ruleset {
     auto& streak = s.fouls_in_a_row[static_cast<std::size_t>(x.shooter)];
     s.push_out_allowed = is_break;  // the shot after the break may be a push-out
     if (!fouls.empty()) {
-      if (ten_in || ten_off) x.spot(kTen);
-      streak += 1;
-      if (streak >= 3) {
-        x.game_over(x.opp, who + " fouled three times in a row");
-        r.text = what + "Foul (" + join_fouls(fouls) +
-                 "), the third in a row: " + player_name(x.opp) + " wins.";
-      } else {
-        x.ball_in_hand_for_opponent(BallInHand::anywhere);
-        r.text = what + "Foul (" + join_fouls(fouls) + "): " + player_name(x.opp) +
-                 " has the cue ball in hand" + (ten_in || ten_off ? "; the 10 is spotted" : "") +
-                 (streak == 2 ? "; " + who + " is on two fouls" : "") + ".";
-      }
+      rotation_foul(x, kTen, ten_in || ten_off);
       return;
     }
     streak = 0;

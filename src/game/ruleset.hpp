@@ -141,6 +141,17 @@ std::vector<int> lowest_ball(const GameState& s);
 void rotation_reply(DecisionRuling& d, Choice choice, const std::string& taken,
                     const std::string& handed);
 
+/// A foul in a rotation game: the game ball spotted if it went down or
+/// left the table (`spot_game_ball`), the shooter's foul count raised, and
+/// either the rack lost on the third foul in a row or the cue ball in hand
+/// anywhere for the opponent, with the ruling's words.
+void rotation_foul(ShotRuling& x, int game_ball, bool spot_game_ball);
+
+/// Why `call` (a pocket and an object ball of the `ball_count` balls) is
+/// not one on this table and state, or nullopt.
+std::optional<std::string> check_call(const Rules& rules, const GameState& s, const Call& call,
+                                      int ball_count);
+
 /// Why a call's pocket does not exist on the rules' table, or nullopt.
 std::optional<std::string> check_called_pocket(const Rules& rules, const Call& call);
 
