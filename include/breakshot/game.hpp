@@ -437,6 +437,24 @@ inline constexpr double kCaromTipContact = 1e-3;
 /// defaults; the other fields GameConfig's defaults.
 GameConfig three_cushion_config();
 
+/// Where a game stands for each side, as its rules count it: what the
+/// AI's value of a table (src/ai/evaluate.cpp) and other readers weigh,
+/// without knowing the game (docs/rules.md, "Standing").
+struct Standing {
+  /// Points each player has: snooker's frame score, three-cushion's
+  /// points; 0 in the games that do not count points.
+  std::array<int, 2> score{0, 0};
+  /// The most points the player to act can still score from the table
+  /// (snooker_points_remaining); -1 where points are not scored from the
+  /// table.
+  int points_left = -1;
+  /// Balls each player must still pocket before the game ball: 8-ball's
+  /// group balls on the table once the groups are set; -1 where the game
+  /// has no such count or the table is open.
+  std::array<int, 2> balls_to_go{-1, -1};
+  bool operator==(const Standing&) const = default;
+};
+
 /// Memory one thread reuses from shot to shot in Rules::apply: the shot's
 /// scenario, its balls' numbers and its simulation, re-armed for each
 /// shot. Not to be shared between threads.
@@ -473,6 +491,16 @@ class Rules {
   LegalActions legal_actions(const GameState& state) const;
   /// Balls the player to act may legally hit first.
   std::vector<int> targets(const GameState& state) const;
+  /// The balls on for the player to act: the balls a rule names as the
+  /// ones to play (snooker_balls_on; a free ball is not one of them); in
+  /// the other games, targets(state).
+  std::vector<int> balls_on(const GameState& state) const;
+  /// Points a legal pot of ball number `ball` scores: snooker's values
+  /// (snooker_value); 1 for an object ball of the pool games; 0 for the
+  /// cue ball, a number the game has not, and three-cushion's balls.
+  int ball_value(int ball) const;
+  /// Where `state` stands for each side (Standing).
+  Standing standing(const GameState& state) const;
   /// The foul kinds of this game, in the order match summaries list them:
   /// ball_off_table only when the physics is airborne (no ball can leave
   /// the table otherwise).

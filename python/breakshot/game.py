@@ -54,9 +54,10 @@ class Shot:
     speed in m/s (at most 20), ``a`` and ``b`` the tip offsets across
     (right english > 0) and up (follow > 0) as fractions of the ball's
     radius. ``call`` is None or a :class:`Call` (or a (ball, pocket)
-    pair): required in 8-ball when the 8 is the target, informational in
-    9-ball. ``safety`` declares an 8-ball safety, ``push_out`` a 9-ball
-    push-out. ``nominate`` (snooker only) is the ball number nominated as
+    pair): required in 8-ball when the 8 is the target and in 10-ball on
+    every shot but the break (unless ``safety``), informational in 9-ball.
+    ``safety`` declares a safety (8-ball, 10-ball), ``push_out`` a push-out
+    (9-ball, 10-ball). ``nominate`` (snooker only) is the ball number nominated as
     the ball on: required after a red (a colour, 16 yellow ... 21 black,
     see ``LegalActions.must_nominate``) and to take a free ball.
     ``cue_ball`` (three-cushion only) names the ball the cue strikes; None

@@ -818,7 +818,7 @@ class BaselinePlayer final : public Player {
 
   static Action snooker_shot(const Rules& rules, const GameState& state, const LegalActions& la) {
     const Planner planner(rules, state);
-    const std::vector<int> on = snooker_balls_on(state);  // a free ball is not taken
+    const std::vector<int> on = rules.balls_on(state);  // a free ball is not taken
     const Options o = options(planner, on, false);
     const Vec2 cue = planner.pos(0);
     const auto nominate = [&](Shoot s, int ball) {

@@ -59,15 +59,6 @@ Vec2 mouth_direction(const Table& t, Vec2 centre, bool* side) {
   return d / norm(d);
 }
 
-/// 8-ball: balls of `g` still on the table.
-int group_left(const GameState& s, Group g) {
-  if (g == Group::none) return 0;
-  int n = 0;
-  const std::size_t lo = g == Group::solids ? 1 : 9;
-  for (std::size_t b = lo; b < lo + 7 && b < s.on_table.size(); ++b) n += s.on_table[b];
-  return n;
-}
-
 /// The value of a shot/break phase table to its shooter.
 double shooter_side_value(const Rules& rules, const GameState& s, double sigma) {
   if (s.phase == Phase::break_shot) return 0.1;  // a fresh rack to break: a small edge
@@ -80,10 +71,12 @@ double shooter_side_value(const Rules& rules, const GameState& s, double sigma) 
     p = best_pot_estimate(rules, s, sigma);
   }
   double v = shooter_value(p);
-  if (game_policy(s.game).group_progress) {
-    const int me = s.player;
-    v += kBallProgress * (group_left(s, s.group[static_cast<std::size_t>(1 - me)]) -
-                          group_left(s, s.group[static_cast<std::size_t>(me)]));
+  // Progress toward the game ball where the rules count balls to go
+  // (8-ball's groups): each ball counted against the opponent's.
+  const Standing st = rules.standing(s);
+  const auto to_go = [&](int who) { return std::max(0, st.balls_to_go[static_cast<std::size_t>(who)]); };
+  if (st.balls_to_go[0] >= 0 || st.balls_to_go[1] >= 0) {
+    v += kBallProgress * (to_go(1 - s.player) - to_go(s.player));
   }
   return std::clamp(v, -kOpenBound, kOpenBound);
 }
@@ -210,7 +203,7 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
       const double miss = std::max(e * d1 * d2 / (2.0 * R * cos_cut), 1e-9);
       double p = dm::erf(tol / (std::sqrt(2.0) * miss));
       p /= 1.0 + kDistancePenalty * (d1 + d2);
-      const double rank = snooker ? p * (snooker_value(t) + kSnookerCarry) : p;
+      const double rank = snooker ? p * (rules.ball_value(t) + kSnookerCarry) : p;
       pots.push_back(Pot{p, t, static_cast<int>(k), ghost, rank});
     }
   }
@@ -240,15 +233,16 @@ double snooker_visit_points(const Rules& rules, const GameState& s, double sigma
   double p = 0.0;
   if (!s.on_table[0] || s.ball_in_hand != BallInHand::none) {
     p = kSnookerHandP;
-    const std::vector<int> on = snooker_balls_on(s);
+    const std::vector<int> on = rules.balls_on(s);
     if (!on.empty()) ball = on.front();
   } else {
     p = best_pot_estimate_from(rules, s, s.position[0], false, sigma, &ball);
     if (ball < 0 && snookered(rules, s)) return -kSnookeredPoints;
   }
   if (ball <= 0) return 0.0;
-  const double after_pot = static_cast<double>(snooker_points_remaining(s) - snooker_value(ball));
-  return p * (snooker_value(ball) + std::min(kSnookerCarry, std::max(0.0, after_pot)));
+  const double value = rules.ball_value(ball);
+  const double after_pot = static_cast<double>(rules.standing(s).points_left) - value;
+  return p * (value + std::min(kSnookerCarry, std::max(0.0, after_pot)));
 }
 
 bool snookered(const Rules& rules, const GameState& s) {
@@ -256,7 +250,7 @@ bool snookered(const Rules& rules, const GameState& s) {
   const double R = rules.config().ball_radius;
   const ai::Layout lay{s.position, s.on_table};
   const Vec2 cue = s.position[0];
-  for (const int t : snooker_balls_on(s)) {
+  for (const int t : rules.balls_on(s)) {
     // A full contact, or a thin one on either side: the cue ball's centre
     // runs to the ball's centre, or to a point 2R from it across the line.
     const Vec2 b = s.position[static_cast<std::size_t>(t)];
@@ -289,10 +283,10 @@ double snooker_position_value(const Rules& rules, const GameState& after, int me
     if (after.winner < 0) return 0.0;
     return after.winner == me ? 1.0 : -1.0;
   }
-  const SnookerState& k = *after.snooker;
+  const Standing st = rules.standing(after);
   const auto i_me = static_cast<std::size_t>(me);
-  const double lead = static_cast<double>(k.score[i_me] - k.score[1 - i_me]);
-  const double left = static_cast<double>(snooker_points_remaining(after));
+  const double lead = static_cast<double>(st.score[i_me] - st.score[1 - i_me]);
+  const double left = static_cast<double>(st.points_left);
   const auto value = [&](double lead_now) { return snooker_lead_value(lead_now, left); };
   const double e = no_pot ? 0.0 : snooker_visit_points(rules, after, sigma);
   const int shooter = after.player;

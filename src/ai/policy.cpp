@@ -9,7 +9,6 @@ namespace {
 
 constexpr GamePolicy eight_ball() {
   GamePolicy p;
-  p.group_progress = true;
   p.unannounced_safeties = true;
   p.combinations = GamePolicy::Combinations::own_group;
   return p;

@@ -22,9 +22,6 @@ struct GamePolicy {
   /// pot's promise; no miss charge (the frame chance already prices a
   /// miss); a pot ranks by its points.
   bool frame_scoring = false;
-  /// Each group's balls still up count in a table's value (8-ball's
-  /// progress toward the 8).
-  bool group_progress = false;
   /// A declared safety is also sampled unannounced (8-ball: a first ball
   /// that drops then keeps the turn).
   bool unannounced_safeties = false;

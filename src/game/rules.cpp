@@ -310,6 +310,15 @@ GameState Rules::start(std::uint64_t rack_seed, int breaker) const {
 
 std::vector<int> Rules::targets(const GameState& s) const { return ruleset_->targets(s); }
 
+std::vector<int> Rules::balls_on(const GameState& s) const { return ruleset_->balls_on(s); }
+
+int Rules::ball_value(int ball) const {
+  if (ball <= 0 || ball >= ball_count()) return 0;
+  return ruleset_->ball_value(ball);
+}
+
+Standing Rules::standing(const GameState& s) const { return ruleset_->standing(s); }
+
 LegalActions Rules::legal_actions(const GameState& s) const {
   LegalActions la;
   if (s.phase == Phase::game_over) return la;

@@ -107,6 +107,14 @@ class ThreeCushionRuleset final : public Ruleset {
     return {Foul::wrong_ball_first, Foul::wrong_cue_ball, Foul::push_through};
   }
 
+  int ball_value(int /*ball*/) const override { return 0; }  // points come from caroms, not pots
+
+  Standing standing(const GameState& s) const override {
+    Standing st;
+    if (s.carom) st.score = s.carom->score;
+    return st;
+  }
+
   std::vector<int> targets(const GameState& s) const override {
     // The break must hit the red directly (UMB 3.3); after it either
     // object ball may come first.

@@ -58,6 +58,21 @@ class EightBall final : public Ruleset {
 
   std::vector<Foul> foul_kinds() const override { return pool_foul_kinds(); }
 
+  Standing standing(const GameState& s) const override {
+    // Once the groups are set, each side's balls left before the 8.
+    Standing st;
+    for (std::size_t p = 0; p < 2; ++p) {
+      const Group g = s.group[p];
+      if (g == Group::none) continue;
+      int left = 0;
+      for (int b = 1; b < static_cast<int>(s.on_table.size()); ++b) {
+        if (b != 8 && group_of(b) == g && s.on_table[static_cast<std::size_t>(b)]) ++left;
+      }
+      st.balls_to_go[p] = left;
+    }
+    return st;
+  }
+
   std::vector<int> targets(const GameState& s) const override {
     std::vector<int> out;
     const auto n = static_cast<int>(s.on_table.size());

@@ -276,6 +276,17 @@ class Snooker final : public Ruleset {
             Foul::free_ball_snooker};
   }
 
+  std::vector<int> balls_on(const GameState& s) const override { return snooker_balls_on(s); }
+
+  int ball_value(int ball) const override { return snooker_value(ball); }
+
+  Standing standing(const GameState& s) const override {
+    Standing st;
+    st.score = part(s).score;
+    st.points_left = snooker_points_remaining(s);
+    return st;
+  }
+
   std::vector<int> targets(const GameState& s) const override {
     std::vector<int> out = snooker_balls_on(s);
     if (part(s).free_ball) {

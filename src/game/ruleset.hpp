@@ -104,6 +104,15 @@ class Ruleset {
   /// Rules a shot: fouls, whose turn, the next phase, the ruling's text.
   virtual void rule_shot(ShotRuling& shot) const = 0;
 
+  /// Rules::balls_on: the targets unless the game names balls on.
+  virtual std::vector<int> balls_on(const GameState& s) const { return targets(s); }
+  /// Rules::ball_value for an object ball of the game (1 <= ball <
+  /// ball_count()): a pool ball is one ball.
+  virtual int ball_value(int /*ball*/) const { return 1; }
+  /// Rules::standing: no points, no balls to go, unless the game counts
+  /// them.
+  virtual Standing standing(const GameState& /*s*/) const { return {}; }
+
   // What a game on another table than the pool table's changes (snooker);
   // the defaults are the pool games'.
 
