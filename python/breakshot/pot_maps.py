@@ -85,8 +85,8 @@ def pot_chance(position, cue, ball, pocket, level="champion", *, samples=None,
     "amateur", "club", "expert", "champion"). ``samples`` (plays per
     candidate and for the measurement) and ``candidates`` default to the
     level's own; ``threads`` defaults to all cores; the answer is the same
-    for any number. Returns a dict: ``placeable``, ``probability`` (NaN
-    where the cue ball cannot be placed, 0 when no shot was found),
+    for any number. Returns a dict: ``placeable``, ``probability`` (0
+    where the cue ball cannot be placed or no shot was found),
     ``aim`` (phi, theta, speed, a, b) of the best shot, its ``kind``,
     ``shots`` (candidates found), ``plays`` and ``simulations``. Raises
     ValueError naming a bad ball, pocket, level or position.
@@ -125,9 +125,9 @@ class PotMap:
 
     ``probability`` (ny, nx)
         share of the measuring plays that potted the ball in the pocket
-        with no foul; NaN where the cue ball cannot be placed (on or
-        against a ball, or off the playing surface), 0 where the level
-        found no shot.
+        with no foul; 0 where the cue ball cannot be placed (on or
+        against a ball, off the playing surface, in a pocket: ``valid``
+        False) and where the level found no shot.
     ``aims`` (ny, nx, 5)
         the best shot's phi, theta (degrees), speed (m/s), a, b (fractions
         of the radius); NaN where there is none.

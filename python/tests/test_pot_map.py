@@ -101,13 +101,13 @@ def test_grid_is_the_same_for_any_thread_count():
     assert "PotMap" in repr(one) and "top_right" in repr(one)
 
 
-def test_cells_where_the_cue_ball_cannot_go_are_nan():
+def test_cells_where_the_cue_ball_cannot_go_are_zero():
     position, _ = jaws()
     nine = position["balls"][9]
     pm = breakshot.pot_map(position, 1, 3, "club", xs=[nine[0], 1.0, -0.2], ys=[nine[1]],
                            samples=4, candidates=2)
     assert pm.valid.tolist() == [[False, True, False]]
-    assert math.isnan(pm.probability[0, 0]) and math.isnan(pm.probability[0, 2])
+    assert pm.probability[0, 0] == 0.0 and pm.probability[0, 2] == 0.0
     assert np.isnan(pm.aims[0, 0]).all()
     assert not math.isnan(pm.probability[0, 1])
     assert pm.kinds[0][0] is None
