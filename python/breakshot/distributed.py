@@ -401,12 +401,14 @@ def ladder(client, game: str, levels: Sequence[str], games: int, seed: int = 0,
 
 def _pot_cells(expected, position, ball, pocket, level, points, samples, candidates, seed):
     """The task of a shot map: pot_chance at each (k, x, y) of ``points``,
-    cell k with the seed mix_seed(seed, k) on one thread (as pot_map does)."""
+    cell k with the seed mix_seed(seed, k) on one thread (as pot_map does);
+    a cell where the cue ball cannot be placed has ``placeable`` False."""
     _verify(expected)
-    from .pot_maps import pot_chance
+    from ._position import game_position
 
-    return [(k, pot_chance(position, (x, y), ball, pocket, level, samples=samples,
-                           candidates=candidates, seed=_core.mix_seed(seed, k), threads=1))
+    pos = game_position(position)
+    return [(k, _core.pot_chance(pos, x, y, ball, pocket, level, samples, candidates,
+                                 _core.mix_seed(seed, k), 1))
             for k, x, y in points]
 
 
@@ -424,7 +426,7 @@ def shot_map(client, state, ball, pocket, level: str = "champion", *, xs=None, y
     from dask.distributed import as_completed
 
     from .pot_maps import PotMap, _args, _grid
-    from ._position import game_position
+    from ._position import game_position, plain
 
     pos, table, ball_n, pocket_i, level, samples, candidates, seed, _ = _args(
         state, ball, pocket, level, samples, candidates, seed, None)
@@ -438,16 +440,13 @@ def shot_map(client, state, ball, pocket, level: str = "champion", *, xs=None, y
         raise ValueError("the grid's coordinates must be finite")
     points = [(j * xs.size + i, float(xs[i]), float(ys[j]))
               for j in range(ys.size) for i in range(xs.size)]
-    # A plain position (dict with positions and on_table) that the workers
-    # read exactly as here.
-    plain = {"game": pos["game"], "table_size": pos["table_size"],
-             "positions": pos["positions"].tolist(), "on_table": pos["on_table"].tolist(),
-             "player": pos["player"], "groups": list(pos["groups"])}
+    # The position as plain values that the workers read exactly as here.
+    plain_pos = plain(pos)
     check_workers(client)
     expected = identity()
     per = (_check_int(cells_per_task, "cells_per_task", 1) if cells_per_task is not None
            else max(1, math.ceil(len(points) / (8 * _workers(client)))))
-    futures = [client.submit(_pot_cells, expected, plain, ball_n, pocket_i, level,
+    futures = [client.submit(_pot_cells, expected, plain_pos, ball_n, pocket_i, level,
                              points[a:a + per], samples, candidates, seed, pure=False)
                for a in range(0, len(points), per)]
     cells: Dict[int, dict] = {}
@@ -465,25 +464,20 @@ def shot_map(client, state, ball, pocket, level: str = "champion", *, xs=None, y
     order = [cells[k] for k in range(len(points))]
     data = {
         "probability": np.array([c["probability"] for c in order], dtype=float).reshape(shape),
-        "aims": np.array([c["aim"] if c["shots"] > 0 else [math.nan] * 5 for c in order],
-                         dtype=float).reshape(shape + (5,)),
+        "aims": np.array([c["aim"] if c["placeable"] and c["shots"] > 0 else [0.0] * 5
+                          for c in order], dtype=float).reshape(shape + (5,)),
         "valid": np.array([c["placeable"] for c in order], dtype=bool).reshape(shape),
         "shots": np.array([c["shots"] for c in order], dtype=np.int32).reshape(shape),
         "plays": np.array([c["plays"] for c in order], dtype=np.int32).reshape(shape),
-        "kinds": [[order[j * xs.size + i]["kind"] if order[j * xs.size + i]["shots"] > 0
-                   else None for i in range(xs.size)] for j in range(ys.size)],
+        "kinds": [[order[j * xs.size + i]["kind"] if order[j * xs.size + i]["placeable"] and
+                   order[j * xs.size + i]["shots"] > 0 else None for i in range(xs.size)]
+                  for j in range(ys.size)],
         "simulations": int(sum(c["simulations"] for c in order)),
         "table": table,
-        "ball_radius": _ball_radius(pos["game"], pos["table_size"]),
+        "ball_radius": _core.pot_table(pos)["ball_radius"],
     }
-    return PotMap(data, xs, ys, game_position(plain), ball_n, pocket_i, level, samples, seed)
-
-
-def _ball_radius(game: str, table_size: str) -> float:
-    """The ball radius of a game's config (as pot_map reports it)."""
-    from .game import Game
-
-    return float(Game(game, table=table_size).config["ball_radius"])
+    return PotMap(data, xs, ys, game_position(plain_pos), ball_n, pocket_i, level, samples,
+                  seed)
 
 
 # --- sweeps -----------------------------------------------------------------

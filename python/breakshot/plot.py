@@ -5,9 +5,10 @@ simulate --plot`` draws as SVG (src/io/svg_plot.cpp): the balls' paths on
 the table, kinetic energy against time and linear momentum against time,
 each ball in the same colour in all three, with the system total in black.
 They take a result of ``breakshot.simulate(scenario, trace=True)`` (or its
-``frames``). ``table`` draws a game position: a pool table with its
-pockets and the balls in their colours. ``pot_map`` draws a
-breakshot.PotMap as a heat map on the table.
+``frames``). ``table`` draws a game position: the game's table (a pool
+table with its pockets, the snooker table with its markings) and the balls
+in their colours. ``pot_map`` draws a breakshot.PotMap as a heat map on the
+table.
 
 Every function draws into ``ax`` when given (a new figure otherwise) and
 returns the axes it drew on. This module imports matplotlib; ``import
@@ -54,6 +55,13 @@ BALL_COLOURS = {
 }
 for _n in range(9, 16):
     BALL_COLOURS[_n] = BALL_COLOURS[_n - 8]
+
+# Snooker's balls by number: the cue ball, the reds 1-15, then the colours
+# 16-21 (game.hpp's numbering).
+_SNOOKER_COLOURS = {0: "#f8f6ec", **{n: "#c1121f" for n in range(1, 16)},
+                    16: "#f5d000", 17: "#127a3c", 18: "#6b3a1e", 19: "#1f4fb4",
+                    20: "#f29bb8", 21: "#141414"}
+_SNOOKER_NAMES = {16: "yellow", 17: "green", 18: "brown", 19: "blue", 20: "pink", 21: "black"}
 
 _CLOTH = "#2f7d4f"
 _RAIL = "#5a3620"
@@ -272,7 +280,9 @@ def momentum(result, ax=None):
 
 
 def _draw_pool_table(ax, tab, ball_radius):
-    """Rails, cloth, pockets, diamonds and the head string's spots."""
+    """Rails, cloth, pockets and the markings: on a pool table the
+    diamonds and the head string's spots, on a snooker table the baulk
+    line, the D and the colours' spots."""
     L, W = tab["length"], tab["width"]
     rail = 0.11
     ax.add_patch(patches.FancyBboxPatch((-rail, -rail), L + 2 * rail, W + 2 * rail,
@@ -288,25 +298,42 @@ def _draw_pool_table(ax, tab, ball_radius):
     for name, x, y, r in tab["pockets"]:
         ax.add_patch(patches.Circle((x, y), r, facecolor="#0b0b0b", edgecolor="#444444",
                                     linewidth=0.6, zorder=2, gid=f"pocket:{name}"))
-    # Diamonds on the rails: every eighth of the length, quarter of the width.
-    d = 0.5 * rail + 0.006
-    dx = [L * k / 8 for k in range(1, 8) if k != 4]
-    dy = [W * k / 4 for k in range(1, 4)]
-    ax.scatter(dx + dx, [-d] * len(dx) + [W + d] * len(dx), marker="D", s=9, color="#e8dcc0",
-               zorder=2, linewidths=0)
-    ax.scatter([-d] * len(dy) + [L + d] * len(dy), dy + dy, marker="D", s=9, color="#e8dcc0",
-               zorder=2, linewidths=0)
-    for spot in (tab.get("head_spot"), tab.get("foot_spot")):
-        if spot is not None:
-            ax.plot(*spot, marker="o", markersize=2.5, color="#d8e8dc", zorder=2)
+    marks = tab.get("snooker")
+    if marks is not None:
+        line = dict(color="#d8e8dc", linewidth=0.8, zorder=2)
+        bx = marks["baulk_line"]
+        ax.plot([bx, bx], [0.0, W], **line)
+        (cx, cy), dr = marks["d_centre"], marks["d_radius"]
+        ax.add_patch(patches.Arc((cx, cy), 2 * dr, 2 * dr, theta1=90.0, theta2=270.0,
+                                 edgecolor="#d8e8dc", linewidth=0.8, zorder=2))
+        for spot in marks["spots"]:
+            ax.plot(*spot, marker="o", markersize=2.0, color="#d8e8dc", zorder=2)
+    else:
+        # Diamonds on the rails: every eighth of the length, quarter of the width.
+        d = 0.5 * rail + 0.006
+        dx = [L * k / 8 for k in range(1, 8) if k != 4]
+        dy = [W * k / 4 for k in range(1, 4)]
+        ax.scatter(dx + dx, [-d] * len(dx) + [W + d] * len(dx), marker="D", s=9,
+                   color="#e8dcc0", zorder=2, linewidths=0)
+        ax.scatter([-d] * len(dy) + [L + d] * len(dy), dy + dy, marker="D", s=9,
+                   color="#e8dcc0", zorder=2, linewidths=0)
+        for spot in (tab.get("head_spot"), tab.get("foot_spot")):
+            if spot is not None:
+                ax.plot(*spot, marker="o", markersize=2.5, color="#d8e8dc", zorder=2)
     ax.set_xlim(-rail - 0.02, L + rail + 0.02)
     ax.set_ylim(-rail - 0.02, W + rail + 0.02)
 
 
-def _draw_ball(ax, number, xy, r, label=True):
-    """A pool ball: solid, or white with a band (9-15), numbered. Returns
-    its patches (the first is the ball's disk)."""
+def _draw_ball(ax, number, xy, r, label=True, game=None):
+    """A ball of `game`: in pool solid, or white with a band (9-15),
+    numbered; in snooker a red or a colour, unnumbered. Returns its
+    patches (the first is the ball's disk)."""
     x, y = xy
+    if game == "snooker":
+        disk = patches.Circle((x, y), r, facecolor=_SNOOKER_COLOURS.get(number, _OTHER),
+                              edgecolor="#111111", linewidth=0.7, zorder=5, gid=f"ball:{number}")
+        ax.add_patch(disk)
+        return [disk]
     colour = BALL_COLOURS.get(number, _OTHER)
     striped = 9 <= number <= 15
     disk = patches.Circle((x, y), r, facecolor="white" if striped else colour,
@@ -328,9 +355,16 @@ def _draw_ball(ax, number, xy, r, label=True):
     return made
 
 
+def _ball_name(game, number) -> str:
+    """'ball 3'; in snooker 'red 3' or 'the blue'."""
+    if game == "snooker":
+        return f"the {_SNOOKER_NAMES[number]}" if number in _SNOOKER_NAMES else f"red {number}"
+    return f"ball {number}"
+
+
 def _layout(state):
-    """(table dict, [(number or None, id, (x, y), radius)]) of what table()
-    accepts."""
+    """(table dict, [(number or None, id, (x, y), radius)], game or None)
+    of what table() accepts."""
     if isinstance(state, (str, bytes)) or hasattr(state, "__fspath__") or \
             isinstance(state, _core.Scenario) or (
                 isinstance(state, Mapping) and ("physics" in state or "rack" in state)):
@@ -339,29 +373,31 @@ def _layout(state):
         for i, bid in enumerate(lay["ids"]):
             num = 0 if bid == "cue" else int(bid) if bid.isdigit() else None
             balls.append((num, bid, lay["positions"][i], lay["radii"][i]))
-        return lay["table"], balls
+        return lay["table"], balls, None
     pos = game_position(state)
-    tab = _core.pool_table(pos["table_size"])
-    r = 0.028575  # GameConfig's ball radius (WPA 2.25 in)
+    tab = _core.game_table(pos["game"], pos["table_size"])
+    r = tab["ball_radius"]
     balls = [(n, "cue" if n == 0 else str(n), pos["positions"][n], r)
              for n in range(len(pos["positions"])) if pos["on_table"][n]]
-    return tab, balls
+    return tab, balls, pos["game"]
 
 
 def table(state, ax=None, *, numbers=True):
-    """Draws a game position: the pool table (rails, cloth, pockets,
-    diamonds) and the balls on it in their colours, numbered.
+    """Draws a game position: the game's table (rails, cloth, pockets;
+    a pool table's diamonds, a snooker table's baulk line, D and spots)
+    and the balls on it in their colours, numbered in pool.
 
-    ``state`` is a game position (docs/python.md, "Game positions"): a dict
-    ``{"game": "nine_ball", "table": "9ft", "balls": {1: (x, y), ...}}``
-    (balls also as a list of (id, x, y) or of {"id", "position"} dicts; or
-    ``positions`` (n, 2) and ``on_table`` (n,) arrays by ball number), a
-    plain list of (id, x, y) on a 9 ft table, a game with a ``state``
-    attribute of one of these forms, or a pool scenario (a dict with
-    ``physics`` or ``rack``, a path, or a breakshot.Scenario; its balls as
-    they stand at t = 0). Ids are ball numbers or "cue". Returns the axes.
+    ``state`` is a game position (docs/python.md, "Game positions"): a game
+    or its state, a dict ``{"game": "nine_ball", "table": "9ft", "balls":
+    {1: (x, y), ...}}`` (balls also as a list of (id, x, y) or of {"id",
+    "position"} dicts; or ``positions`` (n, 2) and ``on_table`` (n,) arrays
+    by ball number), a plain list of (id, x, y) on a 9 ft table, anything
+    with a ``state`` attribute of one of these forms, or a pool scenario (a
+    dict with ``physics`` or ``rack``, a path, or a breakshot.Scenario; its
+    balls as they stand at t = 0). Ids are ball numbers or "cue". Returns
+    the axes.
     """
-    tab, balls = _layout(state)
+    tab, balls, game = _layout(state)
     ax = _axes(ax, figsize=(9.0, 5.0), layout="constrained")
     if tab.get("length"):
         _draw_pool_table(ax, tab, balls[0][3] if balls else 0.028575)
@@ -381,7 +417,7 @@ def table(state, ax=None, *, numbers=True):
             if numbers:
                 ax.text(*xy, bid, ha="center", va="center", fontsize=5.5, zorder=5.3)
         else:
-            _draw_ball(ax, num, xy, r, label=numbers)
+            _draw_ball(ax, num, xy, r, label=numbers, game=game)
     ax.set_aspect("equal", adjustable="box")
     ax.set_axis_off()
     return ax
@@ -416,7 +452,9 @@ def pot_map(result, ax=None, *, colorbar=True, cmap=None):
 
     xe = edges(xs, 0.0, tab["length"])
     ye = edges(ys, 0.0, tab["width"])
-    prob = np.ma.masked_invalid(np.asarray(pm.probability, dtype=float))
+    # Masked (drawn clear) where the cue ball cannot be placed.
+    prob = np.ma.MaskedArray(np.asarray(np.ma.getdata(pm.probability), dtype=float),
+                             mask=~np.asarray(pm.valid, dtype=bool))
     mesh = ax.pcolormesh(xe, ye, prob, cmap=cmap or _POT_CMAP, vmin=0.0, vmax=1.0,
                          shading="flat", zorder=3, alpha=0.92)
     # Keep the cloth's edge and the pockets visible over the map.
@@ -424,10 +462,11 @@ def pot_map(result, ax=None, *, colorbar=True, cmap=None):
         ax.add_patch(patches.Circle((x, y), r, facecolor="#0b0b0b", edgecolor="#444444",
                                     linewidth=0.6, zorder=4))
     pos = pm.position
+    game = pos["game"]
     r = pm.ball_radius
     for n in range(1, len(pos["positions"])):
         if pos["on_table"][n]:
-            _draw_ball(ax, n, pos["positions"][n], r)
+            _draw_ball(ax, n, pos["positions"][n], r, game=game)
     bx, by = pos["positions"][pm.ball]
     ax.add_patch(patches.Circle((bx, by), 1.9 * r, facecolor="none", edgecolor="white",
                                 linewidth=1.4, zorder=6))
@@ -439,11 +478,13 @@ def pot_map(result, ax=None, *, colorbar=True, cmap=None):
         cb = ax.figure.colorbar(mesh, ax=ax, fraction=0.035, pad=0.02)
         cb.set_label("chance of the pot")
     samples = f"{pm.samples} samples" if pm.samples else "the level's samples"
-    ax.set_title(f"{pm.level}: ball {pm.ball} in the {name.replace('_', ' ')} pocket, "
-                 f"by cue-ball position\n", loc="left", fontweight="bold", fontsize="medium")
-    ax.text(0.0, 1.01, f"{prob.shape[1]} x {prob.shape[0]} grid, {samples} per shot; mean "
-            f"{pm.mean():.2f} where the cue ball can be placed", transform=ax.transAxes,
-            fontsize="small", color="#444444", va="bottom")
+    ax.set_title(f"{pm.level}: {_ball_name(game, pm.ball)} in the {name.replace('_', ' ')} "
+                 f"pocket, by cue-ball position\n", loc="left", fontweight="bold",
+                 fontsize="medium")
+    mean = (f"mean {pm.mean():.2f} where the cue ball can be placed" if pm.valid.any()
+            else "the cue ball can be placed nowhere")
+    ax.text(0.0, 1.01, f"{prob.shape[1]} x {prob.shape[0]} grid, {samples} per shot; {mean}",
+            transform=ax.transAxes, fontsize="small", color="#444444", va="bottom")
     ax.set_aspect("equal", adjustable="box")
     ax.set_axis_off()
     return ax

@@ -7,13 +7,13 @@ pots of that ball into that pocket, its own speeds and spins; no
 safeties), its own number of shortlisted candidates and, for the champion,
 its centred aims. The shortlist is sampled under the level's own noise and
 the shot that pots most often is its best shot; how often that shot pots
-is then measured on fresh noise draws. The work is done in C++
+is then measured on fresh noise draws. A play counts as the game's own
+ruling counts a pot (no foul, the game not lost by it), in every game with
+pockets: 8-ball, 9-ball, 10-ball and snooker. The work is done in C++
 (include/breakshot/pot_map.hpp) with the GIL released.
 """
 
 from __future__ import annotations
-
-import math
 
 import numpy as np
 
@@ -66,37 +66,49 @@ def _grid(table: dict, xs, ys, nx, ny):
 
 def _args(position, ball, pocket, level, samples, candidates, seed, threads):
     pos = game_position(position)
-    table = _core.pool_table(pos["table_size"])
+    table = _core.pot_table(pos)["table"]
     return (pos, table, _ball(ball), _pocket_index(table, pocket), str(level),
             _count(samples, "samples"), _count(candidates, "candidates"), _seed(seed),
             _count(threads, "threads"))
 
 
+def _cue(cue):
+    try:
+        x, y = (float(v) for v in cue)
+    except (TypeError, ValueError):
+        raise ValueError(f"cue must be a point (x, y) in metres, not {cue!r}") from None
+    return x, y
+
+
 def pot_chance(position, cue, ball, pocket, level="champion", *, samples=None,
                candidates=None, seed=0, threads=None) -> dict:
     """The chance that ``level`` pots ``ball`` in ``pocket`` with the cue
-    ball at ``cue`` = (x, y) and the other balls as in ``position``.
+    ball lying at ``cue`` = (x, y) and the other balls as in ``position``.
 
     ``position`` is a game position (docs/python.md, "Game positions": a
-    dict with ``balls``, a list of (id, x, y), or a game with a ``state``);
-    the cue ball's own place in it is ignored. ``ball`` is a ball number,
+    game, its state, or a dict with ``balls``); the cue ball's own place
+    and any ball in hand in it are ignored. ``ball`` is a ball number,
     ``pocket`` an index into the table's pockets or a pocket name
     ("top_right", ...), ``level`` a computer player's level ("beginner",
     "amateur", "club", "expert", "champion"). ``samples`` (plays per
     candidate and for the measurement) and ``candidates`` default to the
     level's own; ``threads`` defaults to all cores; the answer is the same
-    for any number. Returns a dict: ``placeable``, ``probability`` (NaN
-    where the cue ball cannot be placed, 0 when no shot was found),
-    ``aim`` (phi, theta, speed, a, b) of the best shot, its ``kind``,
-    ``shots`` (candidates found), ``plays`` and ``simulations``. Raises
-    ValueError naming a bad ball, pocket, level or position.
+    for any number. Returns a dict: ``placeable`` (True), ``probability``
+    (0 when no shot was found), ``aim`` (phi, theta, speed, a, b) of the
+    best shot, its ``kind``, ``shots`` (candidates found), ``plays`` and
+    ``simulations``. Raises ValueError naming a bad ball, pocket, level or
+    position, a game without pockets, and a ``cue`` where the cue ball
+    cannot lie (on or against a ball, off the playing surface), with the
+    rules' reason.
     """
     pos, _, ball, pocket, level, samples, candidates, seed, threads = _args(
         position, ball, pocket, level, samples, candidates, seed, threads)
-    x, y = (float(v) for v in cue)
-    return _core.pot_chance(pos["game"], pos["table_size"], pos["positions"], pos["on_table"],
-                            pos["player"], pos["groups"], x, y, ball, pocket, level, samples,
-                            candidates, seed, threads)
+    x, y = _cue(cue)
+    c = _core.pot_chance(pos, x, y, ball, pocket, level, samples, candidates, seed, threads)
+    if not c["placeable"]:
+        raise ValueError(f"the cue ball cannot be placed at ({x:g}, {y:g}): {c['unplaceable']}")
+    del c["unplaceable"]
+    return c
 
 
 def pot_map(position, ball, pocket, level="champion", *, xs=None, ys=None, nx=40, ny=20,
@@ -113,31 +125,33 @@ def pot_map(position, ball, pocket, level="champion", *, xs=None, ys=None, nx=40
     pos, table, ball, pocket_i, level, samples, candidates, seed, threads = _args(
         position, ball, pocket, level, samples, candidates, seed, threads)
     xs, ys = _grid(table, xs, ys, nx, ny)
-    data = _core.pot_map(pos["game"], pos["table_size"], pos["positions"], pos["on_table"],
-                         pos["player"], pos["groups"], ball, pocket_i, level, xs.tolist(),
-                         ys.tolist(), samples, candidates, seed, threads)
+    data = _core.pot_map(pos, ball, pocket_i, level, xs.tolist(), ys.tolist(), samples,
+                         candidates, seed, threads)
     return PotMap(data, xs, ys, pos, ball, pocket_i, level, samples, seed)
 
 
 class PotMap:
     """A pot map (breakshot.pot_map): arrays over the grid, row j for ys[j]
-    and column i for xs[i].
+    and column i for xs[i]. No array holds NaN.
 
-    ``probability`` (ny, nx)
+    ``probability`` (ny, nx) numpy masked array
         share of the measuring plays that potted the ball in the pocket
-        with no foul; NaN where the cue ball cannot be placed (on or
-        against a ball, or off the playing surface), 0 where the level
-        found no shot.
-    ``aims`` (ny, nx, 5)
+        (as the game's ruling counts a pot); masked where the cue ball
+        cannot be placed (on or against a ball, or off the playing
+        surface: ``valid`` False), 0 where the level found no shot.
+        ``probability.mean()`` is over the cells that are not masked;
+        ``probability.filled(0.0)`` a plain array.
+    ``aims`` (ny, nx, 5) numpy masked array
         the best shot's phi, theta (degrees), speed (m/s), a, b (fractions
-        of the radius); NaN where there is none.
+        of the radius); masked where there is none (the cue ball cannot be
+        placed, or no shot was found).
     ``valid`` (ny, nx) bool
         the cue ball can be placed there.
     ``shots``, ``plays`` (ny, nx) int
         candidate shots found; measuring plays counted.
     ``kinds``
         nested list (ny by nx) of the best shot's kind ('direct', 'bank',
-        'kick', 'combination') or None.
+        'kick', 'combination', 'jump') or None.
     ``xs`` (nx,), ``ys`` (ny,)
         the grid, metres.
 
@@ -148,11 +162,15 @@ class PotMap:
     """
 
     def __init__(self, data, xs, ys, position, ball, pocket, level, samples, seed):
-        self.probability = data["probability"]
-        self.aims = data["aims"]
-        self.valid = data["valid"]
+        self.valid = np.asarray(data["valid"], dtype=bool)
         self.shots = data["shots"]
         self.plays = data["plays"]
+        self.probability = np.ma.MaskedArray(np.asarray(data["probability"], dtype=float),
+                                             mask=~self.valid, fill_value=0.0)
+        aimed = self.valid & (np.asarray(self.shots) > 0)
+        aims = np.asarray(data["aims"], dtype=float)
+        self.aims = np.ma.MaskedArray(aims, mask=np.repeat(~aimed[..., None], 5, axis=-1),
+                                      fill_value=0.0)
         self.kinds = data["kinds"]
         self.simulations = data["simulations"]
         self.table = data["table"]
@@ -174,12 +192,14 @@ class PotMap:
 
     def mean(self) -> float:
         """The mean probability over the cells where the cue ball can be
-        placed (NaN if there are none)."""
-        p = self.probability[self.valid]
-        return float(p.mean()) if p.size else math.nan
+        placed. Raises ValueError when there is none."""
+        if not self.valid.any():
+            raise ValueError("the cue ball can be placed in no cell of the map")
+        return float(self.probability.data[self.valid].mean())
 
     def __repr__(self) -> str:
         ny, nx = self.shape
+        mean = f"{self.mean():.3f}" if self.valid.any() else "none"
         return (f"<breakshot.PotMap ball={self.ball} pocket={self.pocket_name} "
                 f"level={self.level} grid={nx}x{ny} valid={int(self.valid.sum())} "
-                f"mean={self.mean():.3f}>")
+                f"mean={mean}>")

@@ -41,10 +41,14 @@ namespace breakshot::python {
 
 namespace {
 
-using json_io::ojson;
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
 
-/// A table size of `game`: "7ft", "8ft" or "9ft"; snooker "12ft";
-/// three-cushion "10ft".
+}  // namespace
+
 void check_table(GameType game, const std::string& table) {
   if (game == GameType::snooker) {
     if (table != "12ft") {
@@ -60,17 +64,55 @@ void check_table(GameType game, const std::string& table) {
   }
 }
 
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
 GameType game_arg(const std::string& name) {
   if (auto g = parse_game_type(name)) return *g;
   throw std::invalid_argument("game: unknown game '" + name + "' (known games: " +
                               join(game_type_names()) + ")");
 }
+
+GamePhysics physics_arg(const std::optional<std::string>& text) {
+  GamePhysics p;
+  if (!text) return p;
+  json_io::json doc;
+  if (auto problem = json_io::parse_strict(*text, doc)) {
+    throw std::invalid_argument("physics: " + problem->error.reason);
+  }
+  if (!doc.is_object()) throw std::invalid_argument("physics: expected an object");
+  const json_io::json defaults = json_io::json::parse(json_io::physics_json(p).dump());
+  for (const auto& [key, value] : defaults.items()) {
+    if (!doc.contains(key)) doc[key] = value;
+  }
+  json_io::GameReader reader;
+  if (!reader.physics(doc, "physics", p)) {
+    throw std::invalid_argument(reader.error->path + ": " + reader.error->reason);
+  }
+  return p;
+}
+
+GameConfig game_config(const std::string& game, const std::string& table, int max_shots,
+                       const std::optional<std::string>& physics) {
+  const GameType g = game_arg(game);
+  // Snooker: the 12 ft table and snooker balls; three-cushion: the carom
+  // table and balls.
+  GameConfig c = g == GameType::snooker         ? snooker_config()
+                 : g == GameType::three_cushion ? three_cushion_config()
+                                                : GameConfig{};
+  c.physics = physics_arg(physics);
+  c.game = g;
+  check_table(g, table);
+  c.table_size = table;
+  // -1: the rules' default; 0: no limit.
+  if (max_shots < -1) {
+    throw std::invalid_argument("max_shots: must be 0 (no limit) or more, not " +
+                                std::to_string(max_shots));
+  }
+  if (max_shots >= 0) c.max_shots = max_shots;
+  return c;
+}
+
+namespace {
+
+using json_io::ojson;
 
 NoiseModel noise_arg(const std::string& spec, const std::string& what) {
   try {
@@ -151,35 +193,13 @@ ojson facts_json(const ShotFacts& f) {
 }
 
 /// A game in progress: one GameSession.
-/// A game's physics from JSON text (None: the defaults): an object with
-/// any of "cushion_model", "ball_ball_model" and "ball_ball_friction" (a
-/// number or {"a", "b", "c"}), as a record writes them; the fields left
-/// out keep their defaults. ValueError "physics.FIELD: ..." otherwise.
-GamePhysics physics_arg(const std::optional<std::string>& text) {
-  GamePhysics p;
-  if (!text) return p;
-  json_io::json doc;
-  if (auto problem = json_io::parse_strict(*text, doc)) {
-    throw std::invalid_argument("physics: " + problem->error.reason);
-  }
-  if (!doc.is_object()) throw std::invalid_argument("physics: expected an object");
-  const json_io::json defaults = json_io::json::parse(json_io::physics_json(p).dump());
-  for (const auto& [key, value] : defaults.items()) {
-    if (!doc.contains(key)) doc[key] = value;
-  }
-  json_io::GameReader reader;
-  if (!reader.physics(doc, "physics", p)) {
-    throw std::invalid_argument(reader.error->path + ": " + reader.error->reason);
-  }
-  return p;
-}
-
 class GameCore {
  public:
   GameCore(const std::string& game, const std::string& table, std::uint64_t seed, int breaker,
            const std::array<std::string, 2>& names, const std::array<std::string, 2>& noise,
            int max_shots, const std::optional<std::string>& physics)
-      : session_(config(game, table, max_shots, physics), seats(names, noise), seed, breaker) {}
+      : session_(game_config(game, table, max_shots, physics), seats(names, noise), seed,
+                 breaker) {}
 
   explicit GameCore(GameSession session) : session_(std::move(session)) {}
 
@@ -371,26 +391,6 @@ class GameCore {
   }
 
  private:
-  static GameConfig config(const std::string& game, const std::string& table, int max_shots,
-                           const std::optional<std::string>& physics) {
-    const GameType g = game_arg(game);
-    // Snooker: the 12 ft table and snooker balls; three-cushion: the carom
-    // table and balls.
-    GameConfig c = g == GameType::snooker         ? snooker_config()
-                   : g == GameType::three_cushion ? three_cushion_config()
-                                                  : GameConfig{};
-    c.physics = physics_arg(physics);
-    c.game = g;
-    check_table(g, table);
-    c.table_size = table;
-    // -1: the rules' default; 0: no limit.
-    if (max_shots < -1) {
-      throw std::invalid_argument("max_shots: must be 0 (no limit) or more, not " +
-                                  std::to_string(max_shots));
-    }
-    if (max_shots >= 0) c.max_shots = max_shots;
-    return c;
-  }
   static Seats seats(const std::array<std::string, 2>& names,
                      const std::array<std::string, 2>& noise) {
     Seats s;

@@ -4,6 +4,7 @@
 //                          momentum, as `breakshot simulate --plot` uses them
 //   _core.layout           a scenario's table and balls at t = 0
 //   _core.pool_table       a pool table's outline and pockets
+//   _core.game_table       the table a game is played on, with ball radius
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -21,6 +22,7 @@
 #include "breakshot/game.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/scenario_io.hpp"
+#include "breakshot/snooker.hpp"
 #include "breakshot/table.hpp"
 
 namespace breakshot::python {
@@ -153,6 +155,18 @@ py::dict table_dict(const Table& t) {
   d["width"] = t.width;
   d["head_spot"] = py::make_tuple(t.head_spot.x, t.head_spot.y);
   d["foot_spot"] = py::make_tuple(t.foot_spot.x, t.foot_spot.y);
+  if (t.shape == "snooker") {
+    // Its markings (snooker.hpp's SnookerMarks): baulk line, D, spots.
+    const SnookerMarks k = snooker_marks();
+    const auto xy = [](Vec2 v) { return py::make_tuple(v.x, v.y); };
+    py::dict marks;
+    marks["baulk_line"] = k.baulk_x;
+    marks["d_centre"] = xy(k.d_centre);
+    marks["d_radius"] = k.d_radius;
+    marks["spots"] =
+        py::make_tuple(xy(k.yellow), xy(k.green), xy(k.brown), xy(k.blue), xy(k.pink), xy(k.black));
+    d["snooker"] = marks;
+  }
   return d;
 }
 
@@ -197,6 +211,18 @@ void bind_plot(py::module_& m) {
   m.def(
       "pool_table", [](const std::string& size) { return table_dict(make_pool_table(size)); },
       py::arg("size") = "9ft", "A pool table's outline and pockets (name, x, y, radius).");
+
+  m.def(
+      "game_table",
+      [](const std::string& game, const std::string& size) {
+        const Rules rules(game_config(game, size, -1, std::nullopt));
+        py::dict d = table_dict(rules.table());
+        d["ball_radius"] = rules.config().ball_radius;
+        return d;
+      },
+      py::arg("game"), py::arg("size"),
+      "The table `game` is played on at `size` (pool_table's form; snooker's with its"
+      " markings) and its ball radius.");
 
 }
 

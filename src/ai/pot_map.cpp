@@ -1,6 +1,8 @@
 // Pot maps (include/breakshot/pot_map.hpp): a level's chance of potting one
 // ball in one pocket, with its own shot generation, shortlist, centred
-// aims and noise, as its AI player (ai_player.cpp) plays a pot.
+// aims and noise, as its AI player (ai_player.cpp) plays a pot. What
+// counts as a pot is the game's ruling of each play (counts_as_pot), so
+// the same code serves every game with pockets.
 //
 // Determinism: every play is a unit whose seed comes from the position's
 // seed and the play's index; parallel_map returns results in index order
@@ -11,8 +13,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "breakshot/noise.hpp"
@@ -35,6 +39,14 @@ constexpr int kDefaultSamples = 16;
 
 void check_arguments(const Rules& rules, const GameState& state, int ball, int pocket,
                      const PotMapOptions& options) {
+  const std::string game(to_string(rules.config().game));
+  if (rules.table().pockets.empty()) {
+    throw std::invalid_argument("pot maps need a table with pockets; " + game + " has none");
+  }
+  if (state.game != rules.config().game) {
+    throw std::invalid_argument("the state is a " + std::string(to_string(state.game)) +
+                                " state; the rules are " + game + "'s");
+  }
   if (state.phase != Phase::shot) {
     throw std::invalid_argument("pot maps need a state with a shot to play (phase shot), not " +
                                 std::string(to_string(state.phase)));
@@ -42,13 +54,12 @@ void check_arguments(const Rules& rules, const GameState& state, int ball, int p
   const int n = rules.ball_count();
   if (static_cast<int>(state.position.size()) != n || static_cast<int>(state.on_table.size()) != n) {
     throw std::invalid_argument("the state has " + std::to_string(state.position.size()) +
-                                " ball positions; " + std::string(to_string(rules.config().game)) +
-                                " has " + std::to_string(n) + " balls");
+                                " ball positions; " + game + " has " + std::to_string(n) +
+                                " balls");
   }
   if (ball < 1 || ball >= n) {
     throw std::invalid_argument("ball " + std::to_string(ball) + " is not an object ball of " +
-                                std::string(to_string(rules.config().game)) + " (1 to " +
-                                std::to_string(n - 1) + ")");
+                                game + " (1 to " + std::to_string(n - 1) + ")");
   }
   if (!state.on_table[static_cast<std::size_t>(ball)]) {
     throw std::invalid_argument("ball " + std::to_string(ball) + " is not on the table");
@@ -67,17 +78,12 @@ void check_arguments(const Rules& rules, const GameState& state, int ball, int p
 }
 
 /// Plays `shot` from `state` with the strike perturbed under `seed`: did
-/// `ball` drop in `pocket` with no foul?
+/// `ball` drop in `pocket` as the game counts a pot?
 bool pots(const Rules& rules, const GameState& state, const Shoot& shot, const NoiseModel& noise,
           std::uint64_t seed, int ball, int pocket, ShotWorkspace& work) {
   Shoot played = shot;
   played.strike = perturb(shot.strike, noise, rules.config().ball_radius, seed);
-  const Outcome out = rules.apply(state, played, work);
-  if (!out.ruling.fouls.empty()) return false;
-  for (std::size_t i = 0; i < out.facts.pocketed.size(); ++i) {
-    if (out.facts.pocketed[i] == ball && out.facts.pocket_of[i] == pocket) return true;
-  }
-  return false;
+  return counts_as_pot(state, rules.apply(state, played, work), ball, pocket);
 }
 
 /// The shortlist, as the level makes it for pots: the best variant of
@@ -101,19 +107,46 @@ std::vector<CandidateShot> shortlist(std::vector<CandidateShot> cands, std::size
 
 }  // namespace
 
+bool counts_as_pot(const GameState& before, const Outcome& outcome, int ball, int pocket) {
+  if (!outcome.ruling.fouls.empty()) return false;
+  // A shot that ends the game is a pot only if the shooter won it.
+  if (outcome.state.phase == Phase::game_over && outcome.state.winner != before.player) {
+    return false;
+  }
+  const ShotFacts& f = outcome.facts;
+  for (std::size_t i = 0; i < f.pocketed.size(); ++i) {
+    if (f.pocketed[i] == ball && f.pocket_of[i] == pocket) return true;
+  }
+  return false;
+}
+
 PotChance pot_chance(const Rules& rules, const GameState& state, Vec2 cue, int ball, int pocket,
                      const AiLevel& level, const PotMapOptions& options) {
   check_arguments(rules, state, ball, pocket, options);
   PotChance res;
 
-  // The cue ball where asked, placed as the rules place a ball in hand.
+  // The cue ball where asked, placed as the rules place a ball in hand
+  // anywhere (every game's check for that: the surface, the cushions, the
+  // balls; snooker's D binds only BallInHand::d). Placed, the state has
+  // no ball in hand and no kitchen shot.
   GameState in_hand = state;
   in_hand.on_table[0] = 0;
   in_hand.ball_in_hand = BallInHand::anywhere;
   in_hand.kitchen_shot = false;
-  if (rules.check_placement(in_hand, cue)) return res;
+  if (std::optional<std::string> why = rules.check_placement(in_hand, cue)) {
+    res.unplaceable = std::move(*why);
+    return res;
+  }
+  // The placement check lets a ball lie over the mouth of a pocket; a
+  // ball whose centre is within a pocket's radius of its centre has
+  // fallen in (the physics' test, and validate()'s for a scenario).
+  for (const Pocket& p : rules.table().pockets) {
+    if (norm(cue - p.centre) <= p.radius) {
+      res.unplaceable = "the cue ball would lie inside pocket " + p.name;
+      return res;
+    }
+  }
   res.placeable = true;
-  res.probability = 0.0;
   const GameState s = rules.apply(in_hand, PlaceCueBall{cue}).state;
 
   ShotGenOptions gen = level.generation;
