@@ -860,7 +860,8 @@ TEST(WebApi, AiGameIsTheGamePlayGamePlays) {
   // Both seats AI: the facade's game is play_game's, action for action,
   // because the seeds are derived the same way.
   const std::uint64_t seed = 4242;
-  for (const auto& game : {std::string("nine_ball"), std::string("eight_ball"), std::string("ten_ball")}) {
+  for (const auto& game :
+       {std::string("nine_ball"), std::string("eight_ball"), std::string("ten_ball")}) {
     GamePtr g = new_game(R"({"game": ")" + game + R"(", "table": "7ft", "seed": ")" +
                          std::to_string(seed) +
                          R"(", "breaker": 1, "players": ["amateur", "beginner"], "ai_budget": 30})");
@@ -1272,7 +1273,8 @@ json hint_of(BsGame* g, const char* level) {
 }
 
 /// A shot in the records' form with a call (null: none) and the flags.
-std::string ten_shot(double speed, double phi, const std::string& call, bool safety, bool push_out) {
+std::string ten_shot(double speed, double phi, const std::string& call, bool safety,
+                     bool push_out) {
   return R"({"type": "shoot", "strike": {"speed": )" + json(speed).dump() + R"(, "phi": )" +
          json(phi).dump() + R"(, "theta": 0, "a": 0, "b": 0}, "call": )" + call +
          R"(, "safety": )" + (safety ? "true" : "false") + R"(, "push_out": )" +
@@ -1296,7 +1298,8 @@ TEST(WebApi, TenBallIsAGameOfThePage) {
       << bs_last_error();
 
   // The start: ten object balls racked, the 1 on, the break not called.
-  GamePtr g = new_game(R"({"game": "ten_ball", "table": "8ft", "seed": "10", "players": ["human", "club"]})");
+  GamePtr g = new_game(
+      R"({"game": "ten_ball", "table": "8ft", "seed": "10", "players": ["human", "club"]})");
   const json t = J(bs_game_table(g.get()));
   EXPECT_EQ(t["pockets"].size(), 6u);
   EXPECT_FALSE(t.contains("snooker"));
@@ -1356,7 +1359,8 @@ TEST(WebApi, TenBallRefusesAShotWithoutACallWithTheRulesReason) {
   GamePtr g = new_game(R"({"game": "ten_ball", "seed": "10", "players": ["human", "human"]})");
   // The break is not called.
   std::string before = state_of(g.get());
-  EXPECT_EQ(error_of(bs_game_act(g.get(), ten_shot(9.0, 0.0, R"({"ball": 1, "pocket": 3})", false, false).c_str())),
+  const std::string called_break = ten_shot(9.0, 0.0, R"({"ball": 1, "pocket": 3})", false, false);
+  EXPECT_EQ(error_of(bs_game_act(g.get(), called_break.c_str())),
             "the break is neither called, a safety nor a push-out");
   EXPECT_EQ(state_of(g.get()), before);
   // A legal break (the expert's placement and break, played as chosen:
@@ -1415,7 +1419,8 @@ TEST(WebApi, TenBallRefusesAShotWithoutACallWithTheRulesReason) {
   EXPECT_EQ(s["legal"]["choices"], json::array({"shoot", "pass_back"}));
   EXPECT_EQ(s["legal"]["shoot"], false);
   // A shot before the choice is refused, and so is a choice not on offer.
-  EXPECT_NE(error_of(bs_game_act(g.get(), ten_shot(2.0, 0.0, R"({"ball": 2, "pocket": 0})", false, false).c_str())), "");
+  const std::string called = ten_shot(2.0, 0.0, R"({"ball": 2, "pocket": 0})", false, false);
+  EXPECT_NE(error_of(bs_game_act(g.get(), called.c_str())), "");
   EXPECT_NE(error_of(bs_game_act(g.get(), R"({"type": "decide", "choice": "play_on"})")), "");
   const json took = act(g.get(), R"({"type": "decide", "choice": "shoot"})");
   EXPECT_EQ(took["ruling"]["text"], "Player " + std::to_string(2 - pusher) + " takes the table.");
@@ -1434,7 +1439,8 @@ TEST(WebApi, TenBallWrongPotLetsTheIncomingPlayerChooseAndItsLinkReplays) {
   // Human seats play the expert's hints as chosen, but one called pot is
   // played with its call moved to another pocket: when the ball drops, it
   // is pocketed wrongly.
-  GamePtr g = new_game(R"({"game": "ten_ball", "table": "9ft", "seed": "10", "players": ["human", "human"]})");
+  GamePtr g = new_game(
+      R"({"game": "ten_ball", "table": "9ft", "seed": "10", "players": ["human", "human"]})");
   json wrong;
   int shooter = -1;
   for (int k = 0; k < 60 && wrong.is_null(); ++k) {
@@ -1454,11 +1460,10 @@ TEST(WebApi, TenBallWrongPotLetsTheIncomingPlayerChooseAndItsLinkReplays) {
   const std::string incoming = "Player " + std::to_string(2 - shooter);
   const std::string offender = "Player " + std::to_string(shooter + 1);
   EXPECT_EQ(wrong["ruling"]["turn_continues"], false);
-  EXPECT_NE(wrong["ruling"]["text"].get<std::string>().find(
-                "Not the call" ), std::string::npos) << wrong["ruling"].dump();
-  EXPECT_NE(wrong["ruling"]["text"].get<std::string>().find(
-                incoming + " shoots from here or hands the shot back."), std::string::npos)
-      << wrong["ruling"].dump();
+  const std::string text = wrong["ruling"]["text"].get<std::string>();
+  EXPECT_NE(text.find("Not the call"), std::string::npos) << text;
+  EXPECT_NE(text.find(incoming + " shoots from here or hands the shot back."), std::string::npos)
+      << text;
   json s = wrong["state"];
   EXPECT_EQ(s["phase"], "push_out_choice");
   EXPECT_EQ(s["after_push_out"], false);  // not a push-out: the page words it so
