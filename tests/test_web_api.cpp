@@ -375,8 +375,8 @@ TEST(WebApi, LinkErrorsNameTheActionRefused) {
        "link.t: unknown table size \"9ft\" (expected \"12ft\")"},
       {R"({"g":"snooker","t":"12ft","s":"1","b":0,"p":["human","shark"],"a":[]})", "link.p[1]: "},
       {R"({"g":"bowls","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
-       "link.g: unknown game \"bowls\" (expected \"eight_ball\", \"nine_ball\", \"snooker\" or "
-       "\"three_cushion\")"},
+       "link.g: unknown game \"bowls\" (expected \"eight_ball\", \"nine_ball\", \"ten_ball\", "
+       "\"snooker\" or \"three_cushion\")"},
       {R"({"g":"eight_ball","t":"9ft","s":"1","b":0,"p":["human","human"],"c":{"target":5},"a":[]})",
        "link.c: unknown field"},
       {R"({"g":"three_cushion","t":"9ft","s":"1","b":0,"p":["human","human"],"a":[]})",
@@ -860,7 +860,8 @@ TEST(WebApi, AiGameIsTheGamePlayGamePlays) {
   // Both seats AI: the facade's game is play_game's, action for action,
   // because the seeds are derived the same way.
   const std::uint64_t seed = 4242;
-  for (const auto& game : {std::string("nine_ball"), std::string("eight_ball")}) {
+  for (const auto& game :
+       {std::string("nine_ball"), std::string("eight_ball"), std::string("ten_ball")}) {
     GamePtr g = new_game(R"({"game": ")" + game + R"(", "table": "7ft", "seed": ")" +
                          std::to_string(seed) +
                          R"(", "breaker": 1, "players": ["amateur", "beginner"], "ai_budget": 30})");
@@ -1255,4 +1256,264 @@ TEST(WebApi, SeatsAtANamedNoise) {
     EXPECT_TRUE(starts_with(error_of(bs_last_error()), message))
         << players << ": " << bs_last_error();
   }
+}
+
+// ---------------------------------------------------------------------------
+// 10-ball through the facade (docs/rules.md, "10-ball"; docs/web.md): a
+// game the page plays, its calls refused with the rules' reasons, the
+// incoming player's choice after a ball pocketed wrongly, and its links.
+
+namespace {
+
+/// The action of a hint of `level` for the seat to act (its exact JSON).
+json hint_of(BsGame* g, const char* level) {
+  const json reply = J(bs_game_ai_action(g, level));
+  EXPECT_TRUE(reply.contains("action")) << reply.dump();
+  return reply.contains("action") ? reply["action"] : json();
+}
+
+/// A shot in the records' form with a call (null: none) and the flags.
+std::string ten_shot(double speed, double phi, const std::string& call, bool safety,
+                     bool push_out) {
+  return R"({"type": "shoot", "strike": {"speed": )" + json(speed).dump() + R"(, "phi": )" +
+         json(phi).dump() + R"(, "theta": 0, "a": 0, "b": 0}, "call": )" + call +
+         R"(, "safety": )" + (safety ? "true" : "false") + R"(, "push_out": )" +
+         (push_out ? "true" : "false") + "}";
+}
+
+}  // namespace
+
+TEST(WebApi, TenBallIsAGameOfThePage) {
+  // Its computer players are the AI levels (no baseline), at a named noise too.
+  const json players = J(bs_game_players("ten_ball"));
+  EXPECT_EQ(players["game"], "ten_ball");
+  EXPECT_EQ(players["players"], json(bs::ai_level_names()));
+  EXPECT_EQ(bs_game_new(R"({"game": "ten_ball", "players": ["human", "baseline"]})"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "players[1]: \"human\" or unknown"))
+      << bs_last_error();
+  EXPECT_EQ(bs_game_new(R"({"game": "ten_ball", "table": "12ft", "players": ["human", "human"]})"),
+            nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()),
+                          "table: unknown table size \"12ft\" (expected \"7ft\", \"8ft\" or \"9ft\")"))
+      << bs_last_error();
+
+  // The start: ten object balls racked, the 1 on, the break not called.
+  GamePtr g = new_game(
+      R"({"game": "ten_ball", "table": "8ft", "seed": "10", "players": ["human", "club"]})");
+  const json t = J(bs_game_table(g.get()));
+  EXPECT_EQ(t["pockets"].size(), 6u);
+  EXPECT_FALSE(t.contains("snooker"));
+  EXPECT_FALSE(t.contains("carom"));
+  const json s = J(bs_game_state(g.get()));
+  EXPECT_EQ(s["game"], "ten_ball");
+  EXPECT_EQ(s["phase"], "break_shot");
+  EXPECT_EQ(s["position"].size(), 11u);
+  EXPECT_EQ(s["on_table"], json::array({1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}));
+  EXPECT_EQ(s["legal"]["targets"], json::array({1}));
+  EXPECT_EQ(s["legal"]["call"], false);
+  EXPECT_EQ(s["legal"]["place"], "kitchen");
+  // The 1 on the foot spot, the 10 in the middle of the third row: on the
+  // table's long axis, behind the 1.
+  EXPECT_EQ(s["position"][1], t["foot_spot"]);
+  EXPECT_NEAR(s["position"][10][1].get<double>(), t["foot_spot"][1].get<double>(), 1e-3);
+  EXPECT_GT(s["position"][10][0].get<double>(), t["foot_spot"][0].get<double>() + 0.09);
+  EXPECT_FALSE(s.contains("snooker_figures"));
+  EXPECT_FALSE(s.contains("carom_figures"));
+  EXPECT_FALSE(s["legal"].contains("nominate"));
+}
+
+TEST(WebApi, TenBallComputersAtANamedNoiseCallEveryShot) {
+  // Both seats computers, one at a named noise (the game as play_game
+  // plays it: AiGameIsTheGamePlayGamePlays): the game ends, its record
+  // carries the noise and replays identical, and every shot but the
+  // break is called, declared safe or a push-out.
+  GamePtr g = new_game(R"({"game": "ten_ball", "table": "7ft", "seed": "1010", "breaker": 0,
+                           "players": ["amateur@0.5x", "beginner"], "ai_budget": 30})");
+  for (int k = 0; k < 800 && json::parse(state_of(g.get()))["phase"] != "game_over"; ++k) ai_act(g.get());
+  const json end = json::parse(state_of(g.get()));
+  ASSERT_EQ(end["phase"], "game_over");
+  EXPECT_GE(end["winner"].get<int>(), 0);
+  const bs::GameRecord rec = std::get<bs::GameRecord>(bs::read_record(record_of(g.get())));
+  EXPECT_EQ(rec.config.game, bs::GameType::ten_ball);
+  EXPECT_EQ(rec.players[0], "amateur@0.5x");
+  EXPECT_EQ(rec.noise[0], bs::parse_noise("0.5x"));
+  EXPECT_EQ(rec.noise[1], bs::ai_level("beginner").noise);
+  const bs::ReplayReport report = bs::replay(rec);
+  EXPECT_TRUE(report.identical) << report.message;
+  int called = 0;
+  for (std::size_t i = 0; i < rec.actions.size(); ++i) {
+    const auto* shot = std::get_if<bs::Shoot>(&rec.actions[i].action);
+    if (shot == nullptr) continue;
+    const bs::GameState& before = i == 0 ? rec.start : rec.actions[i - 1].after;
+    if (before.phase == bs::Phase::break_shot) {
+      EXPECT_FALSE(shot->call || shot->safety || shot->push_out) << i;
+    } else {
+      EXPECT_TRUE(shot->call || shot->safety || shot->push_out) << i;
+      called += shot->call ? 1 : 0;
+    }
+  }
+  EXPECT_GE(called, 1);
+}
+
+TEST(WebApi, TenBallRefusesAShotWithoutACallWithTheRulesReason) {
+  GamePtr g = new_game(R"({"game": "ten_ball", "seed": "10", "players": ["human", "human"]})");
+  // The break is not called.
+  std::string before = state_of(g.get());
+  const std::string called_break = ten_shot(9.0, 0.0, R"({"ball": 1, "pocket": 3})", false, false);
+  EXPECT_EQ(error_of(bs_game_act(g.get(), called_break.c_str())),
+            "the break is neither called, a safety nor a push-out");
+  EXPECT_EQ(state_of(g.get()), before);
+  // A legal break (the expert's placement and break, played as chosen:
+  // the seats are human).
+  json brk;
+  for (int k = 0; k < 2 && json::parse(state_of(g.get()))["phase"] == "break_shot"; ++k) {
+    brk = act(g.get(), hint_of(g.get(), "expert").dump());
+  }
+  ASSERT_EQ(brk["kind"], "shoot");
+  ASSERT_TRUE(brk["ruling"]["fouls"].empty()) << brk["ruling"].dump();
+  EXPECT_EQ(brk["ruling"]["legal_break"], true);
+  ASSERT_FALSE(brk["facts"]["pocketed"].empty()) << "this break pockets balls";
+  json s = json::parse(state_of(g.get()));
+  ASSERT_EQ(s["phase"], "shot");
+  EXPECT_EQ(s["legal"]["call"], true);
+  EXPECT_EQ(s["legal"]["push_out"], true);
+
+  // Each refused with the rules' words, the game unchanged.
+  before = state_of(g.get());
+  const std::pair<std::string, std::string> refused[] = {
+      {ten_shot(2.0, 0.0, "null", false, false),
+       "10-ball: every shot but the break calls a ball and a pocket, or is a safety"},
+      {ten_shot(2.0, 0.0, R"({"ball": 2, "pocket": 0})", true, false), "a declared safety has no call"},
+      {ten_shot(2.0, 0.0, R"({"ball": 2, "pocket": 0})", false, true),
+       "a push-out has no call and is no safety"},
+      {ten_shot(2.0, 0.0, R"({"ball": 11, "pocket": 0})", false, false),
+       "called ball 11 is not on the table"},
+      {R"({"type": "shoot", "strike": {"speed": 2, "phi": 0, "theta": 0, "a": 0, "b": 0},
+           "call": {"ball": 2, "pocket": 0}, "safety": false, "push_out": false, "nominate": 16})",
+       "10-ball has no nominated ball (nominate is snooker's)"},
+  };
+  for (const auto& [action, reason] : refused) {
+    EXPECT_EQ(error_of(bs_game_act(g.get(), action.c_str())), reason) << action;
+    EXPECT_EQ(state_of(g.get()), before) << action;
+  }
+  // A ball pocketed on the break cannot be called either.
+  for (const json& down : brk["facts"]["pocketed"]) {
+    const int n = down.get<int>();
+    if (n == 10) continue;  // spotted
+    const std::string call = R"({"ball": )" + std::to_string(n) + R"(, "pocket": 0})";
+    EXPECT_EQ(error_of(bs_game_act(g.get(), ten_shot(2.0, 0.0, call, false, false).c_str())),
+              "called ball " + std::to_string(n) + " is not on the table");
+  }
+  EXPECT_EQ(state_of(g.get()), before);
+
+  // The push-out (no call) is accepted, and its choice says so: the state's
+  // after_push_out is what tells it from the choice after a wrong pot.
+  const int pusher = s["player"].get<int>();
+  const json push = act(g.get(), ten_shot(0.8, 90.0, "null", false, true));
+  EXPECT_NE(push["ruling"]["text"].get<std::string>().find("Push-out"), std::string::npos)
+      << push["ruling"].dump();
+  s = json::parse(state_of(g.get()));
+  EXPECT_EQ(s["phase"], "push_out_choice");
+  EXPECT_EQ(s["after_push_out"], true);
+  EXPECT_EQ(s["player"], 1 - pusher);
+  EXPECT_EQ(s["legal"]["choices"], json::array({"shoot", "pass_back"}));
+  EXPECT_EQ(s["legal"]["shoot"], false);
+  // A shot before the choice is refused, and so is a choice not on offer.
+  const std::string called = ten_shot(2.0, 0.0, R"({"ball": 2, "pocket": 0})", false, false);
+  EXPECT_NE(error_of(bs_game_act(g.get(), called.c_str())), "");
+  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"type": "decide", "choice": "play_on"})")), "");
+  const json took = act(g.get(), R"({"type": "decide", "choice": "shoot"})");
+  EXPECT_EQ(took["ruling"]["text"], "Player " + std::to_string(2 - pusher) + " takes the table.");
+  s = json::parse(state_of(g.get()));
+  EXPECT_EQ(s["phase"], "shot");
+  EXPECT_EQ(s["legal"]["call"], true);
+  EXPECT_EQ(s["legal"]["push_out"], false);
+  // Called now: an expert's called pot is played.
+  const json hint = hint_of(g.get(), "expert");
+  EXPECT_TRUE(hint["call"].is_object() || hint["safety"] == true) << hint.dump();
+  const json shot = act(g.get(), hint.dump());
+  EXPECT_TRUE(shot["ruling"].contains("call_made")) << shot["ruling"].dump();
+}
+
+TEST(WebApi, TenBallWrongPotLetsTheIncomingPlayerChooseAndItsLinkReplays) {
+  // Human seats play the expert's hints as chosen, but one called pot is
+  // played with its call moved to another pocket: when the ball drops, it
+  // is pocketed wrongly.
+  GamePtr g = new_game(
+      R"({"game": "ten_ball", "table": "9ft", "seed": "10", "players": ["human", "human"]})");
+  json wrong;
+  int shooter = -1;
+  for (int k = 0; k < 60 && wrong.is_null(); ++k) {
+    const json s = json::parse(state_of(g.get()));
+    if (s["phase"] == "game_over") break;
+    json a = hint_of(g.get(), "expert");
+    const bool called = a["type"] == "shoot" && a["call"].is_object();
+    if (called) a["call"]["pocket"] = (a["call"]["pocket"].get<int>() + 3) % 6;
+    const json reply = act(g.get(), a.dump());
+    if (called && reply["ruling"]["fouls"].empty() && !reply["facts"]["pocketed"].empty() &&
+        reply["ruling"]["call_made"] == false) {
+      wrong = reply;
+      shooter = reply["player"].get<int>();
+    }
+  }
+  ASSERT_FALSE(wrong.is_null()) << "no called pot dropped in 60 actions";
+  const std::string incoming = "Player " + std::to_string(2 - shooter);
+  const std::string offender = "Player " + std::to_string(shooter + 1);
+  EXPECT_EQ(wrong["ruling"]["turn_continues"], false);
+  const std::string text = wrong["ruling"]["text"].get<std::string>();
+  EXPECT_NE(text.find("Not the call"), std::string::npos) << text;
+  EXPECT_NE(text.find(incoming + " shoots from here or hands the shot back."), std::string::npos)
+      << text;
+  json s = wrong["state"];
+  EXPECT_EQ(s["phase"], "push_out_choice");
+  EXPECT_EQ(s["after_push_out"], false);  // not a push-out: the page words it so
+  EXPECT_EQ(s["player"], 1 - shooter);
+  EXPECT_EQ(s["legal"]["choices"], json::array({"shoot", "pass_back"}));
+  // The balls pocketed stay down, but the 10, which is spotted.
+  for (const json& n : wrong["facts"]["pocketed"]) {
+    EXPECT_EQ(s["on_table"][n.get<std::size_t>()], n == 10 ? 1 : 0) << n;
+  }
+  const int chosen_at = s["actions"].get<int>();
+
+  // Handed back: the offender shoots, and must call.
+  const json back = act(g.get(), R"({"type": "decide", "choice": "pass_back"})");
+  EXPECT_EQ(back["ruling"]["text"], incoming + " hands the shot back to " + offender + ".");
+  EXPECT_EQ(back["state"]["player"], shooter);
+  EXPECT_EQ(back["state"]["phase"], "shot");
+  EXPECT_EQ(back["state"]["legal"]["call"], true);
+  // Taken: the incoming player shoots from there.
+  J(bs_game_undo_to(g.get(), chosen_at));
+  const json took = act(g.get(), R"({"type": "decide", "choice": "shoot"})");
+  EXPECT_EQ(took["ruling"]["text"], incoming + " takes the table.");
+  EXPECT_EQ(took["state"]["player"], 1 - shooter);
+  EXPECT_EQ(took["state"]["phase"], "shot");
+
+  // The link: the 10-ball game, its calls as ball and pocket, its
+  // decision; opened, the same record, state and link, and the same game
+  // after it.
+  const std::string link = link_of(g.get());
+  const json body = body_of_link(link);
+  EXPECT_EQ(body["g"], "ten_ball");
+  EXPECT_EQ(body["t"], "9ft");
+  EXPECT_FALSE(body.contains("c"));
+  const json& actions = body["a"];
+  ASSERT_EQ(actions.size(), static_cast<std::size_t>(chosen_at + 1));
+  const json& entry = actions[static_cast<std::size_t>(chosen_at - 1)];
+  ASSERT_EQ(entry.size(), 9u) << entry.dump();
+  EXPECT_EQ(entry[6], wrong["executed"]["call"]["ball"]);
+  EXPECT_EQ(entry[7], wrong["executed"]["call"]["pocket"]);
+  EXPECT_EQ(entry[8], 0);
+  EXPECT_EQ(actions.back(), json::array({"d", "shoot"}));
+  GamePtr h(bs_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_last_error();
+  EXPECT_EQ(record_of(h.get()), record_of(g.get()));
+  EXPECT_EQ(state_of(h.get()), state_of(g.get()));
+  EXPECT_EQ(link_of(h.get()), link);
+  for (int k = 0; k < 2; ++k) {
+    if (json::parse(state_of(g.get()))["phase"] == "game_over") break;
+    EXPECT_EQ(step_ai(g.get(), "club").dump(), step_ai(h.get(), "club").dump());
+  }
+  EXPECT_EQ(record_of(h.get()), record_of(g.get()));
+  const bs::GameRecord rec = std::get<bs::GameRecord>(bs::read_record(record_of(g.get())));
+  EXPECT_TRUE(bs::replay(rec).identical);
 }

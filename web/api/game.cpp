@@ -232,7 +232,8 @@ std::int64_t web_budget(std::string_view level) {
 bs::GameType game_type(const json& v, const std::string& path) {
   Reader r;
   std::string name;
-  r.must(r.text_of(v, path, "game", {"eight_ball", "nine_ball", "snooker", "three_cushion"}, name));
+  r.must(r.text_of(v, path, "game",
+                    {"eight_ball", "nine_ball", "ten_ball", "snooker", "three_cushion"}, name));
   return *bs::parse_game_type(name);
 }
 

@@ -34,7 +34,7 @@ typedef struct BsGame BsGame;
 const char* bs_version(void);
 
 /* The computer players a seat of `game` ("eight_ball", "nine_ball",
- * "snooker" or "three_cushion") may be: {"game": game, "players":
+ * "ten_ball", "snooker" or "three_cushion") may be: {"game": game, "players":
  * [names]} (the AI levels that play the game, and "baseline" where it
  * plays), or {"error"}. Valid until the next call of bs_game_players. */
 const char* bs_game_players(const char* game);

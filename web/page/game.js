@@ -1,4 +1,4 @@
-// The game tab: a game of 8-ball, 9-ball, snooker or three-cushion
+// The game tab: a game of 8-ball, 9-ball, 10-ball, snooker or three-cushion
 // against an AI level or the baseline player (the computer players the
 // engine says play the game) or a friend on the same screen. The
 // engine (engine.js over the wasm build) does every bit of physics and
@@ -90,7 +90,40 @@ const PHASE_WORDS = {
   foul_choice: 'after the foul: play on, or have the other player play again',
 };
 
-const GAME_NAMES = { eight_ball: '8-ball', nine_ball: '9-ball', snooker: 'Snooker', three_cushion: 'Three-cushion' };
+// 10-ball's choice after a ball pocketed wrongly (not the ball called, or
+// not in the pocket called): the rules reuse the push-out's phase and
+// choices, and the state's after_push_out (false) tells the two apart.
+const WRONG_POT_WORDS = 'a ball was pocketed wrongly: shoot from here or hand the shot back';
+const WRONG_POT_CHOICES = {
+  shoot: 'Shoot from here',
+  pass_back: 'Hand the shot back: the other player shoots again',
+};
+
+/** The choice a state offers is 10-ball's after a wrong pot. */
+function wrongPotChoice(st) {
+  return !!st && st.phase === 'push_out_choice' && !st.after_push_out;
+}
+
+/** The decision on offer in words ("after the push-out: ..."). */
+function phaseWords(st) {
+  if (wrongPotChoice(st)) return WRONG_POT_WORDS;
+  return PHASE_WORDS[st.phase] || st.phase;
+}
+
+/** A choice's button text in the state `st`. */
+function choiceWords(st, c) {
+  if (wrongPotChoice(st) && WRONG_POT_CHOICES[c]) return WRONG_POT_CHOICES[c];
+  return CHOICE_WORDS[c] || c.replace(/_/g, ' ');
+}
+
+const CALL_HOW = 'Call a ball and a pocket: aim at the ball on (the pocket nearest its line is called), or choose them under "Call ball" and "Call pocket", or press a pocket; or tick "safety".';
+
+const GAME_NAMES = { eight_ball: '8-ball', nine_ball: '9-ball', ten_ball: '10-ball', snooker: 'Snooker', three_cushion: 'Three-cushion' };
+
+/** The rotation games' game ball (9-ball's 9, 10-ball's 10), or null. */
+function gameBall(game) {
+  return game === 'nine_ball' ? 9 : game === 'ten_ball' ? 10 : null;
+}
 
 const CAROM_BALL = { white: 0, yellow: 1, red: 2 };
 
@@ -392,18 +425,42 @@ export class GameUI {
     return !!legal.shoot || (!!legal.must_place && !!legal.place && legal.place !== 'none');
   }
 
-  /** The coming shot carries a call (8-ball): now, or after the placement. */
+  /** The coming shot carries a call (8-ball, 10-ball): now, or after the placement. */
   callDue() {
     const legal = this.legal();
     if (legal.call) return true;
-    return !legal.shoot && this.shotDue() && this.st.game === 'eight_ball' && this.st.phase === 'shot';
+    const calling = this.st.game === 'eight_ball' || this.st.game === 'ten_ball';
+    return !legal.shoot && this.shotDue() && calling && this.st.phase === 'shot';
   }
 
-  /** The coming shot may be a push-out (9-ball): now, or after the placement. */
+  /** The rotation games' ball on: the lowest-numbered object ball on the
+   *  table (also while a choice is due, when the state lists no targets). */
+  lowestBall() {
+    const on = this.st ? this.st.on_table : [];
+    for (let n = 1; n < on.length; n++) if (on[n]) return n;
+    return null;
+  }
+
+  /** Every shot but the break must be called or declared safe (10-ball). */
+  callRequired() { return !!this.st && this.st.game === 'ten_ball' && this.callDue(); }
+
+  /** The coming shot may be a push-out (9-ball, 10-ball): now, or after the placement. */
   pushOutDue() {
     const legal = this.legal();
     if (legal.push_out) return true;
-    return !legal.shoot && this.shotDue() && this.st.game === 'nine_ball' && !!this.st.push_out_allowed;
+    return !legal.shoot && this.shotDue() && gameBall(this.st.game) != null && !!this.st.push_out_allowed;
+  }
+
+  /** The coming shot is declared a safety or a push-out: it has no call. */
+  uncalled() {
+    return (this.callDue() && $('safety').checked) || (this.pushOutDue() && $('push-out').checked);
+  }
+
+  /** The balls a call may name: the targets (8-ball: the player's group);
+   *  in 10-ball any object ball on the table (the lowest is still hit first). */
+  callable() {
+    if (this.st && this.st.game === 'ten_ball') return this.objectBalls().map((b) => b.n).sort((p, q) => p - q);
+    return this.legal().targets || [];
   }
 
   snooker() { return !!this.st && this.st.game === 'snooker'; }
@@ -568,12 +625,15 @@ export class GameUI {
     return aimGeometry(this.table, cue, this.aim.phi, this.objectBalls(), this.R);
   }
 
-  /** The call the shot will carry (8-ball): overrides, else from the aim. */
+  /** The call the shot will carry (8-ball, 10-ball): overrides, else from
+   *  the aim (the target the aim line reaches first, into the pocket
+   *  nearest the direction it is sent); none for a safety or a push-out. */
   currentCall(geo) {
     const legal = this.legal();
-    if (!this.callDue()) return null;
+    if (!this.callDue() || this.uncalled()) return null;
     const targets = legal.targets || [];
     let ball = this.override.ball;
+    if (ball != null && !this.callable().includes(ball)) ball = null;
     const ballAuto = ball == null;
     if (ball == null && geo && geo.hit && targets.includes(geo.hit.n)) ball = geo.hit.n;
     let pocket = this.override.pocket;
@@ -611,12 +671,15 @@ export class GameUI {
       safety: false,
       push_out: false,
     };
-    if (legal.call) {
+    // a safety or a push-out carries no call (the rules refuse one with it)
+    if (legal.push_out && $('push-out').checked) {
+      action.push_out = true;
+    } else if (legal.call && $('safety').checked) {
+      action.safety = true;
+    } else if (legal.call) {
       const call = this.currentCall(this.geometry());
       if (call && call.ball != null && call.pocket != null) action.call = { ball: call.ball, pocket: call.pocket };
-      if ($('safety').checked) action.safety = true;
     }
-    if (legal.push_out && $('push-out').checked) action.push_out = true;
     const nom = this.currentNomination(this.geometry());
     if (nom && nom.ball != null) action.nominate = nom.ball;
     return action;
@@ -650,7 +713,12 @@ export class GameUI {
       this.updatePanel();
       return;
     }
-    this.doAct(action);
+    const r = this.doAct(action);
+    // 10-ball: the rules refuse a shot with no call and no safety; the
+    // page shows their reason and how to make a call
+    if (r && r.error && this.callRequired() && !action.call && !action.safety && !action.push_out) {
+      this.showError(`${r.error}. ${CALL_HOW}`);
+    }
   }
 
   decide(choice) {
@@ -1215,13 +1283,13 @@ export class GameUI {
     const choices = $('choices');
     const list = canAct ? this.decisions() : [];
     choices.hidden = list.length === 0;
-    const key = list.join(',');
+    const key = list.length ? `${phaseWords(st)}:${list.join(',')}` : '';
     if (choices.dataset.key !== key) {
       choices.dataset.key = key;
       choices.textContent = '';
       if (list.length) {
         const p = document.createElement('p');
-        p.textContent = PHASE_WORDS[st.phase] || 'Your decision:';
+        p.textContent = phaseWords(st);
         choices.appendChild(p);
       }
       for (const c of list) {
@@ -1229,7 +1297,7 @@ export class GameUI {
         b.type = 'button';
         b.id = `choice-${c}`;
         b.dataset.choice = c;
-        b.textContent = CHOICE_WORDS[c] || c.replace(/_/g, ' ');
+        b.textContent = choiceWords(st, c);
         b.addEventListener('click', () => this.decide(c));
         choices.appendChild(b);
       }
@@ -1271,9 +1339,10 @@ export class GameUI {
     } else {
       const who = this.seatName(st.player);
       let what;
-      if (this.thinking) what = `${gameName}: ${who} is thinking…`;
+      if (this.thinking && this.decisions().length) what = `${gameName}: ${who} is choosing (${phaseWords(st)})…`;
+      else if (this.thinking) what = `${gameName}: ${who} is thinking…`;
       else if (st.phase === 'break_shot') what = `${gameName}: ${who} to break`;
-      else if (this.decisions().length) what = `${gameName}: ${who} to decide (${PHASE_WORDS[st.phase] || st.phase})`;
+      else if (this.decisions().length) what = `${gameName}: ${who} to decide (${phaseWords(st)})`;
       else what = `${gameName}: ${who} to shoot`;
       if (!this.thinking) {
         if (legal.place === 'kitchen') what += ' — cue ball in hand behind the head string';
@@ -1295,8 +1364,9 @@ export class GameUI {
       bits.push(`score ${k.score[0]} – ${k.score[1]}`);
       if (k.equalizing && st.phase !== 'game_over') bits.push('the equalizing inning');
     } else {
-      const lowest = (legal.targets && legal.targets.length) ? legal.targets[0] : null;
+      const lowest = this.lowestBall();
       if (lowest != null && st.phase !== 'game_over') bits.push(`ball on: ${lowest}`);
+      if (st.game === 'ten_ball' && st.phase !== 'game_over') bits.push('the 10 wins when called');
       if (st.push_out_allowed && st.phase !== 'game_over') bits.push('push-out allowed');
     }
     const f = st.fouls_in_a_row || [0, 0];
@@ -1459,20 +1529,45 @@ export class GameUI {
         }
       }
     } else {
-      const nine = [1, 2, 3, 4, 5, 6, 7, 8, 9];
+      // the rotation games: the balls 1 to the game ball (9 or 10), those
+      // down faded; the ball on (the lowest) ringed and marked "on", the
+      // game ball marked as the one that wins
+      const last = gameBall(st.game) || 9;
+      const lowest = st.phase === 'game_over' ? null : this.lowestBall();
+      const y = 22;
       ctx.fillStyle = '#9aa5b1';
       ctx.font = '600 12px system-ui, -apple-system, "Segoe UI", Arial, sans-serif';
       ctx.textBaseline = 'middle';
-      ctx.fillText('on the table', 0, 30);
-      nine.forEach((n, i) => drawBall(ctx, n, 106 + i * (2 * r + 2), 30, r, { alpha: on(n) ? 1 : 0.18, shadow: false }));
+      ctx.textAlign = 'left';
+      ctx.fillText('on the table', 0, y);
+      for (let n = 1; n <= last; n++) {
+        const x = 98 + (n - 1) * (2 * r + 2);
+        drawBall(ctx, n, x, y, r, { alpha: on(n) ? 1 : 0.18, shadow: false });
+        const words = [];
+        if (n === lowest) words.push('on');
+        if (n === last) words.push(st.game === 'ten_ball' ? 'money' : 'wins');
+        if (n === lowest) {
+          ctx.strokeStyle = '#ffd65a';
+          ctx.lineWidth = 2;
+          ctx.beginPath();
+          ctx.arc(x, y, r + 2.5, 0, Math.PI * 2);
+          ctx.stroke();
+        }
+        if (words.length) {
+          ctx.fillStyle = n === lowest ? '#ffd65a' : '#9aa5b1';
+          ctx.font = '600 10px system-ui, -apple-system, "Segoe UI", Arial, sans-serif';
+          ctx.textAlign = n === last ? 'right' : 'center';
+          ctx.fillText(words.join(' · '), n === last ? x + r : x, y + r + 12);
+          ctx.textAlign = 'left';
+        }
+      }
     }
   }
 
   fillCallSelects() {
-    const legal = this.legal();
     const bs = $('call-ball');
     const ps = $('call-pocket');
-    const targets = legal.targets || [];
+    const targets = this.callable();
     const key = targets.join(',');
     if (bs.dataset.key !== key) {
       bs.dataset.key = key;
@@ -1646,6 +1741,8 @@ export class GameUI {
       this.override.pocket = v === '' ? null : Number(v);
       this.requestRender();
     });
+    // a safety or a push-out has no call: the call drawn goes and comes back
+    for (const id of ['safety', 'push-out']) $(id).addEventListener('change', () => this.requestRender());
     $('playback-speed').addEventListener('change', () => $('table').focus({ preventScroll: true }));
     document.addEventListener('keydown', (ev) => this.onKey(ev));
     document.addEventListener('keyup', (ev) => {
@@ -1806,7 +1903,7 @@ export class GameUI {
         this.updatePanel();
       }
     }
-    // 8-ball calls: a click on a pocket calls that pocket
+    // 8-ball's and 10-ball's calls: a click on a pocket calls that pocket
     if (this.callDue()) {
       const onBall = this.objectBalls().some((b) => Math.hypot(b.x - p.x, b.y - p.y) <= this.R * 1.1);
       if (!onBall) {

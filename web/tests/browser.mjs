@@ -872,6 +872,163 @@ test('three-cushion against the computer: its shot is played and ruled', async (
   await context.close();
 });
 
+// 10-ball, seed 10 on the 9 ft table: the expert's break (Player 1
+// pockets the 2, 3, 9 and 10; the 10 is spotted and he shoots again), then
+// a shot at the 1 called in the bottom-left corner pocket (0) that drops
+// the 1 in another pocket: a ball pocketed wrongly (tests/test_web_api.cpp
+// and the identity test play the same shots).
+const TEN_BREAK = { type: 'shoot', strike: { speed: 11.0, phi: -0.25782926747071394, theta: 0, a: 0, b: -0.2 }, call: null, safety: false, push_out: false };
+const TEN_WRONG_POT = { speed: 1.562406799667897, phi: 23.351333367801768, theta: 0, a: 0, b: 0.4 };
+
+// A 10-ball game through the form, Player 1 human, and its break.
+async function tenBallBreak(page, opponent) {
+  await page.click('#new-game');
+  await page.selectOption('#game-type', 'ten_ball');
+  const opponents = await page.$$eval('#opponent option', (os) => os.map((o) => o.value));
+  check(JSON.stringify(opponents) === JSON.stringify(['beginner', 'amateur', 'club', 'expert', 'champion', 'friend']), '10-ball opponents: ' + opponents);
+  check(JSON.stringify(await page.$$eval('#table-size option', (os) => os.map((o) => o.value))) === '["7ft","8ft","9ft"]',
+    '10-ball tables: not the pool tables');
+  await page.fill('#seed', '10');
+  await newGame(page, { game: 'ten_ball', opponent, table: '9ft' });
+  let st = await page.evaluate(() => window.breakshot.state());
+  check(st.game === 'ten_ball' && st.position.length === 11, 'not a 10-ball rack: ' + st.game + ', ' + st.position.length + ' balls');
+  check(/^10-ball: Player 1( \(you\))? to break/.test(await page.textContent('#status-turn')), 'the status: ' + await page.textContent('#status-turn'));
+  check(await page.isHidden('#call-box'), 'the break offers a call');
+  await page.locator('#table').screenshot({ path: path.join(shots, 'ten-ball-rack.png') });
+  const r = await page.evaluate((a) => window.breakshot.act(a), TEN_BREAK);
+  check(!r.error && r.ruling.spotted.includes(10) && r.ruling.turn_continues, 'the break: ' + JSON.stringify(r.error || r.ruling));
+  await idle(page);
+  st = await page.evaluate(() => window.breakshot.state());
+  check(st.player === 0 && st.legal.call && st.legal.push_out, 'after the break: ' + JSON.stringify(st.legal));
+  return st;
+}
+
+// The human's called shot at the 1, the call chosen in the panel.
+async function tenBallCalledShot(page) {
+  await page.selectOption('#call-ball', '1');
+  await page.selectOption('#call-pocket', '0');
+  await page.evaluate((s) => { Object.assign(window.breakshot.ui.aim, s); window.breakshot.ui.syncControls(); }, TEN_WRONG_POT);
+  const shot = await page.evaluate(() => window.breakshot.ui.shotAction());
+  check(shot.call && shot.call.ball === 1 && shot.call.pocket === 0 && !shot.safety && !shot.push_out, 'the shot carries ' + JSON.stringify(shot));
+  await page.click('#shoot');
+  await page.waitForFunction(() => window.breakshot.state().actions >= 2, null, { timeout: 10000 });
+  await idle(page);
+}
+
+test('10-ball: the rack and the tray, a shot without a call refused, a called shot, the choice after a wrong pot', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  await tenBallBreak(page, 'friend');
+  check(await page.isVisible('#tray') && await page.isHidden('#score'), 'the tray is not shown');
+  check(await page.isVisible('#call-box') && await page.isVisible('#push-out-box'), 'no call or push-out box after the break');
+  check(/ball on: 1/.test(await page.textContent('#status-info')) && /the 10 wins when called/.test(await page.textContent('#status-info')),
+    'the status: ' + await page.textContent('#status-info'));
+  // The call-ball select names every object ball on the table (any may be called).
+  const callable = await page.$$eval('#call-ball option', (os) => os.map((o) => o.value));
+  check(JSON.stringify(callable) === JSON.stringify(['', '1', '4', '5', '6', '7', '8', '10']), 'callable balls: ' + callable);
+  // Aimed where no ball is hit first, the call is none: the rules refuse
+  // the shot, and the page says why and how to call.
+  const before = await page.evaluate(() => window.breakshot.state());
+  const none = await page.evaluate(() => {
+    const ui = window.breakshot.ui;
+    for (let p = 0; p < 360; p += 5) {
+      ui.aim.phi = p;
+      const g = ui.geometry();
+      if (!g.hit) return { phi: p, call: ui.shotAction().call };
+    }
+    return null;
+  });
+  check(none && none.call === null, 'no aim without a call: ' + JSON.stringify(none));
+  await page.click('#shoot');
+  const error = await page.textContent('#status-error');
+  check(await page.isVisible('#status-error') && /every shot but the break calls a ball and a pocket, or is a safety/.test(error) && /Call a ball and a pocket/.test(error),
+    'the refusal shown: ' + error);
+  check(ballsOf(await page.evaluate(() => window.breakshot.state())) === ballsOf(before), 'the refused shot moved the balls');
+  check((await page.evaluate(() => window.breakshot.state())).actions === before.actions, 'the refused shot was played');
+  // Aimed at the 1, the aim calls it; a safety calls nothing.
+  const aimed = await page.evaluate(() => {
+    const ui = window.breakshot.ui;
+    const p = ui.st.position[1];
+    ui.setAimToward({ x: p[0], y: p[1] });
+    const auto = ui.shotAction();
+    document.getElementById('safety').checked = true;
+    const safe = ui.shotAction();
+    document.getElementById('safety').checked = false;
+    return { auto, safe };
+  });
+  check(aimed.auto.call && aimed.auto.call.ball === 1 && !aimed.auto.safety, 'the aim at the 1 calls ' + JSON.stringify(aimed.auto.call));
+  check(aimed.safe.call === null && aimed.safe.safety, 'a safety carries ' + JSON.stringify(aimed.safe));
+  // The called shot, the 1 into another pocket: Player 2 chooses, in the
+  // words of a wrong pot, not of a push-out.
+  await tenBallCalledShot(page);
+  const st = await page.evaluate(() => window.breakshot.state());
+  check(st.phase === 'push_out_choice' && !st.after_push_out && st.player === 1, 'after the wrong pot: ' + st.phase + ', player ' + st.player);
+  check(await page.isHidden('#status-error'), 'an error is still shown: ' + await page.textContent('#status-error'));
+  const choices = await page.textContent('#choices');
+  check(/a ball was pocketed wrongly/.test(choices) && !/push-out/.test(choices), 'the choice says: ' + choices);
+  check(await page.textContent('#choice-shoot') === 'Shoot from here', 'the shoot button: ' + await page.textContent('#choice-shoot'));
+  check(/^Hand the shot back/.test(await page.textContent('#choice-pass_back')), 'the pass-back button: ' + await page.textContent('#choice-pass_back'));
+  check(/Player 2 to decide \(a ball was pocketed wrongly/.test(await page.textContent('#status-turn')), 'the status: ' + await page.textContent('#status-turn'));
+  const log = await page.$$eval('#ruling-log li', (li) => li.map((x) => x.textContent));
+  check(/Not the call: Player 2 shoots from here or hands the shot back/.test(log[log.length - 1]), 'the log: ' + log[log.length - 1]);
+  await page.screenshot({ path: path.join(shots, 'ten-ball-choice.png') });
+  await page.click('#choice-pass_back');
+  await idle(page);
+  const back = await page.evaluate(() => window.breakshot.state());
+  check(back.phase === 'shot' && back.player === 0 && back.legal.call, 'after the pass back: ' + back.phase + ', player ' + back.player);
+  const last = await page.$$eval('#ruling-log li', (li) => li[li.length - 1].textContent);
+  check(/Player 2 hands the shot back to Player 1/.test(last), 'the log: ' + last);
+  check(problems.length === 0, problems.join('\n'));
+  await context.close();
+});
+
+test('10-ball against the computer: a called shot, the computer chooses after the wrong pot and plays', async ({ browser, url }) => {
+  const { page, context, problems } = await openPage(browser, url);
+  await tenBallBreak(page, 'club');
+  // Every text the status takes, from here on.
+  await page.evaluate(() => {
+    window.__turns = [];
+    new MutationObserver(() => window.__turns.push(document.getElementById('status-turn').textContent))
+      .observe(document.getElementById('status-turn'), { childList: true, characterData: true, subtree: true });
+  });
+  await tenBallCalledShot(page);
+  // The computer chooses, then shoots (its shots called or declared safe)
+  // until the turn comes back or the game ends.
+  await page.waitForFunction(() => { const s = window.breakshot.state(); return s.actions >= 3 && (s.player === 0 || s.phase === 'game_over'); },
+    null, { timeout: 120000 });
+  await idle(page);
+  const turns = await page.evaluate(() => window.__turns);
+  check(turns.some((t) => /^10-ball: Player 2 \(club AI\) is choosing \(a ball was pocketed wrongly: shoot from here or hand the shot back\)/.test(t)),
+    'the status never said the computer chooses after a wrong pot: ' + JSON.stringify([...new Set(turns)]));
+  const rec = await page.evaluate(() => window.breakshot.game.record());
+  const choice = rec.actions[2];
+  check(choice.player === 1 && choice.action.type === 'decide' && /Player 2 (takes the table|hands the shot back to Player 1)\./.test(choice.ruling.text),
+    'the computer\'s choice: ' + JSON.stringify(choice));
+  const computerShots = rec.actions.filter((a, i) => i > 2 && a.player === 1 && a.action.type === 'shoot');
+  check(computerShots.length >= 1 || choice.action.choice === 'pass_back', 'the computer did not shoot');
+  for (const a of computerShots) check(a.action.call || a.action.safety, 'a computer shot neither called nor safe: ' + JSON.stringify(a.action));
+  const log = await page.$$eval('#ruling-log li', (li) => li.map((x) => x.textContent));
+  check(log.length === rec.actions.length, `the log has ${log.length} entries for ${rec.actions.length} actions`);
+  check(/takes the table|hands the shot back/.test(log[2]), 'the log of the choice: ' + log[2]);
+  check(!/refused|error/i.test(log.join('\n')), 'the log shows an error');
+  // The tray: the balls 1 to 10, the ball on and the money ball marked.
+  await page.locator('#tray').screenshot({ path: path.join(shots, 'ten-ball-tray.png') });
+  await page.screenshot({ path: path.join(shots, 'ten-ball-page.png') });
+  // The link opens the same game.
+  await page.click('#share');
+  const hash = await page.evaluate(() => location.hash);
+  const two = await openPage(browser, url + hash);
+  await idle(two.page);
+  const want = await page.evaluate(() => window.breakshot.state());
+  const got = await two.page.evaluate(() => window.breakshot.state());
+  check(got.game === 'ten_ball' && ballsOf(got) === ballsOf(want) && got.actions === want.actions && got.player === want.player,
+    'the link gives another game');
+  check(await two.page.inputValue('#game-type') === 'ten_ball', 'the form does not show 10-ball after the link');
+  const all = problems.concat(two.problems);
+  check(all.length === 0, all.join('\n'));
+  await two.context.close();
+  await context.close();
+});
+
 test('the lab runs the two-ball example and draws its energy graph', async ({ browser, url }) => {
   const { page, context, problems } = await openPage(browser, url);
   await page.click('#tab-lab');
