@@ -53,6 +53,26 @@
 
 namespace breakshot {
 
+std::string_view to_string(ShotKind k) {
+  switch (k) {
+    case ShotKind::direct:
+      return "direct";
+    case ShotKind::bank:
+      return "bank";
+    case ShotKind::kick:
+      return "kick";
+    case ShotKind::combination:
+      return "combination";
+    case ShotKind::safety:
+      return "safety";
+    case ShotKind::break_shot:
+      return "break_shot";
+    case ShotKind::jump:
+      return "jump";
+  }
+  return "unknown";
+}
+
 namespace ai_detail::shot_gen {
 
 Generator::Generator(const Rules& rules, const GameState& state, const ShotGenOptions& options)
