@@ -31,6 +31,7 @@ Judged judge(const Rules& rules, const GameState& state, const Shoot& shot, Simu
   const bool over = o.state.phase == Phase::game_over;
   j.wins = over && o.state.winner == state.player;
   j.legal = o.ruling.fouls.empty() && (!over || j.wins);
+  j.fouls = std::move(o.ruling.fouls);
   j.next = std::move(o.state);
   return j;
 }

@@ -17,6 +17,7 @@ namespace breakshot::ai_detail {
 struct Judged {
   /// No foul, and the game not lost (8-ball: no 8 before its time).
   bool legal = false;
+  std::vector<Foul> fouls;  ///< the ruling's fouls, in its order
   bool wins = false;  ///< the shot wins the game for the shooter
   int first_hit = -1;
   std::vector<int> pocketed;
