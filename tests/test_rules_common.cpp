@@ -469,6 +469,29 @@ TEST(RulesCommonEvents, ApplyEventsRulesAsApplyDoes) {
   EXPECT_EQ(e.state, o.state);
 }
 
+TEST(RulesCommonEvents, ABallThatLeavesKeepsItsPlaceAsInApply) {
+  // apply() keeps a pocketed ball's position from before the shot, and
+  // apply_events() does the same whatever `rest` gives it (the AI judges
+  // its candidates through apply_events with the simulation's places).
+  const Rules rules = nine_ball_rules();
+  GameState s = bare_table(rules, {0.8, 0.5});
+  put(s, 1, {1.5, 0.5});
+  put(s, 9, {2.0, 0.3});
+  const Shoot shot = shot_at(s.position[0], s.position[1], 2.0);
+  const std::vector<Event> events = {ev(0.0, EventType::cue_strike, 0),
+                                     ev(0.2, EventType::ball_ball, 0, 1),
+                                     ev(0.9, EventType::ball_pocket, 1, -1, -1, 0)};
+  std::vector<Vec2> rest = s.position;
+  rest[0] = {1.2, 0.5};
+  rest[1] = rules.table().pockets[0].centre;
+  const Outcome o = rules.apply_events(s, shot, events, rest);
+  EXPECT_TRUE(o.ruling.fouls.empty()) << describe(o);
+  EXPECT_FALSE(on(o.state, 1));
+  EXPECT_TRUE(o.state.position[1] == s.position[1]);
+  EXPECT_TRUE(o.state.position[0] == rest[0]);
+  EXPECT_TRUE(o.state.position[9] == rest[9]);
+}
+
 TEST(RulesCommonEvents, ApplyEventsRefusesWhatCannotBe) {
   const Rules rules = nine_ball_rules();
   GameState s = bare_table(rules, {0.8, 0.5});

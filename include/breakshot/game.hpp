@@ -519,8 +519,9 @@ class Rules {
   Outcome apply(const GameState& state, const Action& action, ShotWorkspace& work) const;
   /// Rules `shot` from `state` as if the physics had played it with these
   /// `events` (ball fields as ball numbers): balls with a ball_pocket or
-  /// ball_off_table event leave the table, every other ball on the table
-  /// comes to rest at `rest[ball number]`. `miscue` as the cue strike
+  /// ball_off_table event leave the table (keeping their positions from
+  /// `state`, as in apply()), every other ball on the table comes to rest
+  /// at `rest[ball number]`. `miscue` as the cue strike
   /// reported it. For rulings from hand-made event lists; apply() is this
   /// with the events the engine simulated. Throws std::invalid_argument
   /// with check()'s reason if the shot is not allowed, if `rest` does not

@@ -605,15 +605,17 @@ Outcome Rules::apply_events(const GameState& state, const Shoot& shot, std::vect
   out.events = std::move(events);
   out.facts = facts(out.events, shot.cue_ball.value_or(cue_ball(state)));
   out.facts.miscue = miscue;
+  for (int b : out.facts.pocketed) s.on_table[static_cast<std::size_t>(b)] = 0;
+  for (int b : out.facts.off_table) s.on_table[static_cast<std::size_t>(b)] = 0;
   for (std::size_t b = 0; b < s.on_table.size(); ++b) {
-    if (!s.on_table[b]) continue;
+    if (!state.on_table[b]) continue;
     if (!std::isfinite(rest[b].x) || !std::isfinite(rest[b].y)) {
       throw std::invalid_argument("rest[" + std::to_string(b) + "]: not a finite position");
     }
-    s.position[b] = rest[b];
+    // A ball that left the table keeps its place from before the shot, as
+    // in apply().
+    if (s.on_table[b]) s.position[b] = rest[b];
   }
-  for (int b : out.facts.pocketed) s.on_table[static_cast<std::size_t>(b)] = 0;
-  for (int b : out.facts.off_table) s.on_table[static_cast<std::size_t>(b)] = 0;
   rule_shot(state, shot, out);
   return out;
 }
