@@ -26,7 +26,6 @@ constexpr GamePolicy snooker() {
   p.search = GamePolicy::Search::snooker;
   p.frame_scoring = true;
   p.combinations = GamePolicy::Combinations::reds_only;
-  p.plan_balls_on = true;
   p.break_is_a_shot = true;
   p.jumps = false;
   p.snooker_generation = true;

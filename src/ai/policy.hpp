@@ -34,9 +34,6 @@ struct GamePolicy {
   /// Which balls a combination off the first ball may pot.
   enum class Combinations { own_group, any_ball, reds_only };
   Combinations combinations = Combinations::any_ball;
-  /// The shooter plans only the balls on that a rule names (snooker: a
-  /// free ball is never planned), not every legal first ball.
-  bool plan_balls_on = false;
   /// The break is a shot like any other (snooker's break-off), not the
   /// pool games' own break search.
   bool break_is_a_shot = false;

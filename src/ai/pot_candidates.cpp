@@ -159,7 +159,7 @@ double Generator::leave(const Judged& j) const {
     int ball = -1;
     const double p = ai_detail::best_pot_estimate_from(rules_, j.next, j.next.position[0], false,
                                                        opt_.leave_sigma_deg, &ball);
-    return ball > 0 ? p * (snooker_value(ball) + ai_detail::kSnookerCarry) /
+    return ball > 0 ? p * (rules_.ball_value(ball) + ai_detail::kSnookerCarry) /
                           (7.0 + ai_detail::kSnookerCarry)
                     : 0.0;
   }

@@ -87,9 +87,10 @@ Generator::Generator(const Rules& rules, const GameState& state, const ShotGenOp
   layout_.pos = state.position;
   layout_.on = state.on_table;
   la_ = rules.legal_actions(state);
-  // Snooker: the balls on; a free ball (any ball nominated as the ball
-  // on after a foul) is not planned.
-  const std::vector<int> planned = policy_.plan_balls_on ? snooker_balls_on(state) : la_.targets;
+  // The balls on as the rules name them (snooker: a free ball, any ball
+  // nominated as the ball on after a foul, is not planned; the pool
+  // games: the legal first balls).
+  const std::vector<int> planned = rules.balls_on(state);
   for (int t : planned) {
     if (t <= 0 || t >= static_cast<int>(state.on_table.size()) || !on(t)) continue;
     // From the kitchen, a ball behind the head string is fair only once

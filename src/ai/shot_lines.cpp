@@ -208,13 +208,14 @@ std::optional<Line> Generator::kick_line(int t, int pocket, int rail) const {
 
 /// Balls a combination off first ball f may pocket: 9-ball, any other
 /// ball (a legal hit on the lowest makes any pot count); 8-ball, another
-/// legal target (so the call is a ball of the shooter's group).
+/// legal target (so the call is a ball of the shooter's group; the 8 is a
+/// target only when it alone is, and then it is the first ball).
 std::vector<int> Generator::combination_targets(int f) const {
   std::vector<int> out;
   using Combinations = ai_detail::GamePolicy::Combinations;
   if (policy_.combinations == Combinations::own_group) {
     for (int t : targets_) {
-      if (t != f && t != 8) out.push_back(t);
+      if (t != f) out.push_back(t);
     }
     return out;
   }
@@ -223,7 +224,7 @@ std::vector<int> Generator::combination_targets(int f) const {
     // potted (the nominated ball), so colours have no combinations.
     if (colour_on_) return out;
     for (int t : targets_) {
-      if (t != f && snooker_value(t) == 1) out.push_back(t);
+      if (t != f && rules_.ball_value(t) == 1) out.push_back(t);
     }
     return out;
   }
