@@ -75,6 +75,34 @@ double snooker_position_value(const Rules& rules, const GameState& after, int me
 /// The shooter's value for a best pot p (above).
 inline double shooter_value(double p) { return kShooterBase + kShooterGain * p; }
 
+/// The pot estimate's constants for one kind of table, fitted against
+/// the engine (docs/ai.md, "The estimate, checked against the engine"). A
+/// corner pocket takes a ball whose centre comes within corner_tolerance
+/// pocket radii of the centre line, times cos(alpha) for a ball coming at
+/// alpha to the pocket's bisector, and none beyond cos(alpha) =
+/// corner_min_cos; a side pocket side_tolerance radii times
+/// cos(alpha)^1.5 (its facings turn balls away faster as the angle
+/// grows), none beyond side_min_cos. The chance is divided by 1 +
+/// distance_penalty per metre of the cue ball's and the object ball's
+/// runs, for the speed and spin errors the aim leaves out.
+struct PocketConstants {
+  double corner_tolerance;
+  double side_tolerance;
+  double corner_min_cos;
+  double side_min_cos;
+  double distance_penalty;
+};
+
+/// The estimate's constants: the pool tables' and the snooker table's
+/// (rounded jaws and tighter mouths). The defaults are the AI's: the pool
+/// tolerances and penalty as fitted on about 200 tables of champion games
+/// under tournament noise, the snooker tolerances fitted on the snooker
+/// table, the angle limits set by hand.
+struct EstimateConstants {
+  PocketConstants pool{0.78, 0.715, 0.5, 0.47, 0.04};
+  PocketConstants snooker{0.38, 0.38, 0.5, 0.47, 0.04};
+};
+
 /// Geometric estimate in [0, 1] of the best pot the player to act in
 /// `state` (phase shot, cue ball on the table) has: ghost-ball aim at
 /// each legal ball and pocket with open paths (the object ball's line
@@ -85,12 +113,22 @@ inline double shooter_value(double p) { return kShooterBase + kShooterGain * p; 
 /// it sees no throw, kisses or speed, which is what the sampling is for.
 double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg);
 
+/// The same with other constants than the AI's (for fitting them).
+double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg,
+                         const EstimateConstants& constants);
+
 /// The same with the cue ball at `cue` instead (for choosing placements):
 /// `kitchen_shot` as the rules would set it after the placement. The pot
 /// it rates is stored in *best_ball and *best_pocket when given (left
 /// alone when there is none).
 double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
                               bool kitchen_shot, double sigma_phi_deg, int* best_ball = nullptr,
+                              int* best_pocket = nullptr);
+
+/// The same with other constants than the AI's (for fitting them).
+double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
+                              bool kitchen_shot, double sigma_phi_deg,
+                              const EstimateConstants& constants, int* best_ball = nullptr,
                               int* best_pocket = nullptr);
 
 /// What `after` (the table after an action, any phase) is worth to player
