@@ -15,9 +15,10 @@
 // 0 less the engine's best pot on the table. Pool tables (8-, 9- and
 // 10-ball) and snooker tables are fitted separately, each by coordinate
 // descent on fixed grids (below, `fit`) from the AI's constants, to the
-// least sum of squared errors. The records after --check (games of other seeds)
-// are only measured, before and after. Prints the constants, the errors
-// and ai_estimate_check's table per tenth of the estimate, for both sets.
+// least sum of squared errors. The records after --check (games of other
+// seeds) are only measured, before and after. All the records must be of
+// one physics. Prints the constants, the errors and ai_estimate_check's
+// table per tenth of the estimate, for both sets.
 // Deterministic: fixed noise seeds, one thread. About 4 minutes for the
 // records of docs/ai.md on the 2-core machine.
 #include <algorithm>
@@ -73,11 +74,23 @@ struct TableSet {
   Tables snooker;
 };
 
-bool read_tables(const std::vector<const char*>& files, TableSet& set) {
+/// Reads the tables of `files` into `set`. Every record must have been
+/// played on `physics` (the first record's, when not yet set): the AI's
+/// constants, the starting point and the "before" of the fit, are those of
+/// the physics (ai_detail::estimate_constants).
+bool read_tables(const std::vector<const char*>& files, TableSet& set,
+                 std::optional<GamePhysics>& physics) {
   for (const char* file : files) {
     const std::optional<GameRecord> rec = bench_tools::read_record_file("ai_estimate_fit", file);
     if (!rec) return false;
     if (rec->config.game == GameType::three_cushion) continue;  // no pockets
+    if (!physics) physics = rec->config.physics;
+    if (!(rec->config.physics == *physics)) {
+      std::fprintf(stderr,
+                   "ai_estimate_fit: %s: played on another physics than the records before it\n",
+                   file);
+      return false;
+    }
     const Rules& rules = set.rules.emplace_back(rec->config);
     Tables& kind = rec->config.game == GameType::snooker ? set.snooker : set.pool;
     ++kind.records;
@@ -241,11 +254,10 @@ EstimateConstants fit(const std::vector<FitTable>& tables, EstimateConstants sta
 }
 
 void report(const char* kind, const Tables& fit_set, const Tables& check_set,
-            PocketConstants EstimateConstants::*which) {
+            const EstimateConstants& before, PocketConstants EstimateConstants::*which) {
   const std::vector<FitTable>& fit_tables = fit_set.tables;
   const std::vector<FitTable>& check_tables = check_set.tables;
   if (fit_tables.empty()) return;
-  const EstimateConstants before{};
   std::printf("== %s: fit on %zu tables of %d records, checked on %zu tables of %d records\n\n",
               kind, fit_tables.size(), fit_set.records, check_tables.size(), check_set.records);
   // The descent from each start; the least sum of squares on the fit set
@@ -332,11 +344,15 @@ int main(int argc, char** argv) {
   }
   TableSet fit_set;
   TableSet check_set;
-  if (!read_tables(fit_files, fit_set) || !read_tables(check_files, check_set)) return 1;
+  std::optional<GamePhysics> physics;
+  if (!read_tables(fit_files, fit_set, physics) || !read_tables(check_files, check_set, physics)) {
+    return 1;
+  }
+  const EstimateConstants ai = ai_detail::estimate_constants(physics.value_or(GamePhysics{}));
   std::fprintf(stderr, "engine chances measured: fit %zu + %zu tables, check %zu + %zu\n",
                fit_set.pool.tables.size(), fit_set.snooker.tables.size(),
                check_set.pool.tables.size(), check_set.snooker.tables.size());
-  report("pool", fit_set.pool, check_set.pool, &EstimateConstants::pool);
-  report("snooker", fit_set.snooker, check_set.snooker, &EstimateConstants::snooker);
+  report("pool", fit_set.pool, check_set.pool, ai, &EstimateConstants::pool);
+  report("snooker", fit_set.snooker, check_set.snooker, ai, &EstimateConstants::snooker);
   return 0;
 }

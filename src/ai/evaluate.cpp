@@ -140,11 +140,17 @@ int worker_count(int requested, std::size_t units) {
   return n;
 }
 
+EstimateConstants estimate_constants(const GamePhysics& physics) {
+  return physics.spinning_friction == kLegacySpinningFriction ? kLegacySpinEstimateConstants
+                                                              : EstimateConstants{};
+}
+
 double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
                               bool kitchen_shot, double sigma_phi_deg, int* best_ball,
                               int* best_pocket) {
   return best_pot_estimate_from(rules, state, cue, kitchen_shot, sigma_phi_deg,
-                                EstimateConstants{}, best_ball, best_pocket);
+                                estimate_constants(rules.config().physics), best_ball,
+                                best_pocket);
 }
 
 double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
@@ -217,7 +223,8 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
 }
 
 double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg) {
-  return best_pot_estimate(rules, state, sigma_phi_deg, EstimateConstants{});
+  return best_pot_estimate(rules, state, sigma_phi_deg,
+                           estimate_constants(rules.config().physics));
 }
 
 double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg,
