@@ -29,25 +29,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kMinSigmaDeg = 0.04;  // the floor of estimate_sigma
 constexpr double kMaxCutCos = 0.17364817766693041;  // cos 80 degrees: thinner cuts are not counted
-// A corner pocket takes a ball whose centre comes within about 0.78 of the
-// capture radius of the centre line when it comes straight down the
-// pocket's bisector (the jaws take the rest); from the side less, and not
-// at all beyond about 60 degrees. A side pocket is wider but its facings
-// turn balls away faster as the angle grows. The two tolerances and the
-// distance penalty were fitted on 2026-11-22 to the engine: on about 200
-// tables from champion games, the chance of the best direct pot that shot
-// generation finds for the ball and pocket the estimate picks, sampled
-// under tournament noise, against the estimate, agree to about 0.03 (rms
-// over bins of the estimate).
-constexpr double kCornerTolerance = 0.78;
-constexpr double kSideTolerance = 0.715;
-// The snooker table's rounded jaws and tighter mouths accept far less:
-// fitted to sampled play on it (docs/ai.md, "Snooker").
-constexpr double kSnookerCornerTolerance = 0.38;
-constexpr double kSnookerSideTolerance = 0.38;
-constexpr double kCornerMinCos = 0.5;   // 60 degrees
-constexpr double kSideMinCos = 0.47;    // about 62 degrees
-constexpr double kDistancePenalty = 0.04;  // per metre of d1 + d2
 
 /// Unit direction from a pocket into the table: the bisector of a corner,
 /// straight across for a side pocket.
@@ -152,8 +133,22 @@ int worker_count(int requested, std::size_t units) {
   return n;
 }
 
+EstimateConstants estimate_constants(const GamePhysics& physics) {
+  return physics.spinning_friction == kLegacySpinningFriction ? kLegacySpinEstimateConstants
+                                                              : EstimateConstants{};
+}
+
 double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
                               bool kitchen_shot, double sigma_phi_deg, int* best_ball,
+                              int* best_pocket) {
+  return best_pot_estimate_from(rules, state, cue, kitchen_shot, sigma_phi_deg,
+                                estimate_constants(rules.config().physics), best_ball,
+                                best_pocket);
+}
+
+double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
+                              bool kitchen_shot, double sigma_phi_deg,
+                              const EstimateConstants& constants, int* best_ball,
                               int* best_pocket) {
   if (state.phase != Phase::shot) return 0.0;
   const Table& table = rules.table();
@@ -174,6 +169,7 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
     double rank;  // p, or in snooker p times what the pot is worth
   };
   const bool snooker = game_policy(state.game).frame_scoring;
+  const PocketConstants& c = snooker ? constants.snooker : constants.pool;
   std::vector<Pot> pots;
   for (const int t : targets) {
     const Vec2 b = state.position[static_cast<std::size_t>(t)];
@@ -187,11 +183,9 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
       bool side = false;
       const Vec2 mouth = mouth_direction(table, pk.centre, &side);
       const double cos_alpha = -dot(u, mouth);
-      if (cos_alpha < (side ? kSideMinCos : kCornerMinCos)) continue;
-      const double ct = snooker ? kSnookerCornerTolerance : kCornerTolerance;
-      const double st = snooker ? kSnookerSideTolerance : kSideTolerance;
-      const double tol = side ? st * pk.radius * cos_alpha * std::sqrt(cos_alpha)
-                              : ct * pk.radius * cos_alpha;
+      if (cos_alpha < (side ? c.side_min_cos : c.corner_min_cos)) continue;
+      const double tol = side ? c.side_tolerance * pk.radius * cos_alpha * std::sqrt(cos_alpha)
+                              : c.corner_tolerance * pk.radius * cos_alpha;
       const double d2 = std::max(dist - pk.radius, 0.01);
       const Vec2 ghost = b - u * (2.0 * R);
       const Vec2 run = ghost - cue;
@@ -202,7 +196,7 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
       if (!ai::balls_clear(lay, R, cue, ghost, t)) continue;
       const double miss = std::max(e * d1 * d2 / (2.0 * R * cos_cut), 1e-9);
       double p = dm::erf(tol / (std::sqrt(2.0) * miss));
-      p /= 1.0 + kDistancePenalty * (d1 + d2);
+      p /= 1.0 + c.distance_penalty * (d1 + d2);
       const double rank = snooker ? p * (rules.ball_value(t) + kSnookerCarry) : p;
       pots.push_back(Pot{p, t, static_cast<int>(k), ghost, rank});
     }
@@ -222,9 +216,15 @@ double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 c
 }
 
 double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg) {
+  return best_pot_estimate(rules, state, sigma_phi_deg,
+                           estimate_constants(rules.config().physics));
+}
+
+double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg,
+                         const EstimateConstants& constants) {
   if (!state.on_table[0]) return 0.0;
   return best_pot_estimate_from(rules, state, state.position[0], state.kitchen_shot,
-                                sigma_phi_deg);
+                                sigma_phi_deg, constants);
 }
 
 double snooker_visit_points(const Rules& rules, const GameState& s, double sigma) {

@@ -75,6 +75,50 @@ double snooker_position_value(const Rules& rules, const GameState& after, int me
 /// The shooter's value for a best pot p (above).
 inline double shooter_value(double p) { return kShooterBase + kShooterGain * p; }
 
+/// The pot estimate's constants for one kind of table, fitted against
+/// the engine by bench/ai_estimate_fit (docs/ai.md, "The estimate,
+/// checked against the engine"). A corner pocket takes a ball whose centre
+/// comes within corner_tolerance pocket radii of the centre line, times
+/// cos(alpha) for a ball coming at alpha to the pocket's bisector, and
+/// none beyond cos(alpha) = corner_min_cos; a side pocket side_tolerance
+/// radii times cos(alpha)^1.5 (its facings turn balls away faster as the
+/// angle grows), none beyond side_min_cos. The chance is divided by 1 +
+/// distance_penalty per metre of the cue ball's and the object ball's
+/// runs, for the speed and spin errors the aim leaves out.
+struct PocketConstants {
+  double corner_tolerance;
+  double side_tolerance;
+  double corner_min_cos;
+  double side_min_cos;
+  double distance_penalty;
+};
+
+/// The estimate's constants: the pool tables' and the snooker table's
+/// (rounded jaws and tighter mouths); the defaults are the AI's on the
+/// default physics. The pool ones are fitted under tournament noise on the
+/// tables of 160 recorded games of 8- and 9-ball between the champion and
+/// the baseline. The snooker ones are the earlier fit's: fitted the same
+/// way on 18 frames, the estimate reads the engine better with
+/// {0.48, 0.57, 0.87, 0.6, 0.055} but the champion's breaks from open
+/// tables were shorter with them (docs/ai.md, "The estimate on a snooker
+/// table").
+struct EstimateConstants {
+  PocketConstants pool{0.66, 0.46, 0.5, 0.47, 0.04};
+  PocketConstants snooker{0.38, 0.38, 0.5, 0.47, 0.04};
+};
+
+/// The constants the AI used while side spin decayed with FastFiz's
+/// spinning friction (kLegacySpinningFriction), fitted on breakshot 0.1's
+/// physics. A physics with that spinning friction (the legacy physics, and
+/// the default of the time before the measured one) keeps them, so that
+/// the games played on it are played again as they were.
+inline constexpr EstimateConstants kLegacySpinEstimateConstants{
+    {0.78, 0.715, 0.5, 0.47, 0.04}, {0.38, 0.38, 0.5, 0.47, 0.04}};
+
+/// The constants the AI uses on `physics`: kLegacySpinEstimateConstants
+/// for the legacy spinning friction, EstimateConstants{} otherwise.
+EstimateConstants estimate_constants(const GamePhysics& physics);
+
 /// Geometric estimate in [0, 1] of the best pot the player to act in
 /// `state` (phase shot, cue ball on the table) has: ghost-ball aim at
 /// each legal ball and pocket with open paths (the object ball's line
@@ -85,12 +129,23 @@ inline double shooter_value(double p) { return kShooterBase + kShooterGain * p; 
 /// it sees no throw, kisses or speed, which is what the sampling is for.
 double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg);
 
+/// The same with other constants than the AI's (estimate_constants of
+/// the rules' physics), for fitting them.
+double best_pot_estimate(const Rules& rules, const GameState& state, double sigma_phi_deg,
+                         const EstimateConstants& constants);
+
 /// The same with the cue ball at `cue` instead (for choosing placements):
 /// `kitchen_shot` as the rules would set it after the placement. The pot
 /// it rates is stored in *best_ball and *best_pocket when given (left
 /// alone when there is none).
 double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
                               bool kitchen_shot, double sigma_phi_deg, int* best_ball = nullptr,
+                              int* best_pocket = nullptr);
+
+/// The same with other constants than the AI's, for fitting them.
+double best_pot_estimate_from(const Rules& rules, const GameState& state, Vec2 cue,
+                              bool kitchen_shot, double sigma_phi_deg,
+                              const EstimateConstants& constants, int* best_ball = nullptr,
                               int* best_pocket = nullptr);
 
 /// What `after` (the table after an action, any phase) is worth to player
