@@ -72,6 +72,7 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 #include "geometry.hpp"
+#include "judge.hpp"
 #include "policy.hpp"
 
 namespace breakshot {
@@ -773,29 +774,15 @@ class BaselinePlayer final : public Player {
 
   /// True if `shot`, played without noise, first meets one of `targets`
   /// and the game's rules find no foul in it and do not end the game
-  /// against the shooter (Rules::apply_events on the simulated events: the
-  /// ruling a real shot gets, not a copy of the rules).
+  /// against the shooter: the judge's ruling (judge.hpp), the one a real
+  /// shot gets, not a copy of the rules.
   static bool plays_legally(const Rules& rules, const GameState& state, const Shoot& shot,
                             const std::vector<int>& targets) {
     if (rules.check(state, Action{shot})) return false;
     std::vector<int> numbers;
     Simulation sim(rules.shot_scenario(state, shot.strike, &numbers));
-    sim.advance_to_rest();
-    if (!sim.at_rest()) return false;
-    std::vector<Event> events = sim.events();
-    for (Event& e : events) {
-      if (e.ball >= 0) e.ball = numbers[static_cast<std::size_t>(e.ball)];
-      if (e.other >= 0) e.other = numbers[static_cast<std::size_t>(e.other)];
-    }
-    std::vector<Vec2> rest = state.position;
-    for (std::size_t k = 0; k < numbers.size(); ++k) {
-      rest[static_cast<std::size_t>(numbers[k])] = sim.ball(k).position;
-    }
-    const bool miscue = sim.cue_result() && sim.cue_result()->miscue;
-    const Outcome o = rules.apply_events(state, shot, std::move(events), rest, miscue);
-    if (std::find(targets.begin(), targets.end(), o.facts.first_hit) == targets.end()) return false;
-    const bool lost = o.state.phase == Phase::game_over && o.state.winner != state.player;
-    return o.ruling.fouls.empty() && !lost;
+    const ai_detail::Judged j = ai_detail::judge(rules, state, shot, sim, numbers);
+    return j.legal && std::find(targets.begin(), targets.end(), j.first_hit) != targets.end();
   }
 
   /// Snooker: concede when snookers are needed, play on after a foul,
