@@ -78,6 +78,20 @@ std::optional<Call> expected_pot(const std::vector<Call>& potted, int samples) {
   return best;
 }
 
+void add_centred_aims(const Rules& rules, const GameState& state,
+                      std::vector<CandidateShot>& cands, int threads) {
+  const std::size_t n0 = cands.size();
+  const std::vector<Shoot> centred = parallel_map<Shoot>(n0, threads, [&](std::size_t i) {
+    return cands[i].target >= 0 ? centre_aim(rules, state, cands[i].shot) : cands[i].shot;
+  });
+  for (std::size_t i = 0; i < n0; ++i) {
+    if (centred[i] == cands[i].shot) continue;
+    CandidateShot c = cands[i];
+    c.shot = centred[i];
+    cands.push_back(c);
+  }
+}
+
 Shoot centre_aim(const Rules& rules, const GameState& state, const Shoot& shot) {
   if (!shot.call) return shot;
   const auto makes = [&](double phi) {

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "breakshot/ai.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 
@@ -244,5 +245,11 @@ template <class T, class Fn>
 std::vector<T> parallel_map_ws(std::size_t n, int threads, Fn&& fn) {
   return parallel_map_with<T, ShotWorkspace>(n, threads, std::forward<Fn>(fn));
 }
+
+/// Appends, after the candidates in `cands`, each pot (target >= 0)
+/// again with its aim centred (centre_aim) where that moves it; the
+/// centring runs on `threads` threads and the order is the candidates'.
+void add_centred_aims(const Rules& rules, const GameState& state,
+                      std::vector<CandidateShot>& cands, int threads);
 
 }  // namespace breakshot::ai_detail

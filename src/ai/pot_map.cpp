@@ -167,16 +167,8 @@ PotChance pot_chance(const Rules& rules, const GameState& state, Vec2 cue, int b
   const int wanted = options.candidates > 0 ? options.candidates : std::max(1, level.candidates);
   cands = shortlist(std::move(cands), static_cast<std::size_t>(wanted));
   if (level.centre_aim) {
-    const std::size_t n0 = cands.size();
-    const std::vector<Shoot> centred = parallel_map<Shoot>(n0, options.threads, [&](std::size_t i) {
-      return ai_detail::centre_aim(rules, s, cands[i].shot);
-    });
-    for (std::size_t i = 0; i < n0; ++i) {
-      if (centred[i] == cands[i].shot) continue;
-      CandidateShot c = cands[i];
-      c.shot = centred[i];
-      cands.push_back(c);
-    }
+    // Every candidate here is a pot of `ball` (target >= 0).
+    ai_detail::add_centred_aims(rules, s, cands, options.threads);
   }
 
   // Choose: as the level samples, half the plays for every candidate,

@@ -83,18 +83,7 @@ Evaluated AiPlayer::best_shot(const Rules& rules, const GameState& state, std::u
     // (evaluate.hpp), as a second candidate: the move turns the cue
     // ball's path after the contact, so the original aim may leave the
     // better position; the samples decide.
-    const std::size_t n0 = cands.size();
-    const std::vector<Shoot> centred =
-        parallel_map<Shoot>(n0, level_.threads, [&](std::size_t i) {
-          return cands[i].target >= 0 ? ai_detail::centre_aim(rules, state, cands[i].shot)
-                                      : cands[i].shot;
-        });
-    for (std::size_t i = 0; i < n0; ++i) {
-      if (centred[i] == cands[i].shot) continue;
-      CandidateShot c = cands[i];
-      c.shot = centred[i];
-      cands.push_back(c);
-    }
+    ai_detail::add_centred_aims(rules, state, cands, level_.threads);
   }
   const std::size_t n = cands.size();
   const int total = std::max(1, static_cast<int>(std::lround(level_.samples * scale)));
