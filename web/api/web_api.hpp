@@ -30,7 +30,10 @@ typedef struct BsGame BsGame;
  *  "defaults": {"ball": {"radius", "mass", "wall_restitution"},
  *               "pool_cushion_restitution",
  *               "physics": {"ideal": {...}, "friction": {...}, "pool": {...}}}}
- * where "physics" is default_physics(model) (physics.hpp) field by field. */
+ * where "physics" is default_physics(model) (physics.hpp) field by field,
+ * every field of PhysicsParams by its name: numbers and booleans as they
+ * are, "model" and "ball_ball_model" by their names ("pool", "friction"),
+ * "ball_ball_friction_curve" as {"a", "b", "c"}. */
 const char* bs_version(void);
 
 /* The computer players a seat of `game` ("eight_ball", "nine_ball",
