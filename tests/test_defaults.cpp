@@ -125,6 +125,9 @@ TEST(Defaults, GamePhysicsTakesThemFromDefaultPhysics) {
   EXPECT_TRUE(same(g.ball_ball_friction, pool.ball_ball_friction));
   EXPECT_EQ(g.airborne, pool.airborne);
   EXPECT_TRUE(same(g.spinning_friction, pool.spinning_friction));
+  EXPECT_EQ(game_physics_preset("default"), g);
+  EXPECT_EQ(game_physics_preset("legacy"), kLegacyGamePhysics);
+  EXPECT_FALSE(game_physics_preset("modern").has_value());
 }
 
 TEST(Defaults, TheReaderStartsFromThem) {

@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iterator>
@@ -479,6 +481,33 @@ TEST(RecordVersions, SummaryShowsThePhysicsOnlyWhenNotTheDefault) {
   doc["physics"].erase("spinning_friction");
   const MatchSummary old_spin = read_match_summary(doc.dump(2));
   EXPECT_EQ(old_spin.physics.spinning_friction, kLegacySpinningFriction);
+}
+
+TEST(RecordVersions, AReplayThatDiffersNamesTheVersionAndTheEngine) {
+  const std::filesystem::path file = std::filesystem::path(BREAKSHOT_SOURCE_DIR) / "fuzz" /
+                                     "record_corpus" / "nine_ball_3_actions.json";
+  std::ifstream in(file, std::ios::binary);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  GameRecord v1 = read_ok(text);
+  EXPECT_EQ(v1.version, 1);
+  ASSERT_FALSE(v1.actions.empty());
+  v1.actions[0].after.shots += 1;
+  ReplayReport rep = replay(v1);
+  EXPECT_FALSE(rep.identical);
+  EXPECT_NE(rep.message.find("(a version 1 record made by breakshot 0.1.0"), std::string::npos)
+      << rep.message;
+
+  // A version 2 record of another engine, whose physics names this build
+  // reads: the message says whose it is, never a plain "differs".
+  GameRecord other = read_ok(write_record(v1));
+  EXPECT_EQ(other.version, 2);
+  other.engine = "0.0.9";
+  rep = replay(other);
+  EXPECT_FALSE(rep.identical);
+  EXPECT_NE(rep.message.find("(a version 2 record made by breakshot 0.0.9; this is breakshot " +
+                             std::string(kVersion) + ", another engine"),
+            std::string::npos)
+      << rep.message;
 }
 
 }  // namespace

@@ -207,7 +207,8 @@ struct MatchArgs {
   std::string first_game = "0";
   std::string jobs;  // empty: every core, or 1 with --timing
   bool timing = false;
-  std::string cushion_model;       // empty: the default
+  std::string physics;             // a preset ("default", "legacy"); empty: "default"
+  std::string cushion_model;       // empty: the preset's
   std::string ball_ball_model;     // empty: the default
   std::string ball_ball_friction;  // empty: the default
   std::string airborne;            // "on", "off"; empty: the default
@@ -280,9 +281,30 @@ std::string cushion_model_list() {
   return out;
 }
 
-/// The physics options of `match`: the engine's defaults where not given.
+/// The physics presets' names, "default or legacy".
+std::string physics_preset_list() {
+  std::string out;
+  const std::size_t n = std::size(bs::kGamePhysicsPresets);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k > 0) out += k + 1 == n ? " or " : ", ";
+    out += bs::kGamePhysicsPresets[k];
+  }
+  return out;
+}
+
+/// The physics options of `match`: the preset's physics (--physics, the
+/// engine's defaults when not given), each option given explicitly
+/// winning over the preset's value for it.
 bs::GamePhysics match_physics(const MatchArgs& a) {
   bs::GamePhysics p;
+  if (!a.physics.empty()) {
+    const auto preset = bs::game_physics_preset(a.physics);
+    if (!preset) {
+      throw BadArgument{"--physics: unknown physics preset '" + a.physics + "' (" +
+                        physics_preset_list() + ")"};
+    }
+    p = *preset;
+  }
   if (!a.cushion_model.empty() && !bs::parse_cushion_model(a.cushion_model, p.cushion_model)) {
     throw BadArgument{"--cushion-model: unknown cushion model '" + a.cushion_model + "' (" +
                       cushion_model_list() + ")"};
@@ -641,6 +663,11 @@ int main(int argc, char** argv) {
                     "Games played at once (0: one per core; the default, or 1 with --timing); "
                     "the summary and the records are the same for any N")
       ->type_name("N");
+  match->add_option("--physics", match_args.physics,
+                    "Physics preset: " + physics_preset_list() +
+                        " (default: the engine's; legacy: breakshot 0.1's, the four options "
+                        "below); an option below given with it wins over the preset's value")
+      ->type_name("NAME");
   match->add_option("--cushion-model", match_args.cushion_model,
                     "Cushion law: " + cushion_model_list() +
                         " (default han_2005; han_2005_v0 is the legacy law; docs/physics.md)")
@@ -682,10 +709,12 @@ int main(int argc, char** argv) {
       "\n"
       "The physics options choose the pool model's laws (the scenario fields\n"
       "table.cushion_model, physics.ball_ball_model, physics.ball_ball_friction,\n"
-      "physics.airborne and physics.spinning_friction, docs/scenario.md). The legacy\n"
-      "physics: --cushion-model han_2005_v0 --ball-ball-friction tpa28 --airborne off\n"
-      "--spinning-friction legacy. Records always carry the physics; the summary shows it\n"
-      "(\"physics\") only when it is not the default.");
+      "physics.airborne and physics.spinning_friction, docs/scenario.md). --physics\n"
+      "legacy is the legacy physics, the same as --cushion-model han_2005_v0\n"
+      "--ball-ball-friction tpa28 --airborne off --spinning-friction legacy; an option\n"
+      "given with a preset wins over the preset's value for it (--physics legacy\n"
+      "--airborne on: the legacy physics with airborne balls). Records always carry\n"
+      "the physics; the summary shows it (\"physics\") only when it is not the default.");
 
   std::vector<std::string> sum_files;
   CLI::App* msum = app.add_subcommand(

@@ -89,9 +89,21 @@ struct GamePhysics {
 /// 1 game records and
 /// "v1." share links were played with it, and replay on it. Spelled out
 /// field by field: it stays this physics when GamePhysics's defaults move.
+/// The preset "legacy" (game_physics_preset).
 inline constexpr GamePhysics kLegacyGamePhysics{CushionModel::han_2005_v0, BallBallModel::friction,
                                                 true, kThrowFitTPA28, 0.0, false,
                                                 kLegacySpinningFriction};
+
+/// The named physics presets, in the order help texts list them:
+/// "default" (GamePhysics{}, the engine's) and "legacy"
+/// (kLegacyGamePhysics). `breakshot match --physics NAME` and Python's
+/// physics="NAME" choose one; an explicit physics option given with it
+/// wins over the preset's value for that option (docs/rules.md,
+/// "Physics").
+inline constexpr std::string_view kGamePhysicsPresets[] = {"default", "legacy"};
+
+/// The physics of a preset's name; nullopt for an unknown name.
+std::optional<GamePhysics> game_physics_preset(std::string_view name);
 
 /// Why `physics` cannot be played (a friction curve that is no curve, a
 /// negative or non-finite constant friction), naming the field; nullopt
