@@ -305,6 +305,30 @@ TEST(WebApi, ErrorsNameTheField) {
   EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), 100000)), "from:"));
 }
 
+TEST(WebApi, ASuccessfulCallClearsTheLastError) {
+  const std::string none = R"({"error":"no error"})";
+  const std::string scenario = read_example("examples/pool/stop_shot.json");
+  // A constructor that fails, then one that succeeds.
+  EXPECT_EQ(bs_playback_new("{\"physics\": 1}"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "physics")) << bs_last_error();
+  PlaybackPtr pb(bs_playback_new(scenario.c_str()));
+  ASSERT_NE(pb, nullptr);
+  EXPECT_EQ(std::string(bs_last_error()), none);
+  // A call on a handle that fails, then one that succeeds.
+  ASSERT_NE(bs_playback_frame_data(pb.get(), 0.5), nullptr);
+  EXPECT_EQ(bs_playback_frame_data(pb.get(), 0.25), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "t:")) << bs_last_error();
+  ASSERT_NE(bs_playback_frame_data(pb.get(), 0.75), nullptr);
+  EXPECT_EQ(std::string(bs_last_error()), none);
+  // A failure, then a success of a call that replies text.
+  EXPECT_EQ(bs_game_from_link("v2.e30"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "link")) << bs_last_error();
+  char* result = bs_simulate(scenario.c_str());
+  EXPECT_EQ(error_of(result), "");
+  bs_free(result);
+  EXPECT_EQ(std::string(bs_last_error()), none);
+}
+
 /// A link holding `body`: `prefix` ("v1." by default) and its base64url.
 std::string link_of_body(const std::string& body, const std::string& prefix = "v1.") {
   static constexpr char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";

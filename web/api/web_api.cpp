@@ -209,6 +209,6 @@ const char* bs_game_undo_to(BsGame* g, int n) {
 
 void bs_game_free(BsGame* g) { delete g; }
 
-const char* bs_last_error(void) { return g_last_error.c_str(); }
+const char* bs_last_error(void) { return last_error(); }
 
 }  // extern "C"
