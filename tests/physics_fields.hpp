@@ -33,10 +33,10 @@ constexpr std::size_t field_count() {
   }
 }
 
-using Member = std::variant<double PhysicsParams::*, bool PhysicsParams::*,
-                            breakshot::Model PhysicsParams::*,
-                            breakshot::BallBallModel PhysicsParams::*,
-                            breakshot::FrictionCurve PhysicsParams::*>;
+using Member =
+    std::variant<double PhysicsParams::*, bool PhysicsParams::*, breakshot::Model PhysicsParams::*,
+                 breakshot::BallBallModel PhysicsParams::*,
+                 breakshot::FrictionCurve PhysicsParams::*>;
 
 struct Field {
   const char* name;

@@ -741,8 +741,9 @@ TEST_F(MatchCli, RecordOfAnUnknownPhysicsExitsTwoNamingItsVersion) {
 }
 
 TEST_F(MatchCli, ThePhysicsPresetIsTheFourOptionsAndAnExplicitOptionWins) {
-  const std::string args = "match --game nine_ball --players baseline,baseline --games 1 "
-                           "--seed 3 --noise tournament";
+  const std::string args =
+      "match --game nine_ball --players baseline,baseline --games 1 "
+      "--seed 3 --noise tournament";
   const auto played = [&](const std::string& options, const std::string& folder) {
     const Run r = run(args + " " + options + " --records " + quote((dir_ / folder).string()));
     EXPECT_EQ(r.status, 0) << options << ": " << r.err;

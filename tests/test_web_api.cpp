@@ -177,7 +177,8 @@ TEST(WebApi, TheDefaultsAreDefaultPhysicsEveryField) {
       EXPECT_EQ(got[f.name], expected) << name << "." << f.name;
     }
   }
-  EXPECT_EQ(d["pool_cushion_restitution"], bs::default_cushion_restitution(bs::CushionParams{}.model));
+  EXPECT_EQ(d["pool_cushion_restitution"],
+            bs::default_cushion_restitution(bs::CushionParams{}.model));
   EXPECT_EQ(d["physics"]["pool"]["ball_ball_friction_curve"],
             json::parse(R"({"a": 0.016, "b": 0.219, "c": 0.691})"));
   EXPECT_EQ(d["physics"]["pool"]["airborne"], true);

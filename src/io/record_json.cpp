@@ -499,7 +499,8 @@ ReplayReport replay(const GameRecord& record) {
     return rep;
   }
   if (!identical(session->state(), record.start)) {
-    report_difference(rep, difference(state_json(record.start), state_json(session->state()), "start"),
+    report_difference(rep,
+                      difference(state_json(record.start), state_json(session->state()), "start"),
                       "the start differs from Rules::start", record);
     rep.final_state = session->state();
     return rep;
@@ -515,9 +516,10 @@ ReplayReport replay(const GameRecord& record) {
                                 std::string(action_name(ra.action)) + ") differs";
     rep.action = i;
     if (ra.player != state.player) {
-      report_difference(rep, {member_path(path, "player"), std::to_string(ra.player),
-                              std::to_string(state.player)},
-                        context, record);
+      report_difference(
+          rep,
+          {member_path(path, "player"), std::to_string(ra.player), std::to_string(state.player)},
+          context, record);
       return rep;
     }
     if (const auto* shoot = std::get_if<Shoot>(&ra.action); shoot != nullptr && ra.intended) {
@@ -525,9 +527,9 @@ ReplayReport replay(const GameRecord& record) {
       try {
         executed = session->executed(*ra.intended, ra.player, ra.noise_seed);
       } catch (const std::exception& e) {
-        report_difference(rep, {member_path(path, "intended"),
-                                shorten(strike_json(*ra.intended).dump()),
-                                std::string("(noise cannot be applied: ") + e.what() + ")"},
+        report_difference(rep,
+                          {member_path(path, "intended"), shorten(strike_json(*ra.intended).dump()),
+                           std::string("(noise cannot be applied: ") + e.what() + ")"},
                           context, record);
         return rep;
       }
@@ -535,14 +537,17 @@ ReplayReport replay(const GameRecord& record) {
         report_difference(rep,
                           difference(strike_json(shoot->strike), strike_json(executed),
                                      member_path(member_path(path, "action"), "strike")),
-                          context + ": the executed strike is not the intended one with the "
-                                    "recorded noise of its seat (noise[" +
-                              std::to_string(ra.player) + "])", record);
+                          context +
+                              ": the executed strike is not the intended one with the "
+                              "recorded noise of its seat (noise[" +
+                              std::to_string(ra.player) + "])",
+                          record);
         return rep;
       }
     } else if (shoot == nullptr && ra.intended) {
-      report_difference(rep, {member_path(path, "intended"),
-                              shorten(strike_json(*ra.intended).dump()), "null (not a shot)"},
+      report_difference(rep,
+                        {member_path(path, "intended"), shorten(strike_json(*ra.intended).dump()),
+                         "null (not a shot)"},
                         context, record);
       return rep;
     }
@@ -551,28 +556,31 @@ ReplayReport replay(const GameRecord& record) {
     try {
       out = session->play_executed(ra.action, ra.intended, ra.noise_seed);
     } catch (const std::invalid_argument& e) {
-      report_difference(rep, {member_path(path, "action"), shorten(action_json(ra.action).dump()),
-                              std::string("(not allowed: ") + e.what() + ")"},
+      report_difference(rep,
+                        {member_path(path, "action"), shorten(action_json(ra.action).dump()),
+                         std::string("(not allowed: ") + e.what() + ")"},
                         context, record);
       return rep;
     } catch (const std::exception& e) {
       // Allowed, but the rules could not play it (a shot that never came
       // to rest, say): the recorded game cannot have gone this way.
-      report_difference(rep, {member_path(path, "action"), shorten(action_json(ra.action).dump()),
-                              std::string("(cannot be played: ") + e.what() + ")"},
+      report_difference(rep,
+                        {member_path(path, "action"), shorten(action_json(ra.action).dump()),
+                         std::string("(cannot be played: ") + e.what() + ")"},
                         context, record);
       return rep;
     }
     if (!(out.ruling == ra.ruling)) {
-      report_difference(rep, difference(ruling_json(ra.ruling), ruling_json(out.ruling),
-                                        member_path(path, "ruling")),
-                        context, record);
+      report_difference(
+          rep,
+          difference(ruling_json(ra.ruling), ruling_json(out.ruling), member_path(path, "ruling")),
+          context, record);
       return rep;
     }
     if (!identical(out.state, ra.after)) {
-      report_difference(rep, difference(state_json(ra.after), state_json(out.state),
-                                        member_path(path, "after")),
-                        context, record);
+      report_difference(
+          rep, difference(state_json(ra.after), state_json(out.state), member_path(path, "after")),
+          context, record);
       return rep;
     }
     rep.final_state = session->state();
