@@ -10,6 +10,7 @@ Environment: BREAKSHOT_BUILD_JOBS (parallel compile jobs, default all cores).
 
 import os
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -26,6 +27,12 @@ def version() -> str:
     if not m:
         raise RuntimeError("no version in include/breakshot/version.hpp")
     return m.group(1)
+
+
+def generator_args(which=shutil.which) -> list:
+    """CMake's generator options: Ninja where the ninja command is found,
+    else none (CMake's default generator, Unix Makefiles on Linux)."""
+    return ["-G", "Ninja"] if which("ninja") else []
 
 
 class CMakeExtension(Extension):
@@ -50,8 +57,7 @@ class CMakeBuild(build_ext):
             f"-DPython_EXECUTABLE={sys.executable}",
             f"-DBREAKSHOT_PYTHON_OUTPUT_DIR={out_dir}",
         ]
-        if subprocess.run(["ninja", "--version"], capture_output=True).returncode == 0:
-            configure += ["-G", "Ninja"]
+        configure += generator_args()
         subprocess.run(configure, check=True)
         subprocess.run(
             ["cmake", "--build", str(build_dir), "--target", "breakshot_python", "-j", jobs],

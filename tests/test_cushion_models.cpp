@@ -1,6 +1,6 @@
 // Tests of the selectable cushion laws (table.cushion_model, issue 22):
-// han_2005_v0 (breakshot 0.1's law, the default), han_2005 (the same
-// impulse law with the slate's reaction), mathavan_2010 (Mathavan,
+// han_2005_v0 (breakshot 0.1's law, the legacy one), han_2005 (the same
+// impulse law with the slate's reaction, the default), mathavan_2010 (Mathavan,
 // Jackson and Parkin, "A theoretical analysis of billiard ball dynamics
 // under cushion impacts", Proc. IMechE C 224 (2010) 1863-1873; "Mathavan
 // 2010" below), impulse_frictional (one frictional impulse with the

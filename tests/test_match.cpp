@@ -740,6 +740,54 @@ TEST_F(MatchCli, RecordOfAnUnknownPhysicsExitsTwoNamingItsVersion) {
       << r.err;
 }
 
+TEST_F(MatchCli, ThePhysicsPresetIsTheFourOptionsAndAnExplicitOptionWins) {
+  const std::string args =
+      "match --game nine_ball --players baseline,baseline --games 1 "
+      "--seed 3 --noise tournament";
+  const auto played = [&](const std::string& options, const std::string& folder) {
+    const Run r = run(args + " " + options + " --records " + quote((dir_ / folder).string()));
+    EXPECT_EQ(r.status, 0) << options << ": " << r.err;
+    return r.out + slurp(dir_ / folder / "game-0001.json");
+  };
+  const std::string four = played(
+      "--cushion-model han_2005_v0 --ball-ball-friction tpa28 --airborne off "
+      "--spinning-friction legacy",
+      "four");
+  EXPECT_EQ(played("--physics legacy", "legacy"), four);
+  EXPECT_EQ(played("--physics default", "default"), played("", "none"));
+  // An option given with the preset wins over the preset's value for it.
+  const std::string airborne = played(
+      "--cushion-model han_2005_v0 --ball-ball-friction tpa28 --airborne on "
+      "--spinning-friction legacy",
+      "four-airborne");
+  EXPECT_NE(airborne, four);
+  EXPECT_EQ(played("--physics legacy --airborne on", "legacy-airborne"), airborne);
+  EXPECT_EQ(played("--airborne on --physics legacy", "airborne-legacy"), airborne);
+
+  const Run bad = run(args + " --physics modern");
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_NE(bad.err.find("--physics: unknown physics preset 'modern' (default or legacy)"),
+            std::string::npos)
+      << bad.err;
+}
+
+TEST_F(MatchCli, AReplayThatDiffersNamesTheRecordsVersionAndEngine) {
+  ASSERT_EQ(play_one().status, 0);
+  ojson doc = ojson::parse(slurp(dir_ / "records" / "game-0001.json"));
+  // Another engine's record whose physics names this build still reads:
+  // it reads, and where it does not replay the message says whose it is.
+  doc["engine"]["version"] = "0.0.7";
+  ojson& x = doc["actions"][0]["after"]["position"][1][0];
+  x = x.get<double>() + 0.25;
+  std::ofstream(dir_ / "other.json", std::ios::binary) << doc.dump();
+  const Run r = run("replay " + quote((dir_ / "other.json").string()));
+  EXPECT_EQ(r.status, 4) << r.out << r.err;
+  EXPECT_NE(r.out.find("a version 2 record made by breakshot 0.0.7; this is breakshot " +
+                       std::string(kVersion) + ", another engine"),
+            std::string::npos)
+      << r.out;
+}
+
 TEST_F(MatchCli, OtherFailuresExitOne) {
   std::ofstream(dir_ / "file") << "in the way";
   Run r = run("match --game nine_ball --players baseline,baseline --games 1 --seed 1 "

@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iterator>
@@ -479,6 +481,62 @@ TEST(RecordVersions, SummaryShowsThePhysicsOnlyWhenNotTheDefault) {
   doc["physics"].erase("spinning_friction");
   const MatchSummary old_spin = read_match_summary(doc.dump(2));
   EXPECT_EQ(old_spin.physics.spinning_friction, kLegacySpinningFriction);
+}
+
+TEST(RecordCorpus, EverySeedRecordReplays) {
+  // The fuzzer's seed records (fuzz/record_corpus) are games this engine
+  // plays: each reads and replays identical, versions 1 and 2 alike.
+  const std::filesystem::path folder =
+      std::filesystem::path(BREAKSHOT_SOURCE_DIR) / "fuzz" / "record_corpus";
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(folder)) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 6u);
+  std::array<int, 3> versions{};
+  for (const std::filesystem::path& file : files) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    auto parsed = read_record(text);
+    if (const auto* err = std::get_if<RecordError>(&parsed)) {
+      ADD_FAILURE() << file.filename() << ": " << err->path << ": " << err->reason;
+      continue;
+    }
+    const GameRecord& r = std::get<GameRecord>(parsed);
+    ++versions.at(static_cast<std::size_t>(r.version));
+    EXPECT_FALSE(r.actions.empty()) << file.filename();
+    const ReplayReport rep = replay(r);
+    EXPECT_TRUE(rep.identical) << file.filename() << ": " << rep.message;
+  }
+  // Both versions' readers keep seeds of their own.
+  EXPECT_GE(versions[1], 1);
+  EXPECT_GE(versions[2], 1);
+}
+
+TEST(RecordVersions, AReplayThatDiffersNamesTheVersionAndTheEngine) {
+  const std::filesystem::path file = std::filesystem::path(BREAKSHOT_SOURCE_DIR) / "fuzz" /
+                                     "record_corpus" / "nine_ball_3_actions.json";
+  std::ifstream in(file, std::ios::binary);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  GameRecord v1 = read_ok(text);
+  EXPECT_EQ(v1.version, 1);
+  ASSERT_FALSE(v1.actions.empty());
+  v1.actions[0].after.shots += 1;
+  ReplayReport rep = replay(v1);
+  EXPECT_FALSE(rep.identical);
+  EXPECT_NE(rep.message.find("(a version 1 record made by breakshot 0.1.0"), std::string::npos)
+      << rep.message;
+
+  // A version 2 record of another engine, whose physics names this build
+  // reads: the message says whose it is, never a plain "differs".
+  GameRecord other = read_ok(write_record(v1));
+  EXPECT_EQ(other.version, 2);
+  other.engine = "0.0.9";
+  rep = replay(other);
+  EXPECT_FALSE(rep.identical);
+  EXPECT_NE(rep.message.find("(a version 2 record made by breakshot 0.0.9; this is breakshot " +
+                             std::string(kVersion) + ", another engine"),
+            std::string::npos)
+      << rep.message;
 }
 
 }  // namespace

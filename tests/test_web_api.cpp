@@ -20,6 +20,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -32,13 +33,16 @@
 #include "breakshot/game.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/match.hpp"
+#include "breakshot/physics.hpp"
 #include "breakshot/players.hpp"
+#include "breakshot/pool.hpp"
 #include "breakshot/record.hpp"
 #include "breakshot/record_io.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/snooker.hpp"
 #include "breakshot/version.hpp"
+#include "physics_fields.hpp"
 #include "web_api.hpp"
 
 namespace {
@@ -143,6 +147,41 @@ TEST(WebApi, VersionListsTheLevelsAndTheirBudgets) {
   EXPECT_FALSE(v["version"].get<std::string>().empty());
   EXPECT_EQ(v["levels"].size(), bs::ai_level_names().size());
   for (const std::string& l : bs::ai_level_names()) EXPECT_GE(v["ai_budgets"][l].get<int>(), 1) << l;
+}
+
+TEST(WebApi, TheDefaultsAreDefaultPhysicsEveryField) {
+  // Every field of PhysicsParams (physics_fields.hpp: a field it does not
+  // list fails to compile), by name, and nothing else.
+  const json d = J(bs_version())["defaults"];
+  for (const bs::Model m : {bs::Model::ideal, bs::Model::friction, bs::Model::pool}) {
+    const std::string name(bs::to_string(m));
+    const bs::PhysicsParams p = bs::default_physics(m);
+    const json& got = d["physics"][name];
+    ASSERT_TRUE(got.is_object()) << name;
+    EXPECT_EQ(got.size(), std::size(physics_fields::kFields)) << name << ": " << got.dump();
+    for (const physics_fields::Field& f : physics_fields::kFields) {
+      ASSERT_TRUE(got.contains(f.name)) << name << ": no " << f.name;
+      const json expected = std::visit(
+          [&](auto member) -> json {
+            using T = std::remove_cvref_t<decltype(p.*member)>;
+            if constexpr (std::is_same_v<T, bs::FrictionCurve>) {
+              return {{"a", (p.*member).a}, {"b", (p.*member).b}, {"c", (p.*member).c}};
+            } else if constexpr (std::is_same_v<T, bs::Model> ||
+                                 std::is_same_v<T, bs::BallBallModel>) {
+              return std::string(bs::to_string(p.*member));
+            } else {
+              return p.*member;
+            }
+          },
+          f.member);
+      EXPECT_EQ(got[f.name], expected) << name << "." << f.name;
+    }
+  }
+  EXPECT_EQ(d["pool_cushion_restitution"],
+            bs::default_cushion_restitution(bs::CushionParams{}.model));
+  EXPECT_EQ(d["physics"]["pool"]["ball_ball_friction_curve"],
+            json::parse(R"({"a": 0.016, "b": 0.219, "c": 0.691})"));
+  EXPECT_EQ(d["physics"]["pool"]["airborne"], true);
 }
 
 TEST(WebApi, SimulateIsTheResultFile) {
@@ -265,6 +304,30 @@ TEST(WebApi, ErrorsNameTheField) {
   EXPECT_TRUE(starts_with(error_of(bs_playback_frame(pb.get(), std::nan(""))), "t:"));
   EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), -1)), "from:"));
   EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), 100000)), "from:"));
+}
+
+TEST(WebApi, ASuccessfulCallClearsTheLastError) {
+  const std::string none = R"({"error":"no error"})";
+  const std::string scenario = read_example("examples/pool/stop_shot.json");
+  // A constructor that fails, then one that succeeds.
+  EXPECT_EQ(bs_playback_new("{\"physics\": 1}"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "physics")) << bs_last_error();
+  PlaybackPtr pb(bs_playback_new(scenario.c_str()));
+  ASSERT_NE(pb, nullptr);
+  EXPECT_EQ(std::string(bs_last_error()), none);
+  // A call on a handle that fails, then one that succeeds.
+  ASSERT_NE(bs_playback_frame_data(pb.get(), 0.5), nullptr);
+  EXPECT_EQ(bs_playback_frame_data(pb.get(), 0.25), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "t:")) << bs_last_error();
+  ASSERT_NE(bs_playback_frame_data(pb.get(), 0.75), nullptr);
+  EXPECT_EQ(std::string(bs_last_error()), none);
+  // A failure, then a success of a call that replies text.
+  EXPECT_EQ(bs_game_from_link("v2.e30"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "link")) << bs_last_error();
+  char* result = bs_simulate(scenario.c_str());
+  EXPECT_EQ(error_of(result), "");
+  bs_free(result);
+  EXPECT_EQ(std::string(bs_last_error()), none);
 }
 
 /// A link holding `body`: `prefix` ("v1." by default) and its base64url.

@@ -41,6 +41,7 @@
 #include <iterator>
 #include <limits>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -207,7 +208,8 @@ struct MatchArgs {
   std::string first_game = "0";
   std::string jobs;  // empty: every core, or 1 with --timing
   bool timing = false;
-  std::string cushion_model;       // empty: the default
+  std::string physics;             // a preset ("default", "legacy"); empty: "default"
+  std::string cushion_model;       // empty: the preset's
   std::string ball_ball_model;     // empty: the default
   std::string ball_ball_friction;  // empty: the default
   std::string airborne;            // "on", "off"; empty: the default
@@ -280,9 +282,30 @@ std::string cushion_model_list() {
   return out;
 }
 
-/// The physics options of `match`: the engine's defaults where not given.
+/// The physics presets' names, "default or legacy".
+std::string physics_preset_list() {
+  std::string out;
+  const std::size_t n = std::size(bs::kGamePhysicsPresets);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k > 0) out += k + 1 == n ? " or " : ", ";
+    out += bs::kGamePhysicsPresets[k];
+  }
+  return out;
+}
+
+/// The physics options of `match`: the preset's physics (--physics, the
+/// engine's defaults when not given), each option given explicitly
+/// winning over the preset's value for it.
 bs::GamePhysics match_physics(const MatchArgs& a) {
   bs::GamePhysics p;
+  if (!a.physics.empty()) {
+    const auto preset = bs::game_physics_preset(a.physics);
+    if (!preset) {
+      throw BadArgument{"--physics: unknown physics preset '" + a.physics + "' (" +
+                        physics_preset_list() + ")"};
+    }
+    p = *preset;
+  }
   if (!a.cushion_model.empty() && !bs::parse_cushion_model(a.cushion_model, p.cushion_model)) {
     throw BadArgument{"--cushion-model: unknown cushion model '" + a.cushion_model + "' (" +
                       cushion_model_list() + ")"};
@@ -502,11 +525,7 @@ int run_replay(const std::string& file) {
 }
 
 struct ServeArgs {
-#ifdef BREAKSHOT_WEB_DIST
-  std::string root = BREAKSHOT_WEB_DIST;
-#else
-  std::string root = "build/web/dist";
-#endif
+  std::string root;  // empty: the first of default_page_roots() that holds a page
   std::string host = "127.0.0.1";
   int port = 8000;
   std::string records;
@@ -518,16 +537,61 @@ struct ServeArgs {
 std::atomic<bool> g_stop_serving{false};
 extern "C" void on_stop_signal(int) { g_stop_serving.store(true); }
 
+/// Where `serve` looks for the page without --root, in order: the
+/// installed page beside the command (`cmake --install` puts
+/// build/web/dist's files in DATADIR/breakshot/web, BINDIR/../share/
+/// breakshot/web), then, for the command of the build tree only,
+/// scripts/web.sh's build/web/dist.
+std::vector<std::filesystem::path> default_page_roots() {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> out;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return out;
+  const fs::path bin = exe.parent_path();
+#ifdef BREAKSHOT_WEB_INSTALLED
+  out.push_back((bin / BREAKSHOT_WEB_INSTALLED).lexically_normal());
+#endif
+#if defined(BREAKSHOT_WEB_DIST) && defined(BREAKSHOT_BINARY_DIR)
+  if (fs::equivalent(bin, fs::path(BREAKSHOT_BINARY_DIR), ec)) {
+    out.push_back(fs::path(BREAKSHOT_WEB_DIST));
+  }
+#endif
+  return out;
+}
+
+/// The page's folder: --root, else the first default that holds an
+/// index.html; nullopt (after saying where it looked) when there is none.
+std::optional<std::string> page_root(const ServeArgs& args) {
+  if (!args.root.empty()) return args.root;
+  const std::vector<std::filesystem::path> roots = default_page_roots();
+  std::string looked;
+  for (const std::filesystem::path& r : roots) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(r / "index.html", ec)) return r.string();
+    looked += (looked.empty() ? "" : ", ") + r.string();
+  }
+  std::cerr << "breakshot: no page found: no index.html in "
+            << (looked.empty() ? std::string("(no place to look: the command's own folder is "
+                                             "unknown)")
+                               : looked)
+            << ". Build the page with scripts/web.sh (then `cmake --install` installs it beside "
+               "the command), or give --root DIR.\n";
+  return std::nullopt;
+}
+
 int run_serve(const ServeArgs& args) {
+  const std::optional<std::string> root = page_root(args);
+  if (!root) return kExitOther;
   breakshot::ServeOptions o;
-  o.root = args.root;
+  o.root = *root;
   o.host = args.host;
   o.port = args.port;
   o.records = args.records;
   o.rooms.seat_timeout = args.seat_timeout;
   o.stop = &g_stop_serving;
   o.on_ready = [&](int port) {
-    std::cout << "breakshot: serving " << args.root << "\n";
+    std::cout << "breakshot: serving " << o.root << "\n";
     if (!args.records.empty()) {
       std::cout << "breakshot: the records of online games go to " << args.records << "\n";
     }
@@ -641,6 +705,11 @@ int main(int argc, char** argv) {
                     "Games played at once (0: one per core; the default, or 1 with --timing); "
                     "the summary and the records are the same for any N")
       ->type_name("N");
+  match->add_option("--physics", match_args.physics,
+                    "Physics preset: " + physics_preset_list() +
+                        " (default: the engine's; legacy: breakshot 0.1's, the four options "
+                        "below); an option below given with it wins over the preset's value")
+      ->type_name("NAME");
   match->add_option("--cushion-model", match_args.cushion_model,
                     "Cushion law: " + cushion_model_list() +
                         " (default han_2005; han_2005_v0 is the legacy law; docs/physics.md)")
@@ -682,10 +751,12 @@ int main(int argc, char** argv) {
       "\n"
       "The physics options choose the pool model's laws (the scenario fields\n"
       "table.cushion_model, physics.ball_ball_model, physics.ball_ball_friction,\n"
-      "physics.airborne and physics.spinning_friction, docs/scenario.md). The legacy\n"
-      "physics: --cushion-model han_2005_v0 --ball-ball-friction tpa28 --airborne off\n"
-      "--spinning-friction legacy. Records always carry the physics; the summary shows it\n"
-      "(\"physics\") only when it is not the default.");
+      "physics.airborne and physics.spinning_friction, docs/scenario.md). --physics\n"
+      "legacy is the legacy physics, the same as --cushion-model han_2005_v0\n"
+      "--ball-ball-friction tpa28 --airborne off --spinning-friction legacy; an option\n"
+      "given with a preset wins over the preset's value for it (--physics legacy\n"
+      "--airborne on: the legacy physics with airborne balls). Records always carry\n"
+      "the physics; the summary shows it (\"physics\") only when it is not the default.");
 
   std::vector<std::string> sum_files;
   CLI::App* msum = app.add_subcommand(
@@ -734,8 +805,10 @@ int main(int argc, char** argv) {
                   "IPv4 address to listen on (default 127.0.0.1; another is reachable from "
                   "the network)")
       ->type_name("ADDR");
-  srv->add_option("--root", serve_args.root, "Folder of the built page (default: " +
-                                                 serve_args.root + ")")
+  srv->add_option("--root", serve_args.root,
+                  "Folder of the built page (default: the installed page, "
+                  "BINDIR/../share/breakshot/web beside the command; for the command of the "
+                  "build tree, build/web/dist, where scripts/web.sh builds it)")
       ->type_name("DIR");
   srv->add_option("--records", serve_args.records,
                   "Folder (existing) to write the records of online games to")

@@ -47,31 +47,38 @@ std::optional<GameType> parse_game_type(std::string_view s);
 /// The names of every game the library plays, in GameType order.
 std::vector<std::string> game_type_names();
 
+namespace detail {
+/// The pool model's defaults, where GamePhysics takes its own from.
+inline constexpr PhysicsParams kPoolDefaults = default_physics(Model::pool);
+}  // namespace detail
+
 /// The physics a game is played with: the choices of the pool model that
 /// a game may make (docs/rules.md, "Physics"). The rest of the physics is
 /// default_physics(Model::pool) with ball clusters on, as for every game.
 /// The defaults are the engine's defaults (those of a scenario that
-/// names nothing): han_2005 cushions, TP B-3's friction curve, balls that
-/// may leave the cloth. kLegacyGamePhysics is breakshot 0.1's.
+/// names nothing), taken from their one home: CushionParams's law
+/// (han_2005) and default_physics(Model::pool) for the rest (TP B-3's
+/// friction curve, balls that may leave the cloth, the measured spinning
+/// friction). kLegacyGamePhysics is breakshot 0.1's.
 struct GamePhysics {
   /// The cushion law (`table.cushion_model`), with its own restitution
   /// (default_cushion_restitution) as in a scenario; mathavan_2010 also
   /// its own nose height, 0.7 of the diameter (kMathavanNoseHeight).
-  CushionModel cushion_model = CushionModel::han_2005;
+  CushionModel cushion_model = CushionParams{}.model;
   /// The ball-ball impact law (`physics.ball_ball_model`).
-  BallBallModel ball_ball_model = BallBallModel::friction;
+  BallBallModel ball_ball_model = detail::kPoolDefaults.ball_ball_model;
   /// The ball-ball friction (`physics.ball_ball_friction`): the curve
   /// ball_ball_friction_curve when ball_ball_friction_fit is set, else the
   /// constant ball_ball_friction.
-  bool ball_ball_friction_fit = true;
-  FrictionCurve ball_ball_friction_curve = kThrowFitTPB3;
-  double ball_ball_friction = 0.0;
+  bool ball_ball_friction_fit = detail::kPoolDefaults.ball_ball_friction_fit;
+  FrictionCurve ball_ball_friction_curve = detail::kPoolDefaults.ball_ball_friction_curve;
+  double ball_ball_friction = detail::kPoolDefaults.ball_ball_friction;
   /// Balls may leave the cloth (`physics.airborne`): jump shots, hops,
   /// balls off the table.
-  bool airborne = true;
+  bool airborne = detail::kPoolDefaults.airborne;
   /// The spinning friction (`physics.spinning_friction`): side spin
   /// decays at 5 mu_sp g / (2R) (kSpinningFriction, measured).
-  double spinning_friction = kSpinningFriction;
+  double spinning_friction = detail::kPoolDefaults.spinning_friction;
   bool operator==(const GamePhysics&) const = default;
 };
 
@@ -82,9 +89,21 @@ struct GamePhysics {
 /// 1 game records and
 /// "v1." share links were played with it, and replay on it. Spelled out
 /// field by field: it stays this physics when GamePhysics's defaults move.
+/// The preset "legacy" (game_physics_preset).
 inline constexpr GamePhysics kLegacyGamePhysics{CushionModel::han_2005_v0, BallBallModel::friction,
                                                 true, kThrowFitTPA28, 0.0, false,
                                                 kLegacySpinningFriction};
+
+/// The named physics presets, in the order help texts list them:
+/// "default" (GamePhysics{}, the engine's) and "legacy"
+/// (kLegacyGamePhysics). `breakshot match --physics NAME` and Python's
+/// physics="NAME" choose one; an explicit physics option given with it
+/// wins over the preset's value for that option (docs/rules.md,
+/// "Physics").
+inline constexpr std::string_view kGamePhysicsPresets[] = {"default", "legacy"};
+
+/// The physics of a preset's name; nullopt for an unknown name.
+std::optional<GamePhysics> game_physics_preset(std::string_view name);
 
 /// Why `physics` cannot be played (a friction curve that is no curve, a
 /// negative or non-finite constant friction), naming the field; nullopt

@@ -56,14 +56,21 @@ std::optional<FrictionCurveProblem> check_friction_curve(const FrictionCurve& cu
 
 /// Alciatore's fit to Marlow's friction data (TP A-28, "Throw plots for
 /// all types of shots": mu = 0.11, 0.06, 0.01 at v = 0.1, 1, 10 times
-/// sin(45 deg) m/s). pooltool's default and breakshot 0.1's (the throw it
-/// gives is 2-3 times below the measured, docs/physics.md).
+/// sin(45 deg) m/s). pooltool's default and breakshot 0.1's, now the
+/// legacy curve (kLegacyGamePhysics, `--ball-ball-friction tpa28`): the
+/// throw it gives is 2-3 times below the measured (docs/physics.md). Not
+/// the pool model's default (kThrowFitTPB3 is); it stays the initial value
+/// of PhysicsParams::ball_ball_friction_curve (unused outside the pool
+/// model) and of BallFriction, so that what starts from them keeps its
+/// results.
 inline constexpr FrictionCurve kThrowFitTPA28{0.009951, 0.108, 1.088};
 
 /// Alciatore's refit of the same curve to Colin Colenso's measured throw
 /// (TP B-3, "Throw calibration and contour plots": 30 and 45 degree cuts at
 /// 4, 8 and 12 km/h), a = 0.016, b = 0.219, c = 0.691. The pool model's
-/// default: the measured table wins over the clean-ball theory.
+/// default (default_physics(Model::pool), so every pool scenario that
+/// gives no physics.ball_ball_friction, and the games): the measured
+/// table wins over the clean-ball theory.
 inline constexpr FrictionCurve kThrowFitTPB3{0.016, 0.219, 0.691};
 
 /// The default spinning friction mu_sp: a pool ball's spin about the
@@ -94,7 +101,10 @@ struct PhysicsParams {
   /// the field is not given or is given as {"a", "b", "c"}.
   bool ball_ball_friction_fit = false;
   /// mu(v) = a + b exp(-c v) of the slip speed v when
-  /// ball_ball_friction_fit is set.
+  /// ball_ball_friction_fit is set. The struct's initial value is the
+  /// legacy TP A-28 curve, which no model's defaults use (the ideal and
+  /// friction models have no ball-ball friction); default_physics(pool),
+  /// where the engine's pool scenarios start, sets TP B-3 (kThrowFitTPB3).
   FrictionCurve ball_ball_friction_curve = kThrowFitTPA28;
   /// The pool model's ball-ball impact law.
   BallBallModel ball_ball_model = BallBallModel::friction;

@@ -77,9 +77,11 @@ struct BallImpact {
 
 /// Friction coefficient between balls as a function of the sliding speed
 /// of the contact points (m/s): mu(v) = a + b exp(-c |v|), clamped at 0.
-/// The defaults are Alciatore's fit to Marlow's data (TP; also
-/// pooltool's default; kThrowFitTPA28); BallFriction{0, 0, 0} is
-/// frictionless.
+/// BallFriction{} is Alciatore's fit to Marlow's data (TP;
+/// pooltool's default; kThrowFitTPA28), the legacy curve: the simulation
+/// does not use these initial values but builds its BallFriction from
+/// the scenario's physics (default_physics(pool): TP B-3, kThrowFitTPB3).
+/// BallFriction{0, 0, 0} is frictionless.
 struct BallFriction {
   double a = kThrowFitTPA28.a;
   double b = kThrowFitTPA28.b;
@@ -126,12 +128,14 @@ enum class CushionModel : std::uint8_t {
   /// at the nose is computed as if the ball were free to leave the cloth
   /// and its vertical part is then dropped, so the rail keeps less than
   /// its restitution says (0.854 of the speed straight in with e = 1 and
-  /// no friction, nose 63.5 %). The default, so that every output made
-  /// with breakshot 0.1 stays the same.
+  /// no friction, nose 63.5 %). breakshot 0.1's law (part of the legacy
+  /// physics, kLegacyGamePhysics), kept so that every output made with it
+  /// can be made again; not the default.
   han_2005_v0,
   /// "han_2005": Han's impulse law with the slate taking the vertical part
   /// of the rail's impulse (the ball stays on the cloth): Newton's
-  /// restitution on the nose's normal, Coulomb friction at the nose.
+  /// restitution on the nose's normal, Coulomb friction at the nose. The
+  /// default (CushionParams::model).
   han_2005,
   /// "mathavan_2010": Mathavan, Jackson and Parkin 2010, rigid cushion,
   /// slip at the nose and at the cloth, integrated over the impulse.

@@ -53,6 +53,10 @@ struct GameRecord {
   /// kVersion): this build's for a new record; "0.1.0" for a version 1
   /// record, the only library version that wrote them.
   std::string engine = std::string(::breakshot::kVersion);
+  /// The format version the record was read from (1 or 2; kVersion for a
+  /// new record). write_record always writes kVersion; replay names it
+  /// with the engine when the record does not replay. Not compared by ==.
+  int version = kVersion;
 
   GameConfig config;
   std::array<std::string, 2> players;  ///< names, by seat

@@ -35,8 +35,16 @@ import numpy as np
 
 # Balls by game, the cue ball included.
 GAMES = {"eight_ball": 16, "nine_ball": 10, "ten_ball": 11, "snooker": 22, "three_cushion": 3}
-# The table a game is played on when a position names none.
+# The table a game is played on when none is named (a position, Game,
+# match, the distributed functions): the package's one map of it.
 _TABLES = {"snooker": "12ft", "three_cushion": "10ft"}
+
+
+def default_table(game) -> str:
+    """The table ``game`` is played on when none is named: snooker's 12 ft
+    table, three-cushion's 10 ft carom table, else the 9 ft pool table (as
+    ``breakshot match``)."""
+    return _TABLES.get(game, "9ft")
 # The keys a records'-form state has besides its own: where it is played.
 _PLACE_KEYS = ("table", "table_size", "physics")
 
@@ -112,9 +120,9 @@ def _state_dict(obj):
 
 
 def _table(d, game) -> str:
-    table = d.get("table", d.get("table_size", _TABLES.get(game, "9ft")))
+    table = d.get("table", d.get("table_size", default_table(game)))
     if isinstance(table, Mapping):  # a scenario's {"shape": "pool", "size": ...}
-        table = table.get("size", _TABLES.get(game, "9ft"))
+        table = table.get("size", default_table(game))
     return str(table)
 
 

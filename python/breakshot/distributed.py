@@ -36,7 +36,7 @@ import numpy as np
 
 from . import _core
 from .errors import ScenarioError
-from .game import _pair, _physics, mix_seed
+from .game import _default_table, _pair, _physics, mix_seed
 from .result import Result
 
 __all__ = [
@@ -195,25 +195,54 @@ def _check_names(game, names, table) -> None:
         why = _core.check_player(name, game) if isinstance(name, str) else "expected a name"
         if why is not None:
             raise ValueError(f"players: {why}")
-    if game == "snooker":
-        if table != "12ft":
-            raise ValueError(f"table: unknown table size {table!r} (snooker: 12ft)")
-    elif game == "three_cushion":
-        if table != "10ft":
-            raise ValueError(f"table: unknown table size {table!r} (three_cushion: 10ft)")
+    own = _default_table(game)
+    if own != "9ft":
+        # snooker and three-cushion have one table each
+        if table != own:
+            raise ValueError(f"table: unknown table size {table!r} ({game}: {own})")
     else:
         _core.pool_table(table)  # ValueError naming an unknown table size
 
 
-def _reproduce(game, players, seed, noise, table, g) -> str:
+def _number(v) -> str:
+    """A number as the command line takes it back exactly."""
+    return repr(float(v)) if isinstance(v, float) else str(v)
+
+
+def _physics_flags(physics) -> str:
+    """``breakshot match``'s physics options for a physics argument (None,
+    a preset's name or a dict, possibly partial: the options it gives)."""
+    if physics is None:
+        return ""
+    if isinstance(physics, str):
+        return f" --physics {physics}"
+    flags = []
+    if "cushion_model" in physics:
+        flags.append(f"--cushion-model {physics['cushion_model']}")
+    if "ball_ball_model" in physics:
+        flags.append(f"--ball-ball-model {physics['ball_ball_model']}")
+    if "ball_ball_friction" in physics:
+        f = physics["ball_ball_friction"]
+        spec = (",".join(_number(f[k]) for k in "abc") if isinstance(f, dict) else _number(f))
+        flags.append(f"--ball-ball-friction {spec}")
+    if "airborne" in physics:
+        flags.append(f"--airborne {'on' if physics['airborne'] else 'off'}")
+    if "spinning_friction" in physics:
+        flags.append(f"--spinning-friction {_number(physics['spinning_friction'])}")
+    return "".join(" " + f for f in flags)
+
+
+def _reproduce(game, players, seed, noise, table, g, physics=None) -> str:
     return (f"breakshot match --game {game} --players {players[0]},{players[1]} --games 1 "
-            f"--first-game {g} --seed {seed} --noise {noise} --table {table}")
+            f"--first-game {g} --seed {seed} --noise {noise} --table {table}"
+            f"{_physics_flags(physics)}")
 
 
 def _as_match_error(e: BaseException, args) -> MatchError:
     """A task's failure as a MatchError that names the game and how to
-    reproduce it (the C++ message starts with "game G (seed S): ")."""
-    game, players, seed, noise, table = args
+    reproduce it (the C++ message starts with "game G (seed S): "), with
+    the match's physics options."""
+    game, players, seed, noise, table, physics = args
     text = str(e)
     g = s = None
     if text.startswith("game "):
@@ -223,7 +252,7 @@ def _as_match_error(e: BaseException, args) -> MatchError:
             s = int(head.split("seed ")[1].rstrip(")"))
         except (IndexError, ValueError):
             g = s = None
-    command = None if g is None else _reproduce(game, players, seed, noise, table, g)
+    command = None if g is None else _reproduce(game, players, seed, noise, table, g, physics)
     message = text if command is None else f"{text}; reproduce it alone with: {command}"
     return MatchError(message, g, s, command)
 
@@ -264,7 +293,7 @@ def match_json(client, game: str, players: Sequence[str], games: int, seed: int 
                noise: str = "none", table: Optional[str] = None,
                records: Union[None, str, os.PathLike] = None, chunk: Optional[int] = None,
                first_game: int = 0, progress: Optional[bool] = None,
-               physics: Optional[dict] = None) -> str:
+               physics: Union[None, str, dict] = None) -> str:
     """The summary text ``breakshot match`` prints for the same arguments,
     byte for byte, with the games played on the cluster.
 
@@ -289,8 +318,7 @@ def match_json(client, game: str, players: Sequence[str], games: int, seed: int 
     if not all(isinstance(n, str) for n in names):
         raise ValueError("players: expected two player names")
     if table is None:
-        # the game's table, as breakshot match
-        table = {"snooker": "12ft", "three_cushion": "10ft"}.get(game, "9ft")
+        table = _default_table(game)  # the game's table, as breakshot match
     _check_names(game, names, table)
     check_workers(client)
     expected = identity()
@@ -311,7 +339,7 @@ def match_json(client, game: str, players: Sequence[str], games: int, seed: int 
             except (MatchError, RuntimeError) as e:
                 if isinstance(e, WorkerMismatch):
                     raise
-                raise _as_match_error(e, (game, names, seed, noise, table)) from None
+                raise _as_match_error(e, (game, names, seed, noise, table, physics)) from None
             summaries[first] = summary
             for g, text in recs:
                 (folder / _core.record_file_name(g)).write_text(text)
@@ -327,7 +355,7 @@ def match(client, game: str, players: Sequence[str], games: int, seed: int = 0,
           noise: str = "none", table: Optional[str] = None,
           records: Union[None, str, os.PathLike] = None, chunk: Optional[int] = None,
           first_game: int = 0, progress: Optional[bool] = None,
-          physics: Optional[dict] = None) -> dict:
+          physics: Union[None, str, dict] = None) -> dict:
     """A match on the cluster: the summary of ``breakshot match`` with the
     same arguments, parsed (field for field what ``breakshot.match`` gives
     on one machine). See match_json for the arguments."""
@@ -338,16 +366,22 @@ def match(client, game: str, players: Sequence[str], games: int, seed: int = 0,
 # --- ladders ----------------------------------------------------------------
 
 def ladder(client, game: str, levels: Sequence[str], games: int, seed: int = 0,
-           noise: str = "none", table: str = "9ft", chunk: Optional[int] = None,
-           progress: Optional[bool] = None) -> dict:
+           noise: str = "none", table: Optional[str] = None, chunk: Optional[int] = None,
+           progress: Optional[bool] = None,
+           physics: Union[None, str, dict] = None) -> dict:
     """Every adjacent pair of ``levels`` (levels[i] against levels[i + 1])
     plays a match of ``games`` games with ``seed``; all pairs' games run on
-    the cluster at once. Returns one table: ``{"game", "table", "games",
-    "seed", "noise", "rows": [{"players": [a, b], "won": [wa, wb], "draws",
-    "summary": the pair's match summary}]}``; each summary is what
-    ``breakshot match`` prints for that pair."""
+    the cluster at once. ``table`` (None: the game's, as match) and
+    ``physics`` (as match) are every pair's. Returns one table:
+    ``{"game", "table", "games", "seed", "noise", "rows": [{"players": [a,
+    b], "won": [wa, wb], "draws", "summary": the pair's match summary}]}``;
+    each summary is what ``breakshot match`` prints for that pair (with the
+    physics options, shown in it when not the default)."""
     from dask.distributed import as_completed
 
+    physics_text = _physics(physics)
+    if table is None:
+        table = _default_table(game)
     levels = list(levels)
     if len(levels) < 2 or not all(isinstance(n, str) for n in levels):
         raise ValueError("levels: expected at least two player names")
@@ -364,7 +398,7 @@ def ladder(client, game: str, levels: Sequence[str], games: int, seed: int = 0,
     for p, pair in enumerate(pairs):
         tag = f"ladder-{os.getpid()}-{id(levels)}-{p}"
         for f in _submit_match(client, expected, game, pair, seed, noise, table, games, 0,
-                               size, False, tag):
+                               size, False, tag, physics_text):
             owner[f.key] = p
             futures.append(f)
     parts: List[Dict[int, str]] = [{} for _ in pairs]
@@ -377,7 +411,7 @@ def ladder(client, game: str, levels: Sequence[str], games: int, seed: int = 0,
             except RuntimeError as e:
                 if isinstance(e, WorkerMismatch):
                     raise
-                raise _as_match_error(e, (game, pairs[p], seed, noise, table)) from None
+                raise _as_match_error(e, (game, pairs[p], seed, noise, table, physics)) from None
             parts[p][first] = summary
             future.release()
             bar.update(count)
@@ -552,18 +586,30 @@ def _pot_map_json(pm) -> dict:
     }
 
 
-def _physics_args(args) -> Optional[dict]:
-    """The physics options of `match` as breakshot.physics_of's dict (None
-    when none is given)."""
+def _physics_args(args) -> Union[None, str, dict]:
+    """The physics options of `match` and `ladder` as the physics argument:
+    None when none is given, the preset's name when only --physics is,
+    else breakshot.physics_of's dict, each option given winning over the
+    preset's value (as breakshot match)."""
+    preset = getattr(args, "physics", None)
     airborne = getattr(args, "airborne", None)
     spin = getattr(args, "spinning_friction", None)
     if not (args.cushion_model or args.ball_ball_model or args.ball_ball_friction or airborne
             or spin):
-        return None
-    from .game import physics_of
+        if preset is not None:
+            from .game import PHYSICS_PRESETS
 
-    friction: Any = args.ball_ball_friction or "tpb3"
-    if friction not in ("tpa28", "tpb3"):
+            if preset not in PHYSICS_PRESETS:
+                raise ValueError(f"--physics: unknown physics preset {preset!r} "
+                                 f"({' or '.join(PHYSICS_PRESETS)})")
+        return preset
+    from .game import PHYSICS_PRESETS, physics_of
+
+    if preset is not None and preset not in PHYSICS_PRESETS:
+        raise ValueError(f"--physics: unknown physics preset {preset!r} "
+                         f"({' or '.join(PHYSICS_PRESETS)})")
+    friction: Any = args.ball_ball_friction
+    if friction is not None and friction not in ("tpa28", "tpb3"):
         parts = friction.split(",")
         try:
             values = [float(v) for v in parts]
@@ -579,8 +625,8 @@ def _physics_args(args) -> Optional[dict]:
                              f"not {friction!r}")
     if airborne not in (None, "on", "off"):
         raise ValueError(f"--airborne: expected on or off, not {airborne!r}")
-    spinning: Any = spin or "measured"
-    if spinning not in ("measured", "legacy"):
+    spinning: Any = spin
+    if spinning is not None and spinning not in ("measured", "legacy"):
         try:
             spinning = float(spinning)
         except ValueError:
@@ -589,8 +635,22 @@ def _physics_args(args) -> Optional[dict]:
         if not spinning > 0 or spinning == float("inf"):
             raise ValueError(f"--spinning-friction: expected measured, legacy or a number > 0, "
                              f"not {spin!r}")
-    return physics_of(args.cushion_model or "han_2005", args.ball_ball_model or "friction",
-                      friction, airborne != "off", spinning)
+    return physics_of(args.cushion_model, args.ball_ball_model, friction,
+                      None if airborne is None else airborne == "on", spinning,
+                      preset=preset or "default")
+
+
+def _physics_options(p) -> None:
+    """The physics options of ``breakshot match``, for match and ladder."""
+    p.add_argument("--physics", help="as breakshot match --physics: a preset, default or "
+                   "legacy; an option below given with it wins over the preset's value")
+    p.add_argument("--cushion-model", help="as breakshot match --cushion-model")
+    p.add_argument("--ball-ball-model", help="as breakshot match --ball-ball-model")
+    p.add_argument("--ball-ball-friction",
+                   help="as breakshot match --ball-ball-friction: tpb3, tpa28, A,B,C or MU")
+    p.add_argument("--airborne", help="as breakshot match --airborne: on (default) or off")
+    p.add_argument("--spinning-friction",
+                   help="as breakshot match --spinning-friction: measured (default), legacy or MU")
 
 
 def _client_for(args):
@@ -633,13 +693,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     m.add_argument("--records", help="write each game's record to DIR/game-NNNN.json")
     m.add_argument("--first-game", type=int, default=0)
     m.add_argument("--chunk", type=int, default=None, help="games per task")
-    m.add_argument("--cushion-model", help="as breakshot match --cushion-model")
-    m.add_argument("--ball-ball-model", help="as breakshot match --ball-ball-model")
-    m.add_argument("--ball-ball-friction",
-                   help="as breakshot match --ball-ball-friction: tpb3, tpa28, A,B,C or MU")
-    m.add_argument("--airborne", help="as breakshot match --airborne: on (default) or off")
-    m.add_argument("--spinning-friction",
-                   help="as breakshot match --spinning-friction: measured (default), legacy or MU")
+    _physics_options(m)
     common(m)
 
     lad = sub.add_parser("ladder", help="every adjacent pair of levels")
@@ -648,8 +702,10 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     lad.add_argument("--games", type=int, required=True)
     lad.add_argument("--seed", type=int, default=0)
     lad.add_argument("--noise", default="none")
-    lad.add_argument("--table", default="9ft")
+    lad.add_argument("--table", default=None, help="the table size (default: the game's, 9ft, "
+                     "snooker's 12ft or three_cushion's 10ft)")
     lad.add_argument("--chunk", type=int, default=None)
+    _physics_options(lad)
     common(lad)
 
     sm = sub.add_parser("shot-map", help="a pot probability map over a grid")
@@ -671,16 +727,18 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                 position = json.load(f)
             pocket = int(args.pocket) if args.pocket.lstrip("-").isdigit() else args.pocket
             ball = int(args.ball) if args.ball.isdigit() else args.ball
+        else:
+            physics = _physics_args(args)  # a bad option before any cluster starts
         with _client_for(args) as client:
             if args.command == "match":
                 players = args.players.split(",")
                 text = match_json(client, args.game, players, args.games, args.seed, args.noise,
                                   args.table, args.records, args.chunk, args.first_game,
-                                  args.progress, _physics_args(args))
+                                  args.progress, physics)
                 sys.stdout.write(text)
             elif args.command == "ladder":
                 table = ladder(client, args.game, args.levels.split(","), args.games, args.seed,
-                               args.noise, args.table, args.chunk, args.progress)
+                               args.noise, args.table, args.chunk, args.progress, physics)
                 sys.stdout.write(json.dumps(table, indent=2) + "\n")
             else:
                 pm = shot_map(client, position, ball, pocket, args.level, nx=args.nx,

@@ -20,6 +20,7 @@ from typing import Any, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _core
+from ._position import default_table
 
 __all__ = [
     "Call", "Shot", "PlaceCue", "Decide", "Action", "action_from_dict",
@@ -463,7 +464,9 @@ class Game:
     ``"ball_ball_model"`` (``"friction"`` or ``"mathavan_2014"``),
     ``"ball_ball_friction"`` (a number, or a curve ``{"a": .., "b": ..,
     "c": ..}``), ``"airborne"`` (true by default) and ``"spinning_friction"``
-    (0.0117 by default, the legacy 0.044); see :func:`physics_of`.
+    (0.0117 by default, the legacy 0.044); see :func:`physics_of`. A
+    preset's name is its physics: ``physics="legacy"`` is breakshot 0.1's
+    (``breakshot match --physics legacy``).
 
     Game g of ``breakshot match --seed S`` is ``Game(game, seed=mix_seed(S,
     g), breaker=g % 2, players=(p0, p1), noise=...)`` with
@@ -473,7 +476,7 @@ class Game:
     def __init__(self, game: str = "eight_ball", table: Optional[str] = None, seed: int = 0,
                  breaker: int = 0, players: Sequence = ("Player 1", "Player 2"),
                  noise: Union[str, Sequence[str]] = "none", max_shots: Optional[int] = None,
-                 physics: Optional[dict] = None, *, _core_game=None):
+                 physics: Union[None, str, dict] = None, *, _core_game=None):
         if _core_game is not None:
             self._g = _core_game
             return
@@ -783,33 +786,70 @@ def mix_seed(a: int, b: int) -> int:
 
 
 def _default_table(game) -> str:
-    """The table a game is played on when none is named: snooker's 12 ft
-    table, three-cushion's 10 ft carom table, else the 9 ft pool table."""
-    return {"snooker": "12ft", "three_cushion": "10ft"}.get(game, "9ft")
+    """The table a game is played on when none is named (the package's one
+    map, _position.default_table)."""
+    return default_table(game)
 
 
-def _physics(physics: Optional[dict]) -> Optional[str]:
-    """The physics argument as the JSON text _core takes (None: defaults)."""
+# The physics presets, as breakshot match --physics NAME takes them: the
+# arguments of physics_of that make each one.
+PHYSICS_PRESETS = {
+    "default": {"cushion_model": "han_2005", "ball_ball_model": "friction",
+                "ball_ball_friction": "tpb3", "airborne": True,
+                "spinning_friction": "measured"},
+    "legacy": {"cushion_model": "han_2005_v0", "ball_ball_model": "friction",
+               "ball_ball_friction": "tpa28", "airborne": False,
+               "spinning_friction": "legacy"},
+}
+
+
+def _physics(physics: Union[None, str, dict]) -> Optional[str]:
+    """The physics argument as the JSON text _core takes (None: defaults);
+    a string names a preset (physics_of)."""
     if physics is None:
         return None
+    if isinstance(physics, str):
+        if physics not in PHYSICS_PRESETS:
+            raise ValueError(f"physics: expected a dict, a preset name "
+                             f"({' or '.join(PHYSICS_PRESETS)}) or None, not {physics!r}")
+        physics = physics_of(preset=physics)
     if not isinstance(physics, dict):
-        raise ValueError(f"physics: expected a dict or None, not {type(physics).__name__}")
+        raise ValueError(f"physics: expected a dict, a preset name or None, "
+                         f"not {type(physics).__name__}")
     return json.dumps(physics)
 
 
-def physics_of(cushion_model: str = "han_2005", ball_ball_model: str = "friction",
-               ball_ball_friction: Union[float, dict, str] = "tpb3",
-               airborne: bool = True,
-               spinning_friction: Union[float, str] = "measured") -> dict:
-    """A physics dict for Game, match and match_json. ``ball_ball_friction``
-    may also be ``"tpb3"`` (Alciatore's refit to the measured throw, TP
-    B-3, the default) or ``"tpa28"`` (his TP A-28 curve), as ``breakshot
-    match --ball-ball-friction`` takes them; ``spinning_friction``
-    ``"measured"`` (0.0117, the default: side spin decays at 10 rad/s^2 on
-    a pool ball) or ``"legacy"`` (0.044), as ``--spinning-friction`` takes
-    them, or a number > 0. The defaults are the engine's;
-    ``physics_of("han_2005_v0", "friction", "tpa28", airborne=False,
-    spinning_friction="legacy")`` is breakshot 0.1's legacy physics."""
+def physics_of(cushion_model: Optional[str] = None, ball_ball_model: Optional[str] = None,
+               ball_ball_friction: Union[None, float, dict, str] = None,
+               airborne: Optional[bool] = None,
+               spinning_friction: Union[None, float, str] = None, *,
+               preset: str = "default") -> dict:
+    """A physics dict for Game, match and match_json. ``preset`` is
+    ``"default"`` (the engine's) or ``"legacy"`` (breakshot 0.1's:
+    ``han_2005_v0`` cushions, the TP A-28 friction curve, balls that stay
+    on the cloth, the legacy spinning friction), as ``breakshot match
+    --physics``; every argument given wins over the preset's value, as an
+    explicit option does on the command line (``physics_of(airborne=True,
+    preset="legacy")``). ``ball_ball_friction`` may be a number, a curve
+    ``{"a", "b", "c"}``, ``"tpb3"`` (Alciatore's refit to the measured
+    throw, TP B-3, the default) or ``"tpa28"`` (his TP A-28 curve), as
+    ``breakshot match --ball-ball-friction`` takes them;
+    ``spinning_friction`` ``"measured"`` (0.0117, the default: side spin
+    decays at 10 rad/s^2 on a pool ball) or ``"legacy"`` (0.044), as
+    ``--spinning-friction`` takes them, or a number > 0.
+    ``physics_of(preset="legacy")`` equals ``physics_of("han_2005_v0",
+    "friction", "tpa28", airborne=False, spinning_friction="legacy")``."""
+    if preset not in PHYSICS_PRESETS:
+        raise ValueError(f"preset: unknown physics preset {preset!r} "
+                         f"(known: {', '.join(PHYSICS_PRESETS)})")
+    base = PHYSICS_PRESETS[preset]
+    cushion_model = base["cushion_model"] if cushion_model is None else cushion_model
+    ball_ball_model = base["ball_ball_model"] if ball_ball_model is None else ball_ball_model
+    if ball_ball_friction is None:
+        ball_ball_friction = base["ball_ball_friction"]
+    airborne = base["airborne"] if airborne is None else airborne
+    if spinning_friction is None:
+        spinning_friction = base["spinning_friction"]
     curves = {"tpa28": {"a": 0.009951, "b": 0.108, "c": 1.088},
               "tpb3": {"a": 0.016, "b": 0.219, "c": 0.691}}
     if isinstance(ball_ball_friction, str):
@@ -832,7 +872,7 @@ def match_json(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
                noise: str = "none", table: Optional[str] = None,
                records: Union[None, str, os.PathLike] = None,
                threads: Optional[int] = None, first_game: int = 0,
-               physics: Optional[dict] = None, jobs: int = 1) -> str:
+               physics: Union[None, str, dict] = None, jobs: int = 1) -> str:
     """The summary text ``breakshot match`` prints for the same arguments
     (``--game``, ``--players a,b``, ``--games``, ``--seed``, ``--noise``,
     ``--table``, ``--records DIR``, ``--first-game``, ``--jobs``), byte for
@@ -872,7 +912,7 @@ def match(game: str, players: Sequence[str], games: int = 1, seed: int = 0,
           noise: str = "none", table: Optional[str] = None,
           records: Union[None, str, os.PathLike] = None,
           threads: Optional[int] = None, first_game: int = 0,
-          physics: Optional[dict] = None, jobs: int = 1) -> dict:
+          physics: Union[None, str, dict] = None, jobs: int = 1) -> dict:
     """Plays a match as ``breakshot match`` does and returns its summary
     (the parsed JSON it prints: game, table, seed, noise, games_played,
     draws, players with their figures). ``records`` is a folder to write

@@ -174,12 +174,68 @@ def test_a_worker_that_differs_is_refused(client):
 
 def test_a_failed_game_names_its_index_and_seed():
     e = bd._as_match_error(RuntimeError("game 7 (seed 123): the rules refused the shot"),
-                           ("nine_ball", ("club", "expert"), 5, "none", "9ft"))
+                           ("nine_ball", ("club", "expert"), 5, "none", "9ft", None))
     assert isinstance(e, bd.MatchError)
     assert (e.game, e.seed) == (7, 123)
     assert e.command == ("breakshot match --game nine_ball --players club,expert --games 1 "
                          "--first-game 7 --seed 5 --noise none --table 9ft")
     assert "the rules refused the shot" in str(e) and e.command in str(e)
+
+
+@pytest.mark.parametrize("physics, flags", [
+    ("legacy", " --physics legacy"),
+    ({"cushion_model": "mathavan_2010"}, " --cushion-model mathavan_2010"),
+    (breakshot.physics_of("han_2005", "mathavan_2014", {"a": 0.02, "b": 0.1, "c": 1.5},
+                          airborne=False, spinning_friction=0.03),
+     " --cushion-model han_2005 --ball-ball-model mathavan_2014"
+     " --ball-ball-friction 0.02,0.1,1.5 --airborne off --spinning-friction 0.03"),
+    ({"ball_ball_friction": 0.06, "airborne": True},
+     " --ball-ball-friction 0.06 --airborne on"),
+])
+def test_the_reproduce_command_carries_the_physics(physics, flags, run_cli, tmp_path):
+    e = bd._as_match_error(RuntimeError("game 0 (seed 1): the rules refused the shot"),
+                           ("nine_ball", ("baseline", "baseline"), 3, "tournament", "9ft",
+                            physics))
+    assert e.command == ("breakshot match --game nine_ball --players baseline,baseline "
+                         "--games 1 --first-game 0 --seed 3 --noise tournament --table 9ft"
+                         + flags)
+    # The command plays the game the match played.
+    r = run_cli(*e.command.split()[1:], "--records", tmp_path, check=True)
+    record = json.loads((tmp_path / "game-0001.json").read_text())
+    game = breakshot.Game("nine_ball", physics=physics)
+    assert record["physics"] == json.loads(game._g.physics_json())
+    assert r.stdout == breakshot.match_json("nine_ball", ["baseline", "baseline"], seed=3,
+                                            noise="tournament", physics=physics)
+
+
+def test_ladder_plays_the_games_table_with_the_physics_options(client, run_cli, root):
+    # Snooker's table is implied by the game, as in match.
+    table = bd.ladder(client, "snooker", ["baseline", "baseline"], games=1, seed=2,
+                      progress=False)
+    assert table["table"] == "12ft"
+    assert table["rows"][0]["summary"] == breakshot.match("snooker", ["baseline", "baseline"],
+                                                          games=1, seed=2)
+    legacy = bd.ladder(client, "nine_ball", ["baseline", "baseline"], games=2, seed=2,
+                       progress=False, physics="legacy")
+    alone = breakshot.match("nine_ball", ["baseline", "baseline"], games=2, seed=2,
+                            physics=breakshot.physics_of(preset="legacy"))
+    assert legacy["rows"][0]["summary"] == alone
+    assert alone["physics"]["cushion_model"] == "han_2005_v0"
+    expected = cli_match(run_cli, "--game", "nine_ball", "--players", "baseline,baseline",
+                         "--games", "2", "--seed", "2", "--noise", "none", "--physics", "legacy",
+                         "--airborne", "on")
+    r = subprocess.run([sys.executable, "-m", "breakshot.distributed", "ladder", "--workers",
+                        "1", "--no-progress", "--game", "nine_ball", "--levels",
+                        "baseline,baseline", "--games", "2", "--seed", "2", "--physics",
+                        "legacy", "--airborne", "on"],
+                       capture_output=True, text=True, cwd=root)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout)["rows"][0]["summary"] == json.loads(expected)
+    r = subprocess.run([sys.executable, "-m", "breakshot.distributed", "ladder", "--workers",
+                        "1", "--game", "snooker", "--levels", "baseline,baseline", "--games",
+                        "1", "--physics", "modern"], capture_output=True, text=True, cwd=root)
+    assert r.returncode == 2
+    assert "--physics: unknown physics preset 'modern' (default or legacy)" in r.stderr
 
 
 def test_killed_worker_loses_nothing(run_cli):
@@ -237,12 +293,17 @@ def test_physics_options_take_the_spinning_friction():
     from types import SimpleNamespace
 
     def args(**kw):
-        base = dict(cushion_model=None, ball_ball_model=None, ball_ball_friction=None,
-                    airborne=None, spinning_friction=None)
+        base = dict(physics=None, cushion_model=None, ball_ball_model=None,
+                    ball_ball_friction=None, airborne=None, spinning_friction=None)
         base.update(kw)
         return SimpleNamespace(**base)
 
     assert bd._physics_args(args()) is None
+    assert bd._physics_args(args(physics="legacy")) == "legacy"
+    assert bd._physics_args(args(physics="legacy", airborne="on")) == \
+        breakshot.physics_of(airborne=True, preset="legacy")
+    with pytest.raises(ValueError, match="--physics: unknown physics preset"):
+        bd._physics_args(args(physics="modern"))
     assert bd._physics_args(args(spinning_friction="legacy")) == \
         breakshot.physics_of(spinning_friction="legacy")
     assert bd._physics_args(args(spinning_friction="0.02"))["spinning_friction"] == 0.02

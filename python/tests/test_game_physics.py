@@ -41,6 +41,32 @@ def test_default_physics_is_the_engines_and_not_in_the_summary(run_cli):
                   "--cushion-model", "han_2005_v0", "--ball-ball-friction", "tpa28",
                   "--airborne", "off", "--spinning-friction", "legacy", check=True)
     assert old == cli.stdout
+    # The preset by its name: the same physics, the same bytes.
+    assert bs.physics_of(preset="legacy") == legacy
+    assert bs.Game("nine_ball", seed=3, physics="legacy").physics == legacy
+    assert bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament",
+                         physics="legacy") == old
+    preset = run_cli("match", "--game", "nine_ball", "--players", "baseline,baseline",
+                     "--games", "1", "--seed", "3", "--noise", "tournament",
+                     "--physics", "legacy", check=True)
+    assert preset.stdout == old
+    assert bs.physics_of(preset="default") == bs.physics_of()
+
+
+def test_an_argument_given_with_a_preset_wins_over_it(run_cli):
+    mixed = bs.physics_of(airborne=True, preset="legacy")
+    assert mixed == dict(bs.physics_of(preset="legacy"), airborne=True)
+    text = bs.match_json("nine_ball", ["baseline", "baseline"], seed=3, noise="tournament",
+                         physics=mixed)
+    cli = run_cli("match", "--game", "nine_ball", "--players", "baseline,baseline",
+                  "--games", "1", "--seed", "3", "--noise", "tournament",
+                  "--physics", "legacy", "--airborne", "on", check=True)
+    assert text == cli.stdout
+    with pytest.raises(ValueError, match="preset: unknown physics preset 'modern'"):
+        bs.physics_of(preset="modern")
+    with pytest.raises(ValueError, match="physics: expected a dict, a preset name "
+                                         r"\(default or legacy\) or None, not 'modern'"):
+        bs.Game("nine_ball", physics="modern")
 
 
 def test_match_with_other_physics_equals_the_cli_and_replays(tmp_path, run_cli):

@@ -206,6 +206,12 @@ std::optional<std::string> check_game_physics(const GamePhysics& p) {
   return std::nullopt;
 }
 
+std::optional<GamePhysics> game_physics_preset(std::string_view name) {
+  if (name == "default") return GamePhysics{};
+  if (name == "legacy") return kLegacyGamePhysics;
+  return std::nullopt;
+}
+
 Rules::Rules(GameConfig config) : config_(std::move(config)), ruleset_(make_ruleset(config_.game)) {
   if (!std::isfinite(config_.ball_radius) || config_.ball_radius <= 0.0) {
     throw std::invalid_argument("ball_radius must be a positive number of metres");

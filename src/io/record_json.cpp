@@ -32,7 +32,10 @@
 //   all written by breakshot 0.1.0 and are read as played with
 //   kLegacyGamePhysics, on which they replay. A physics name or field this
 //   build does not know is refused with the record's version and engine in
-//   the message; so is a record version above this build's.
+//   the message; so is a record version above this build's. A record
+//   that reads but does not replay (replay()) is reported with its
+//   version and engine too, and "another engine" when that is not this
+//   build.
 //
 //   NOISE   {"phi", "theta", "speed", "a", "b"}: the noise model of a seat's
 //           shots (seat order, as "players"), in noise.hpp's units
@@ -247,6 +250,7 @@ bool RecordReader::read(const json& doc, GameRecord& r) {
       return false;
     }
     r.engine = std::string(kVersion1Engine);
+    r.version = 1;
     if (!config(doc["config"], "config", r.config)) return false;
     r.config.physics = kLegacyGamePhysics;
   } else {
@@ -261,6 +265,7 @@ bool RecordReader::read(const json& doc, GameRecord& r) {
       return false;
     }
     if (r.engine.empty()) return fail("engine.version", "expected a library version, not \"\"");
+    r.version = version;
     if (!config(doc["config"], "config", r.config)) return false;
     if (!physics(doc["physics"], "physics", r.config.physics)) {
       // A name or a field this build does not have: say who made the
@@ -380,13 +385,28 @@ std::string_view action_name(const Action& a) {
   return "decide";
 }
 
-void report_difference(ReplayReport& rep, Difference d, std::string context) {
+/// Who made a record, for a replay that differs: its format version and
+/// engine, and when the engine is not this build, that it is another
+/// engine (whose physics may differ under the same names): a record that
+/// does not replay never ends in a plain "differs".
+std::string record_maker(const GameRecord& record) {
+  std::string s = " (a version " + std::to_string(record.version) + " record made by breakshot " +
+                  record.engine;
+  if (record.engine != kVersion) {
+    s += "; this is breakshot " + std::string(kVersion) +
+         ", another engine, whose physics may differ under the same names";
+  }
+  return s + ")";
+}
+
+void report_difference(ReplayReport& rep, Difference d, std::string context,
+                       const GameRecord& record) {
   rep.identical = false;
   rep.where = std::move(d.path);
   rep.recorded = std::move(d.recorded);
   rep.replayed = std::move(d.replayed);
   rep.message = std::move(context) + ": " + rep.where + ": recorded " + rep.recorded +
-                ", replayed " + rep.replayed;
+                ", replayed " + rep.replayed + record_maker(record);
 }
 
 }  // namespace
@@ -464,7 +484,8 @@ ReplayReport replay(const GameRecord& record) {
     rep.where = "config";
     rep.recorded = shorten(config_json(record.config).dump());
     rep.replayed = e.what();
-    rep.message = std::string("the rules cannot be built from the config: ") + e.what();
+    rep.message = std::string("the rules cannot be built from the config: ") + e.what() +
+                  record_maker(record);
     return rep;
   }
   try {
@@ -474,12 +495,13 @@ ReplayReport replay(const GameRecord& record) {
     rep.where = "start";
     rep.recorded = shorten(state_json(record.start).dump());
     rep.replayed = e.what();
-    rep.message = std::string("the start cannot be set up: ") + e.what();
+    rep.message = std::string("the start cannot be set up: ") + e.what() + record_maker(record);
     return rep;
   }
   if (!identical(session->state(), record.start)) {
-    report_difference(rep, difference(state_json(record.start), state_json(session->state()), "start"),
-                      "the start differs from Rules::start");
+    report_difference(rep,
+                      difference(state_json(record.start), state_json(session->state()), "start"),
+                      "the start differs from Rules::start", record);
     rep.final_state = session->state();
     return rep;
   }
@@ -494,9 +516,10 @@ ReplayReport replay(const GameRecord& record) {
                                 std::string(action_name(ra.action)) + ") differs";
     rep.action = i;
     if (ra.player != state.player) {
-      report_difference(rep, {member_path(path, "player"), std::to_string(ra.player),
-                              std::to_string(state.player)},
-                        context);
+      report_difference(
+          rep,
+          {member_path(path, "player"), std::to_string(ra.player), std::to_string(state.player)},
+          context, record);
       return rep;
     }
     if (const auto* shoot = std::get_if<Shoot>(&ra.action); shoot != nullptr && ra.intended) {
@@ -504,25 +527,28 @@ ReplayReport replay(const GameRecord& record) {
       try {
         executed = session->executed(*ra.intended, ra.player, ra.noise_seed);
       } catch (const std::exception& e) {
-        report_difference(rep, {member_path(path, "intended"),
-                                shorten(strike_json(*ra.intended).dump()),
-                                std::string("(noise cannot be applied: ") + e.what() + ")"},
-                          context);
+        report_difference(rep,
+                          {member_path(path, "intended"), shorten(strike_json(*ra.intended).dump()),
+                           std::string("(noise cannot be applied: ") + e.what() + ")"},
+                          context, record);
         return rep;
       }
       if (!identical(executed, shoot->strike)) {
         report_difference(rep,
                           difference(strike_json(shoot->strike), strike_json(executed),
                                      member_path(member_path(path, "action"), "strike")),
-                          context + ": the executed strike is not the intended one with the "
-                                    "recorded noise of its seat (noise[" +
-                              std::to_string(ra.player) + "])");
+                          context +
+                              ": the executed strike is not the intended one with the "
+                              "recorded noise of its seat (noise[" +
+                              std::to_string(ra.player) + "])",
+                          record);
         return rep;
       }
     } else if (shoot == nullptr && ra.intended) {
-      report_difference(rep, {member_path(path, "intended"),
-                              shorten(strike_json(*ra.intended).dump()), "null (not a shot)"},
-                        context);
+      report_difference(rep,
+                        {member_path(path, "intended"), shorten(strike_json(*ra.intended).dump()),
+                         "null (not a shot)"},
+                        context, record);
       return rep;
     }
 
@@ -530,28 +556,31 @@ ReplayReport replay(const GameRecord& record) {
     try {
       out = session->play_executed(ra.action, ra.intended, ra.noise_seed);
     } catch (const std::invalid_argument& e) {
-      report_difference(rep, {member_path(path, "action"), shorten(action_json(ra.action).dump()),
-                              std::string("(not allowed: ") + e.what() + ")"},
-                        context);
+      report_difference(rep,
+                        {member_path(path, "action"), shorten(action_json(ra.action).dump()),
+                         std::string("(not allowed: ") + e.what() + ")"},
+                        context, record);
       return rep;
     } catch (const std::exception& e) {
       // Allowed, but the rules could not play it (a shot that never came
       // to rest, say): the recorded game cannot have gone this way.
-      report_difference(rep, {member_path(path, "action"), shorten(action_json(ra.action).dump()),
-                              std::string("(cannot be played: ") + e.what() + ")"},
-                        context);
+      report_difference(rep,
+                        {member_path(path, "action"), shorten(action_json(ra.action).dump()),
+                         std::string("(cannot be played: ") + e.what() + ")"},
+                        context, record);
       return rep;
     }
     if (!(out.ruling == ra.ruling)) {
-      report_difference(rep, difference(ruling_json(ra.ruling), ruling_json(out.ruling),
-                                        member_path(path, "ruling")),
-                        context);
+      report_difference(
+          rep,
+          difference(ruling_json(ra.ruling), ruling_json(out.ruling), member_path(path, "ruling")),
+          context, record);
       return rep;
     }
     if (!identical(out.state, ra.after)) {
-      report_difference(rep, difference(state_json(ra.after), state_json(out.state),
-                                        member_path(path, "after")),
-                        context);
+      report_difference(
+          rep, difference(state_json(ra.after), state_json(out.state), member_path(path, "after")),
+          context, record);
       return rep;
     }
     rep.final_state = session->state();

@@ -24,7 +24,13 @@ std::string error_json(const std::string& message) {
   return j.dump();
 }
 
-thread_local std::string g_last_error = error_json("no error");
+thread_local std::string g_last_error;
+thread_local bool g_has_error = false;
+
+const char* last_error() {
+  static const std::string none = error_json("no error");
+  return g_has_error ? g_last_error.c_str() : none.c_str();
+}
 
 const char* keep(std::string& slot, std::string text) {
   slot = std::move(text);

@@ -65,11 +65,23 @@ struct BadInput {
 
 std::string error_json(const std::string& message);
 
-/// Runs `body`, turning any exception into {"error"}.
+/// bs_last_error's reply, and whether it holds an error: a failed call
+/// that returns NULL sets both; every call that succeeds clears the flag
+/// (a flag, so that clearing costs no allocation on the page's per-frame
+/// calls), and bs_last_error then answers {"error": "no error"}.
+extern thread_local std::string g_last_error;
+extern thread_local bool g_has_error;
+/// bs_last_error's text: the error, or {"error": "no error"}.
+const char* last_error();
+
+/// Runs `body`, turning any exception into {"error"}; a success clears
+/// bs_last_error.
 template <class F>
 std::string guarded(F&& body) {
   try {
-    return body();
+    std::string reply = body();
+    g_has_error = false;
+    return reply;
   } catch (const BadInput& e) {
     return error_json(e.message);
   } catch (const std::bad_alloc&) {
@@ -81,21 +93,21 @@ std::string guarded(F&& body) {
   }
 }
 
-/// bs_last_error's reply.
-extern thread_local std::string g_last_error;
-
 template <class T>
 T* fail_null(const std::string& message) {
   g_last_error = error_json(message);
+  g_has_error = true;
   return nullptr;
 }
 
-/// Runs a body that returns a pointer: the pointer, or NULL with
-/// bs_last_error set to the error.
+/// Runs a body that returns a pointer: the pointer (bs_last_error
+/// cleared), or NULL with bs_last_error set to the error.
 template <class T, class F>
 T* guarded_ptr(F&& body) {
   try {
-    return body();
+    T* p = body();
+    g_has_error = false;
+    return p;
   } catch (const BadInput& e) {
     return fail_null<T>(e.message);
   } catch (const std::bad_alloc&) {

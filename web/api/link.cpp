@@ -1,7 +1,10 @@
 // Links. A link is "v2." followed by the base64url (RFC 4648 section 5,
 // no padding) of a compact JSON object:
 //   {"e": "engine version", "g": game, "t": table,
-//    "ph": {"cushion_model", "ball_ball_model", "ball_ball_friction"},
+//    "ph": {"cushion_model", "ball_ball_model",
+//           "ball_ball_friction": {"a", "b", "c"} | number,
+//           "airborne": true (only when on),
+//           "spinning_friction": number (only when not 0.044)},
 //    "s": "seed (decimal)", "b": breaker, "p": [seat0, seat1],
 //    "n": ai_budget (only when set), "c": three-cushion's rules
 //    {"target", "innings_limit", "equalizing_inning"} (three-cushion

@@ -27,12 +27,26 @@ using namespace facade;
 
 namespace {
 
+ojson friction_curve_json(const bs::FrictionCurve& k) {
+  ojson j = ojson::object();
+  j["a"] = k.a;
+  j["b"] = k.b;
+  j["c"] = k.c;
+  return j;
+}
+
+/// default_physics(model), every field of PhysicsParams by its name, in
+/// the struct's order (tests/physics_fields.hpp lists them; the facade's
+/// test compares this reply with it).
 ojson physics_defaults_json(bs::Model model) {
   const bs::PhysicsParams p = bs::default_physics(model);
   ojson j = ojson::object();
+  j["model"] = std::string(bs::to_string(p.model));
   j["ball_ball_restitution"] = p.ball_ball_restitution;
   j["ball_ball_friction"] = p.ball_ball_friction;
   j["ball_ball_friction_fit"] = p.ball_ball_friction_fit;
+  j["ball_ball_friction_curve"] = friction_curve_json(p.ball_ball_friction_curve);
+  j["ball_ball_model"] = std::string(bs::to_string(p.ball_ball_model));
   j["gravity"] = p.gravity;
   j["deceleration"] = p.deceleration;
   j["sliding_friction"] = p.sliding_friction;
@@ -40,6 +54,9 @@ ojson physics_defaults_json(bs::Model model) {
   j["spinning_friction"] = p.spinning_friction;
   j["collapse_speed"] = p.collapse_speed;
   j["ball_clusters"] = p.ball_clusters;
+  j["airborne"] = p.airborne;
+  j["slate_restitution"] = p.slate_restitution;
+  j["min_bounce_height"] = p.min_bounce_height;
   return j;
 }
 
@@ -192,6 +209,6 @@ const char* bs_game_undo_to(BsGame* g, int n) {
 
 void bs_game_free(BsGame* g) { delete g; }
 
-const char* bs_last_error(void) { return g_last_error.c_str(); }
+const char* bs_last_error(void) { return last_error(); }
 
 }  // extern "C"

@@ -8,7 +8,7 @@
  * bs_playback_frame_data, which returns doubles). A returned
  * `const char*` is owned by the handle and stays valid until the next
  * call on the same handle (bs_version's forever; bs_last_error's until
- * the next call that fails with NULL). bs_simulate's `char*` belongs to the
+ * the next call on the same thread). bs_simulate's `char*` belongs to the
  * caller, who releases it with bs_free. Nothing throws across this
  * boundary: a bad input or a failure is answered with
  * {"error": "<what is wrong, naming the field>"}. Handles are not
@@ -30,7 +30,10 @@ typedef struct BsGame BsGame;
  *  "defaults": {"ball": {"radius", "mass", "wall_restitution"},
  *               "pool_cushion_restitution",
  *               "physics": {"ideal": {...}, "friction": {...}, "pool": {...}}}}
- * where "physics" is default_physics(model) (physics.hpp) field by field. */
+ * where "physics" is default_physics(model) (physics.hpp) field by field,
+ * every field of PhysicsParams by its name: numbers and booleans as they
+ * are, "model" and "ball_ball_model" by their names ("pool", "friction"),
+ * "ball_ball_friction_curve" as {"a", "b", "c"}. */
 const char* bs_version(void);
 
 /* The computer players a seat of `game` ("eight_ball", "nine_ball",
@@ -94,7 +97,10 @@ const char* bs_game_undo_to(BsGame* g, int n);
 void bs_game_free(BsGame* g);
 
 /* {"error": "..."} of the last *_new call (or bs_game_from_link,
- * bs_game_shot_playback, bs_playback_frame_data) that returned NULL. */
+ * bs_game_shot_playback, bs_playback_frame_data, bs_playback_spins) that
+ * returned NULL, until a call succeeds: every call that succeeds clears
+ * it, and it is then {"error": "no error"} (as before any call). Per
+ * thread. */
 const char* bs_last_error(void);
 
 #ifdef __cplusplus
