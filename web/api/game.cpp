@@ -23,6 +23,7 @@
 
 #include "facade.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -168,29 +169,14 @@ ojson carom_marks_json() {
 /// What the three-cushion page shows beside the score: the ball the
 /// player to act strikes, and each player's general average (points per
 /// inning begun) and highest run, the inning in progress included. Runs
-/// as the match summary counts them (match.cpp's add_carom): an inning
-/// ends with a shot after which the turn does not continue.
+/// as the match summary counts them (record.hpp's carom_innings).
 ojson carom_figures_json(const BsGame& g) {
   const bs::GameState& s = g.state();
   std::array<int, 2> highest{0, 0};
-  int run = 0;
-  int shooter = -1;
-  const auto close = [&] {
-    if (shooter >= 0) {
-      auto& h = highest[static_cast<std::size_t>(shooter)];
-      if (run > h) h = run;
-    }
-    run = 0;
-    shooter = -1;
-  };
-  for (const bs::RecordedAction& ra : g.record().actions) {
-    if (!std::holds_alternative<bs::Shoot>(ra.action) || !ra.ruling.carom) continue;
-    if (shooter != ra.player) close();
-    shooter = ra.player;
-    if (ra.ruling.carom->point) run += 1;
-    if (!ra.ruling.turn_continues || ra.after.phase == bs::Phase::game_over) close();
+  for (const bs::CaromInning& inning : bs::carom_innings(g.record())) {
+    int& h = highest[static_cast<std::size_t>(inning.player)];
+    h = std::max(h, inning.points);
   }
-  close();
   ojson j = ojson::object();
   j["cue_ball"] = g.rules().cue_ball(s);
   ojson average = ojson::array();
