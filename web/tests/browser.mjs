@@ -14,6 +14,7 @@ import { spawn } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
+import { speedFromPull } from '../page/game-stroke.js';
 
 const args = Object.fromEntries(
   process.argv.slice(2).reduce((acc, a, i, all) => {
@@ -152,8 +153,8 @@ const canvasDigest = (page) => page.evaluate(() => {
   return h;
 });
 
-// The speed of a stroke drawn back `pull` metres (game.js speedFromPull).
-const speedOfPull = (pull) => Math.round((0.3 + 9.7 * Math.min(1, pull / 0.35)) * 20) / 20;
+// The speed of a stroke drawn back `pull` metres: the page's own (game-stroke.js).
+const speedOfPull = speedFromPull;
 
 test('hovering aims the cue, a press holds the aim, Escape lets the hover aim again', async ({ browser, url }) => {
   const { page, context, problems } = await openPage(browser, url);
