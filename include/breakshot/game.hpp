@@ -444,9 +444,9 @@ struct CaromCount {
   /// Cushions the struck ball touched before its first contact with the
   /// second object ball; all its cushions while it has touched fewer.
   int cushions = 0;
-  bool kiss = false;             ///< the object balls touched each other
-  double strike = 0.0;           ///< time of the cue's strike on the struck ball
-  double first_contact = -1.0;   ///< time of its first ball contact, -1: none yet
+  bool kiss = false;            ///< the object balls touched each other
+  double strike = 0.0;          ///< time of the cue's strike on the struck ball
+  double first_contact = -1.0;  ///< time of its first ball contact, -1: none yet
   /// The struck ball has met both object balls: the count is complete.
   bool done() const { return hit.size() == 2; }
   /// The count makes a point (fouls aside): both balls, three cushions first.
