@@ -11,10 +11,12 @@
 #   (c) install the release build and build and run the example consumer
 #       against it (find_package(breakshot)); build the Python wheel and
 #       use it from a fresh environment; run scripts/run.sh --check
-#   (d) the browser version: native and wasm give the same replies byte
-#       for byte (web/tests/identity.mjs), and playwright-core drives
-#       Chromium through the served page (web/tests/browser.mjs; its online
-#       test, two pages playing each other through the server, about 25 s)
+#   (d) the browser version: the page's logic in node without a browser
+#       (web/tests/unit/, node --test, about 5 s), native and wasm give the
+#       same replies byte for byte (web/tests/identity.mjs), and
+#       playwright-core drives Chromium through the served page
+#       (web/tests/browser.mjs; its online test, two pages playing each
+#       other through the server, about 25 s)
 #   (e) the libFuzzer targets, built with clang: seed corpus replays (tests),
 #       then fuzzing scenarios for BREAKSHOT_FUZZ_SECONDS (default 60)
 #       seconds, seeded with fuzz/corpus and examples/lab, and game records
@@ -33,7 +35,7 @@ quick=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
-    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done
@@ -180,6 +182,8 @@ sys.stdout.write(breakshot.simulate(sys.argv[1]).to_json())' ../examples/pool/br
   tail -n 6 "$logs/run.log"
 
   # scripts/run.sh built the wasm engine and the page (scripts/web.sh).
+  stage "(d) web: the page's unit tests (node --test)"
+  run_node_tests unit node web/tests/unit/run.mjs
   stage "(d) web: native and wasm replies, byte for byte"
   run_node_tests identity node web/tests/identity.mjs --probe build/release/web_api_probe \
     --engine build/web/dist/breakshot.js

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -18,6 +19,7 @@
 #include "breakshot/match.hpp"
 #include "breakshot/match_io.hpp"
 #include "breakshot/players.hpp"
+#include "breakshot/record.hpp"
 #include "breakshot/record_io.hpp"
 #include "io/game_json.hpp"
 
@@ -227,6 +229,43 @@ TEST(ThreeCushion, KissesAndContactsAgain) {
   const Outcome back = rule(s, {rail(0.2, kWhite), rail(0.4, kWhite), rail(0.6, kWhite),
                                 hit(0.9, kWhite, kRed), hit(1.5, kYellow, kWhite)});
   EXPECT_TRUE(back.ruling.carom->point);
+}
+
+// The count itself (carom_count): the rules' ruling and the page's count
+// while a shot runs come from it, over all of a shot's events or over the
+// first of them.
+TEST(ThreeCushion, TheCountAsTheBallGoes) {
+  const std::vector<Event> ev = {
+      strike(kWhite),    rail(0.2, kWhite), hit(0.5, kWhite, kRed),    hit(0.6, kRed, kYellow),
+      rail(0.9, kWhite), rail(1.3, kWhite), hit(2.0, kWhite, kYellow), rail(2.2, kWhite)};
+  const std::vector<int> hits[] = {{},     {},     {kRed},          {kRed},
+                                   {kRed}, {kRed}, {kRed, kYellow}, {kRed, kYellow}};
+  const int cushions[] = {0, 1, 1, 1, 2, 3, 3, 3};
+  for (std::size_t n = 0; n <= ev.size(); ++n) {
+    const CaromCount c = carom_count(
+        std::vector<Event>(ev.begin(), ev.begin() + static_cast<std::ptrdiff_t>(n)), kWhite);
+    const std::size_t k = n == 0 ? 0 : n - 1;
+    EXPECT_EQ(c.hit, n == 0 ? std::vector<int>{} : hits[k]) << n;
+    EXPECT_EQ(c.cushions, n == 0 ? 0 : cushions[k]) << n;
+    EXPECT_EQ(c.done(), n >= 7) << n;
+    EXPECT_EQ(c.made(), n >= 7) << n;
+    EXPECT_EQ(c.kiss, n >= 4) << n;
+  }
+  const CaromCount all = carom_count(ev, kWhite);
+  EXPECT_EQ(all.first_contact, 0.5);
+  // The ruling is the count's.
+  const Outcome o = rule(open_table(), ev);
+  EXPECT_EQ(o.ruling.carom->hit, all.hit);
+  EXPECT_EQ(o.ruling.carom->cushions, all.cushions);
+  EXPECT_EQ(o.ruling.carom->point, all.made());
+  // Two cushions before the second ball: done, not made; the yellow's
+  // count knows none of the white's.
+  const CaromCount two = carom_count(
+      {hit(0.5, kWhite, kRed), rail(0.9, kWhite), rail(1.3, kWhite), hit(2.0, kWhite, kYellow)},
+      kWhite);
+  EXPECT_TRUE(two.done());
+  EXPECT_FALSE(two.made());
+  EXPECT_EQ(carom_count(ev, kYellow).cushions, 0);
 }
 
 TEST(ThreeCushion, NoContactIsNoPointNotAFoul) {
@@ -579,6 +618,39 @@ TEST(ThreeCushion, MatchSummary) {
   c.carom.target = 6;
   MatchSummary other = play_match(a);
   EXPECT_THROW(add_summary(other, play_match(c)), std::invalid_argument);
+}
+
+// The innings of a record (carom_innings): a run goes on while the turn
+// continues, and ends with a miss, a foul or the game.
+TEST(ThreeCushion, TheInningsOfARecord) {
+  GameRecord rec;
+  const auto shot = [&](int player, bool point, bool more, bool over = false) {
+    RecordedAction ra;
+    ra.player = player;
+    ra.action = Shoot{};
+    ra.ruling.carom = CaromRuling{};
+    ra.ruling.carom->point = point;
+    ra.ruling.turn_continues = more;
+    ra.after.phase = over ? Phase::game_over : Phase::shot;
+    rec.actions.push_back(ra);
+  };
+  shot(0, true, true);
+  shot(0, true, true);
+  shot(0, false, false);  // a run of 2
+  shot(1, false, false);  // nothing
+  shot(0, true, true);
+  shot(0, true, true);
+  shot(0, true, true);        // 3, still going ...
+  shot(0, true, true, true);  // ... and the game ends on a 4
+  EXPECT_EQ(carom_innings(rec), (std::vector<CaromInning>{{0, 2}, {1, 0}, {0, 4}}));
+  // An inning in progress is one too; a placement is no shot.
+  rec.actions.resize(5);
+  RecordedAction place;
+  place.player = 0;
+  place.action = PlaceCueBall{};
+  rec.actions.push_back(place);
+  EXPECT_EQ(carom_innings(rec), (std::vector<CaromInning>{{0, 2}, {1, 0}, {0, 1}}));
+  EXPECT_TRUE(carom_innings(GameRecord{}).empty());
 }
 
 // The JSON of three-cushion's parts: written only in three-cushion, read

@@ -19,6 +19,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <set>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -989,6 +990,7 @@ TEST(WebApi, TableDescribesTheGamesTable) {
   GamePtr g = new_game(R"({"game": "eight_ball", "table": "7ft", "players": ["human", "human"]})");
   const json t = J(bs_game_table(g.get()));
   const bs::Table table = bs::make_pool_table("7ft");
+  EXPECT_EQ(t["size"], "7ft");
   EXPECT_EQ(t["length"].get<double>(), table.length);
   EXPECT_EQ(t["walls"].size(), table.walls.size());
   EXPECT_EQ(t["pockets"].size(), 6u);
@@ -997,6 +999,85 @@ TEST(WebApi, TableDescribesTheGamesTable) {
     const std::string kind = w["kind"].get<std::string>();
     EXPECT_TRUE(kind == "segment" || kind == "corner" || kind == "arc") << kind;
   }
+}
+
+// Whose turn it is after each action, and why: the act reply's "turn"
+// and bs_game_turns's list agree, and follow the state after each action.
+TEST(WebApi, TurnsSayWhoIsNextAndWhy) {
+  GamePtr g = new_game(
+      R"({"game": "nine_ball", "table": "9ft", "seed": "5", "players": ["human", "human"], "ai_budget": 40})");
+  EXPECT_EQ(J(bs_game_turns(g.get())), json::parse(R"({"turns": []})"));
+  EXPECT_EQ(J(bs_game_table(g.get()))["size"], "9ft");
+  std::vector<json> replies;
+  std::set<std::string> seen;
+  for (int k = 0; k < 60; ++k) {
+    const json s = J(bs_game_state(g.get()));
+    if (s["phase"] == "game_over") break;
+    const json r = step_ai(g.get(), "club");
+    ASSERT_TRUE(r.contains("turn")) << r.dump();
+    const json& t = r["turn"];
+    const std::string why = t["why"].get<std::string>();
+    seen.insert(why);
+    const json& after = r["state"];
+    if (after["phase"] == "game_over") {
+      EXPECT_EQ(why, "game_over");
+      EXPECT_EQ(t["next"], -1);
+    } else {
+      EXPECT_EQ(t["next"], after["player"]);
+      if (r["kind"] == "shoot" && after["phase"] == "shot") {
+        EXPECT_EQ(why == "continues", r["ruling"]["turn_continues"].get<bool>()) << r.dump();
+        EXPECT_EQ(why == "foul",
+                  !r["ruling"]["turn_continues"].get<bool>() && !r["ruling"]["fouls"].empty())
+            << r.dump();
+      }
+      if (after["phase"] == "push_out_choice") {
+        EXPECT_EQ(why, "decides");
+      }
+    }
+    replies.push_back(t);
+  }
+  const json turns = J(bs_game_turns(g.get()))["turns"];
+  ASSERT_EQ(turns.size(), replies.size());
+  for (std::size_t i = 0; i < replies.size(); ++i) EXPECT_EQ(turns[i], replies[i]) << i;
+  EXPECT_TRUE(seen.count("continues") && seen.count("passes")) << json(seen).dump();
+  EXPECT_EQ(error_of(bs_game_turns(nullptr)), "handle: a null handle");
+}
+
+// A three-cushion shot's playback counts the struck ball's cushions and
+// balls as the frames go, as the rules count them at the end.
+TEST(WebApi, ThreeCushionPlaybackCountsAsTheBallGoes) {
+  GamePtr g =
+      new_game(R"({"game": "three_cushion", "seed": "2026", "players": ["human", "baseline"]})");
+  EXPECT_EQ(J(bs_game_table(g.get()))["size"], "10ft");
+  const json r = ai_act(g.get(), "baseline");
+  const json k = r["ruling"]["carom"];
+  PlaybackPtr pb(bs_game_shot_playback(g.get(), 0));
+  ASSERT_NE(pb, nullptr) << bs_last_error();
+  json c = J(bs_playback_carom_count(pb.get()));
+  EXPECT_EQ(c, json::parse(R"({"cushions": 0, "hit": [], "done": false, "made": false})"));
+  int cushions = 0;
+  std::size_t hits = 0;
+  for (int f = 0; f < 400; ++f) {
+    const json fr = J(bs_playback_frame(pb.get(), 0.05 * f));
+    c = J(bs_playback_carom_count(pb.get()));
+    EXPECT_GE(c["cushions"].get<int>(), cushions);
+    EXPECT_GE(c["hit"].size(), hits);
+    cushions = c["cushions"].get<int>();
+    hits = c["hit"].size();
+    if (fr["at_rest"].get<bool>()) break;
+  }
+  EXPECT_EQ(c["cushions"], k["cushions"]);
+  EXPECT_EQ(c["hit"], k["hit"]);
+  EXPECT_EQ(c["made"], k["point"]) << r.dump();
+  EXPECT_EQ(c["done"], k["hit"].size() == 2);
+  // Another playback has no count.
+  GamePtr pool = new_game(R"({"game": "nine_ball", "seed": "1", "players": ["human", "human"]})");
+  act(pool.get(), shoot_json(R"("speed": 8.0, "phi": 0, "theta": 0, "a": 0, "b": 0)"));
+  PlaybackPtr other(bs_game_shot_playback(pool.get(), 0));
+  ASSERT_NE(other, nullptr);
+  EXPECT_EQ(error_of(bs_playback_carom_count(other.get())),
+            "playback: not the playback of a three-cushion shot");
+  EXPECT_EQ(error_of(bs_playback_carom_count(nullptr)), "handle: a null handle");
 }
 
 TEST(WebApi, SnookerGameShowsTheScoreTheBallOnAndTheTable) {

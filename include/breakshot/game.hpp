@@ -452,6 +452,30 @@ inline constexpr double kCaromTouching = 1e-4;
 /// (Foul::push_through). Alciatore gives about 1 ms for the tip's contact.
 inline constexpr double kCaromTipContact = 1e-3;
 
+/// Three-cushion's count of a shot, read from its events (ball fields are
+/// ball numbers) as the struck ball goes: the one count behind the rules'
+/// CaromRuling and the page's count while a shot is played back
+/// (docs/rules.md, "Three-cushion").
+struct CaromCount {
+  /// The object balls the struck ball touched, in the order of their first
+  /// contact (0, 1 or 2 of them).
+  std::vector<int> hit;
+  /// Cushions the struck ball touched before its first contact with the
+  /// second object ball; all its cushions while it has touched fewer.
+  int cushions = 0;
+  bool kiss = false;            ///< the object balls touched each other
+  double strike = 0.0;          ///< time of the cue's strike on the struck ball
+  double first_contact = -1.0;  ///< time of its first ball contact, -1: none yet
+  /// The struck ball has met both object balls: the count is complete.
+  bool done() const { return hit.size() == 2; }
+  /// The count makes a point (fouls aside): both balls, three cushions first.
+  bool made() const { return done() && cushions >= 3; }
+};
+
+/// Three-cushion: the count of the ball `struck` over `events` (a shot's,
+/// or the first of them while it runs).
+CaromCount carom_count(const std::vector<Event>& events, int struck);
+
 /// Three-cushion: the 10 ft carom table, carom balls and CaromRules'
 /// defaults; the other fields GameConfig's defaults.
 GameConfig three_cushion_config();

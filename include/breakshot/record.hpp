@@ -71,6 +71,21 @@ struct GameRecord {
   bool operator==(const GameRecord& o) const;
 };
 
+/// Three-cushion: one inning of a game, the points its player made in a
+/// row (its run).
+struct CaromInning {
+  int player = 0;
+  int points = 0;
+  bool operator==(const CaromInning&) const = default;
+};
+
+/// Three-cushion: the innings of a record, in order, the last one in
+/// progress included. An inning ends with a shot after which the turn
+/// does not continue, or with the game; shots without a carom ruling
+/// (other games) are not counted. The match summary's runs
+/// (CaromStats) and the page's highest runs both come from it.
+std::vector<CaromInning> carom_innings(const GameRecord& record);
+
 /// Bit-for-bit equality of strikes and actions (CueStrike has no
 /// operator==; a record needs the exact comparison anyway).
 bool identical(const CueStrike& a, const CueStrike& b);

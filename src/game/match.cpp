@@ -118,25 +118,12 @@ void add_carom(MatchSummary& summary, const GameRecord& record, const GameState&
   if (end.carom) {
     for (std::size_t p = 0; p < 2; ++p) st[p]->points += end.carom->score[p];
   }
-  int run = 0;
-  int shooter = -1;
-  const auto close = [&] {
-    if (shooter >= 0 && run > 0) {
-      CaromStats& c = *st[static_cast<std::size_t>(shooter)];
-      c.scoring_innings += 1;
-      c.highest_run = std::max(c.highest_run, run);
-    }
-    run = 0;
-    shooter = -1;
-  };
-  for (const RecordedAction& ra : record.actions) {
-    if (!std::holds_alternative<Shoot>(ra.action) || !ra.ruling.carom) continue;
-    if (shooter != ra.player) close();
-    shooter = ra.player;
-    if (ra.ruling.carom->point) run += 1;
-    if (!ra.ruling.turn_continues || ra.after.phase == Phase::game_over) close();
+  for (const CaromInning& inning : carom_innings(record)) {
+    if (inning.points == 0) continue;
+    CaromStats& c = *st[static_cast<std::size_t>(inning.player)];
+    c.scoring_innings += 1;
+    c.highest_run = std::max(c.highest_run, inning.points);
   }
-  close();
 }
 
 /// The noise `p`'s shots are played with: its own, else the match's.

@@ -1,5 +1,6 @@
 // Exact equality of game records (include/breakshot/record.hpp): doubles
 // are compared by their bits, so -0 is not +0 and a NaN equals itself.
+// And three-cushion's innings of a record (carom_innings).
 #include <bit>
 #include <cstdint>
 #include <variant>
@@ -78,6 +79,27 @@ bool GameRecord::operator==(const GameRecord& o) const {
   return identical(config, o.config) && engine == o.engine && players == o.players && seed == o.seed &&
          identical(noise[0], o.noise[0]) && identical(noise[1], o.noise[1]) &&
          identical(start, o.start) && actions == o.actions;
+}
+
+std::vector<CaromInning> carom_innings(const GameRecord& record) {
+  std::vector<CaromInning> innings;
+  CaromInning inning;
+  bool open = false;
+  const auto close = [&] {
+    if (open) innings.push_back(inning);
+    inning = CaromInning{};
+    open = false;
+  };
+  for (const RecordedAction& ra : record.actions) {
+    if (!std::holds_alternative<Shoot>(ra.action) || !ra.ruling.carom) continue;
+    if (open && inning.player != ra.player) close();
+    open = true;
+    inning.player = ra.player;
+    if (ra.ruling.carom->point) inning.points += 1;
+    if (!ra.ruling.turn_continues || ra.after.phase == Phase::game_over) close();
+  }
+  close();
+  return innings;
 }
 
 }  // namespace breakshot

@@ -51,39 +51,28 @@ std::string score_text(const CaromState& k) {
 
 std::string cushions_text(int n) { return std::to_string(n) + (n == 1 ? " cushion" : " cushions"); }
 
-/// What the struck ball did, from the shot's events: the object balls it
-/// touched in order, its cushions before its first contact with the
-/// second, whether the object balls touched each other, and how soon
-/// after the strike it first met a ball.
-struct Path {
-  std::vector<int> hit;
-  int cushions = 0;  // before the second ball, or all of them
-  bool kiss = false;
-  double first_contact = -1.0;  // time of the struck ball's first ball contact
-  double strike = 0.0;          // time of the cue strike
-};
+}  // namespace
+}  // namespace detail
 
-Path read_path(const std::vector<Event>& events, int cue) {
-  Path p;
-  bool second = false;
+CaromCount carom_count(const std::vector<Event>& events, int struck) {
+  CaromCount c;
   for (const Event& e : events) {
     switch (e.type) {
       case EventType::cue_strike:
-        if (e.ball == cue) p.strike = e.time;
+        if (e.ball == struck) c.strike = e.time;
         break;
       case EventType::ball_cushion:
-        if (e.ball == cue && !second) p.cushions += 1;
+        if (e.ball == struck && !c.done()) c.cushions += 1;
         break;
       case EventType::ball_ball: {
-        if (e.ball != cue && e.other != cue) {
-          p.kiss = true;
+        if (e.ball != struck && e.other != struck) {
+          c.kiss = true;
           break;
         }
-        const int o = e.ball == cue ? e.other : e.ball;
-        if (p.first_contact < 0.0) p.first_contact = e.time;
-        if (std::find(p.hit.begin(), p.hit.end(), o) == p.hit.end()) {
-          p.hit.push_back(o);
-          if (p.hit.size() == 2) second = true;
+        const int o = e.ball == struck ? e.other : e.ball;
+        if (c.first_contact < 0.0) c.first_contact = e.time;
+        if (!c.done() && std::find(c.hit.begin(), c.hit.end(), o) == c.hit.end()) {
+          c.hit.push_back(o);
         }
         break;
       }
@@ -94,8 +83,11 @@ Path read_path(const std::vector<Event>& events, int cue) {
         break;
     }
   }
-  return p;
+  return c;
 }
+
+namespace detail {
+namespace {
 
 class ThreeCushionRuleset final : public Ruleset {
  public:
@@ -167,7 +159,7 @@ class ThreeCushionRuleset final : public Ruleset {
     const CaromRules& opts = x.rules.config().carom;
     const int own = own_ball(x.before, x.shooter);
     const int cue = x.shot.cue_ball.value_or(own);
-    const Path path = read_path(x.events, cue);
+    const CaromCount path = carom_count(x.events, cue);
 
     // Fouls: the common part has added ball_off_table.
     if (cue != own) x.foul(Foul::wrong_cue_ball);
@@ -186,8 +178,8 @@ class ThreeCushionRuleset final : public Ruleset {
     c.hit = path.hit;
     c.cushions = path.cushions;
     c.kiss = path.kiss;
-    const bool both = path.hit.size() == 2;
-    c.point = r.fouls.empty() && both && path.cushions >= 3;
+    const bool both = path.done();
+    c.point = r.fouls.empty() && path.made();
 
     // The shot in words.
     std::string text = x.who;

@@ -198,6 +198,10 @@ struct BsPlayback {
   std::string reply;
   std::vector<double> frame;  // the last frame (layout: kFrame* in playback.cpp)
   std::vector<double> spins;  // bs_playback_spins's buffer: wx, wy, wz per ball
+  /// A three-cushion shot's playback (bs_game_shot_playback): the ball
+  /// number of each scenario ball, and the ball struck; -1 otherwise.
+  std::vector<int> numbers;
+  int carom_struck = -1;
 };
 
 namespace facade {
@@ -212,6 +216,10 @@ const double* spins_data(BsPlayback& pb);
 /// {"from": from, "events": [...]}, each event as the result file writes
 /// it (io/result_json.hpp: ids for balls, names for cushions and pockets).
 std::string events_json(const BsPlayback& pb, int from);
+/// bs_playback_carom_count's reply: the count of a three-cushion shot's
+/// playback over its events so far (carom_count, game.hpp):
+/// {"cushions", "hit" (ball numbers), "done", "made"}.
+std::string carom_count_json(const BsPlayback& pb);
 /// A scenario given as JSON text (read_scenario, scenario_io.hpp).
 bs::Scenario scenario_from(const char* scenario_json);
 
@@ -307,8 +315,17 @@ std::string check_placement_json(const BsGame& g, double x, double y);
 /// Plays `action` (as chosen) for the seat to act; nullopt and the game
 /// unchanged if the rules refuse it (`why` says why).
 std::optional<ojson> play(BsGame& g, const bs::Action& action, std::string& why);
-/// bs_game_act's reply: the action played, its ruling and the state after
-/// (play), or {"error"} if the rules refuse it.
+/// Whose turn it is after a recorded action, and why: {"next": seat (-1
+/// once the game is over), "why": "continues" (the same player shoots
+/// again), "passes" (the turn passes without a foul), "foul" (it passes
+/// after a foul), "decides" (a decision is due: `next` makes it),
+/// "breaks" (`next` breaks a new rack) or "game_over"}.
+ojson turn_json(const bs::RecordedAction& ra);
+/// bs_game_turns's reply: {"turns": [turn_json of each action]}.
+std::string turns_json(const BsGame& g);
+/// bs_game_act's reply: the action played, its ruling, whose turn it is
+/// next ("turn", turn_json) and the state after (play), or {"error"} if
+/// the rules refuse it.
 std::string act_json(BsGame& g, const char* action_text);
 /// bs_game_ai_action's reply: {"action"} as the AI of `level` (or of the
 /// seat to act, when null or empty) chooses it.

@@ -23,6 +23,7 @@
 
 #include "facade.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -168,29 +169,14 @@ ojson carom_marks_json() {
 /// What the three-cushion page shows beside the score: the ball the
 /// player to act strikes, and each player's general average (points per
 /// inning begun) and highest run, the inning in progress included. Runs
-/// as the match summary counts them (match.cpp's add_carom): an inning
-/// ends with a shot after which the turn does not continue.
+/// as the match summary counts them (record.hpp's carom_innings).
 ojson carom_figures_json(const BsGame& g) {
   const bs::GameState& s = g.state();
   std::array<int, 2> highest{0, 0};
-  int run = 0;
-  int shooter = -1;
-  const auto close = [&] {
-    if (shooter >= 0) {
-      auto& h = highest[static_cast<std::size_t>(shooter)];
-      if (run > h) h = run;
-    }
-    run = 0;
-    shooter = -1;
-  };
-  for (const bs::RecordedAction& ra : g.record().actions) {
-    if (!std::holds_alternative<bs::Shoot>(ra.action) || !ra.ruling.carom) continue;
-    if (shooter != ra.player) close();
-    shooter = ra.player;
-    if (ra.ruling.carom->point) run += 1;
-    if (!ra.ruling.turn_continues || ra.after.phase == bs::Phase::game_over) close();
+  for (const bs::CaromInning& inning : bs::carom_innings(g.record())) {
+    int& h = highest[static_cast<std::size_t>(inning.player)];
+    h = std::max(h, inning.points);
   }
-  close();
   ojson j = ojson::object();
   j["cue_ball"] = g.rules().cue_ball(s);
   ojson average = ojson::array();
@@ -339,6 +325,7 @@ ojson state_json(const BsGame& g) {
 ojson table_json(const BsGame& g) {
   const bs::Table& t = g.rules().table();
   ojson j = ojson::object();
+  j["size"] = g.rules().config().table_size;
   j["length"] = t.length;
   j["width"] = t.width;
   j["ball_radius"] = g.rules().config().ball_radius;
@@ -374,6 +361,36 @@ ojson table_json(const BsGame& g) {
   return j;
 }
 
+ojson turn_json(const bs::RecordedAction& ra) {
+  const bs::GameState& after = ra.after;
+  ojson j = ojson::object();
+  const bool over = after.phase == bs::Phase::game_over;
+  j["next"] = over ? -1 : after.player;
+  const char* why = "passes";
+  if (over) {
+    why = "game_over";
+  } else if (after.phase == bs::Phase::break_shot) {
+    why = "breaks";
+  } else if (after.phase != bs::Phase::shot) {
+    why = "decides";  // a decision phase: push_out_choice, foul_choice, ...
+  } else if (!std::holds_alternative<bs::Shoot>(ra.action) ? after.player == ra.player
+                                                           : ra.ruling.turn_continues) {
+    why = "continues";
+  } else if (!ra.ruling.fouls.empty()) {
+    why = "foul";
+  }
+  j["why"] = why;
+  return j;
+}
+
+std::string turns_json(const BsGame& g) {
+  ojson turns = ojson::array();
+  for (const bs::RecordedAction& ra : g.record().actions) turns.push_back(turn_json(ra));
+  ojson j = ojson::object();
+  j["turns"] = turns;
+  return j.dump();
+}
+
 std::optional<ojson> play(BsGame& g, const bs::Action& action, std::string& why) {
   if (auto reason = g.session.check(action)) {
     why = *reason;
@@ -401,6 +418,7 @@ std::optional<ojson> play(BsGame& g, const bs::Action& action, std::string& why)
     j["numbers"] = ints_json(numbers);
   }
   j["ruling"] = ruling_json(out.ruling);
+  j["turn"] = turn_json(ra);
   j["facts"] = facts_json(out.facts);
   j["state"] = state_json(g);
   return j;
@@ -467,8 +485,14 @@ std::unique_ptr<BsPlayback> shot_playback(const BsGame& g, int index) {
     bad("index", "action " + std::to_string(index) + " is not a shot (" +
                      std::string(action_kind(ra.action)) + ")");
   }
-  return std::make_unique<BsPlayback>(
-      g.rules().shot_scenario(g.state_before(static_cast<std::size_t>(index)), shot->strike));
+  std::vector<int> numbers;
+  auto pb = std::make_unique<BsPlayback>(g.rules().shot_scenario(
+      g.state_before(static_cast<std::size_t>(index)), shot->strike, &numbers));
+  if (ra.ruling.carom) {
+    pb->numbers = std::move(numbers);
+    pb->carom_struck = ra.ruling.carom->cue_ball;
+  }
+  return pb;
 }
 
 std::string undo_to_json(BsGame& g, int n) {

@@ -11,11 +11,13 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <variant>
 #include <vector>
 
+#include "breakshot/game.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
@@ -174,6 +176,30 @@ std::string events_json(const BsPlayback& pb, int from) {
   }
   out += "]}";
   return out;
+}
+
+std::string carom_count_json(const BsPlayback& pb) {
+  if (pb.carom_struck < 0) bad("playback", "not the playback of a three-cushion shot");
+  // The simulation's events name balls by scenario index: by number here.
+  const auto number = [&](std::int32_t i) {
+    return i >= 0 && static_cast<std::size_t>(i) < pb.numbers.size()
+               ? pb.numbers[static_cast<std::size_t>(i)]
+               : i;
+  };
+  std::vector<bs::Event> events = pb.sim.events();
+  for (bs::Event& e : events) {
+    e.ball = number(e.ball);
+    if (e.type == bs::EventType::ball_ball) e.other = number(e.other);
+  }
+  const bs::CaromCount c = bs::carom_count(events, pb.carom_struck);
+  ojson j = ojson::object();
+  j["cushions"] = c.cushions;
+  ojson hit = ojson::array();
+  for (const int b : c.hit) hit.push_back(b);
+  j["hit"] = hit;
+  j["done"] = c.done();
+  j["made"] = c.made();
+  return j.dump();
 }
 
 bs::Scenario scenario_from(const char* scenario_json) {

@@ -150,6 +150,11 @@ const char* bs_playback_events(BsPlayback* pb, int from) {
   return keep(pb->reply, guarded([&] { return events_json(*pb, from); }));
 }
 
+const char* bs_playback_carom_count(BsPlayback* pb) {
+  if (pb == nullptr) return null_handle();
+  return keep(pb->reply, guarded([&] { return carom_count_json(*pb); }));
+}
+
 void bs_playback_free(BsPlayback* pb) { delete pb; }
 
 BsGame* bs_game_new(const char* config_json) {
@@ -200,6 +205,11 @@ const char* bs_game_link(BsGame* g) {
 const char* bs_game_record(BsGame* g) {
   if (g == nullptr) return null_handle();
   return keep(g->reply, guarded([&] { return bs::write_record(g->record()); }));
+}
+
+const char* bs_game_turns(BsGame* g) {
+  if (g == nullptr) return null_handle();
+  return keep(g->reply, guarded([&] { return turns_json(*g); }));
 }
 
 const char* bs_game_undo_to(BsGame* g, int n) {

@@ -80,6 +80,12 @@ const double* bs_playback_frame_data(BsPlayback* pb, double t);
  * null handle (see bs_last_error). */
 const double* bs_playback_spins(BsPlayback* pb);
 const char* bs_playback_events(BsPlayback* pb, int from);
+/* A three-cushion shot's count over the playback's events so far (up to
+ * its last frame): {"cushions", "hit" (the object balls the struck ball
+ * touched, by number, in order), "done" (it has met both), "made" (both,
+ * three cushions first: a point, fouls aside)}; the rules count the same
+ * way (game.hpp's carom_count). {"error"} for another playback. */
+const char* bs_playback_carom_count(BsPlayback* pb);
 void bs_playback_free(BsPlayback* pb);
 
 /* Games between two seats, each "human" or an AI level name. */
@@ -93,6 +99,11 @@ const char* bs_game_ai_action(BsGame* g, const char* level_or_null);
 BsPlayback* bs_game_shot_playback(BsGame* g, int index);
 const char* bs_game_link(BsGame* g);
 const char* bs_game_record(BsGame* g);
+/* Whose turn it is after each action, and why: {"turns": [{"next": seat
+ * (-1 once the game is over), "why": "continues" | "passes" | "foul" |
+ * "decides" | "breaks" | "game_over"}, ...]}, one per action; bs_game_act's
+ * reply carries its action's as "turn". */
+const char* bs_game_turns(BsGame* g);
 const char* bs_game_undo_to(BsGame* g, int n);
 void bs_game_free(BsGame* g);
 

@@ -233,10 +233,9 @@ function syncForm() {
     const sel = $('carom-target-points');
     if (rules && [...sel.options].some((o) => o.value === String(rules.target))) sel.value = String(rules.target);
   }
-  if (ui.table && st.game !== 'snooker' && st.game !== 'three_cushion') {
-    const size = Math.abs(ui.table.length - 2.54) < 0.01 ? '9ft' : Math.abs(ui.table.length - 2.34) < 0.01 ? '8ft' : '7ft';
-    $('table-size').value = size;
-  }
+  // the table's size as the engine names it (bs_game_table's "size")
+  const size = ui.table && ui.table.size;
+  if (size && [...$('table-size').options].some((o) => o.value === size)) $('table-size').value = size;
 }
 
 async function main() {

@@ -101,6 +101,7 @@ function rawApi(M) {
     frameData: c('bs_playback_frame_data', 'number', ['number', 'number']),
     spins: c('bs_playback_spins', 'number', ['number']),
     events: c('bs_playback_events', 'number', ['number', 'number']),
+    caromCount: c('bs_playback_carom_count', 'number', ['number']),
     playbackFree: c('bs_playback_free', null, ['number']),
     gameNew: c('bs_game_new', 'number', ['number']),
     gameFromLink: c('bs_game_from_link', 'number', ['number']),
@@ -112,6 +113,7 @@ function rawApi(M) {
     shotPlayback: c('bs_game_shot_playback', 'number', ['number', 'number']),
     link: c('bs_game_link', 'number', ['number']),
     record: c('bs_game_record', 'number', ['number']),
+    turns: c('bs_game_turns', 'number', ['number']),
     undoTo: c('bs_game_undo_to', 'number', ['number', 'number']),
     gameFree: c('bs_game_free', null, ['number']),
     lastError: c('bs_last_error', 'number', []),
@@ -175,6 +177,7 @@ function rawApi(M) {
       return M.HEAPF64.slice(at, at + 3 * n);
     },
     events: (h, from) => str(fn.events(h, from)),
+    caromCount: (h) => str(fn.caromCount(h)),
     playbackFree: (h) => fn.playbackFree(h),
     gameNew: (text) => withStrings([text], (p) => fn.gameNew(p)),
     gameFromLink: (text) => withStrings([text], (p) => fn.gameFromLink(p)),
@@ -186,6 +189,7 @@ function rawApi(M) {
     shotPlayback: (h, index) => fn.shotPlayback(h, index),
     link: (h) => str(fn.link(h)),
     record: (h) => str(fn.record(h)),
+    turns: (h) => str(fn.turns(h)),
     undoTo: (h, n) => str(fn.undoTo(h, n)),
     gameFree: (h) => fn.gameFree(h),
     lastError: () => str(fn.lastError()),
@@ -239,6 +243,9 @@ class Playback {
   frameJson(t) { return parse(this._raw.frame(this._handle(), numArg(t, 't'))); }
   /** {from, events: [...]}: the events from index `from` on, in result-file form. */
   events(from = 0) { return parse(this._raw.events(this._handle(), intArg(from, 'from'))); }
+  /** A three-cushion shot's count over its events so far (its last
+   *  frame's): {cushions, hit, done, made} (bs_playback_carom_count). */
+  caromCount() { return parse(this._raw.caromCount(this._handle())); }
   free() {
     if (this._h) this._raw.playbackFree(this._h);
     this._h = 0;
@@ -286,6 +293,9 @@ class Game {
     parse(text);
     return text;
   }
+  /** Whose turn it is after each action, and why: [{next, why}, ...]
+   *  (bs_game_turns; act()'s reply carries its action's as "turn"). */
+  turns() { return parse(this._raw.turns(this._handle())).turns; }
   /** Keeps the first n actions; returns the state. */
   undoTo(n) { return parse(this._raw.undoTo(this._handle(), intArg(n, 'n'))); }
   free() {

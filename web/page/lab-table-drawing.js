@@ -9,7 +9,7 @@ import { FELT, RAIL, TOTAL_COLOUR, luminance } from './lab-colours.js';
 import { tableVertices, bbox } from './lab-geometry.js';
 import { radiusOf } from './lab-scenario.js';
 import { TRACE_LIMIT } from './lab-run.js';
-import { flightScale, flightLift, drawFlightShadow } from './draw.js';
+import { flightScale, flightLift, drawFlightShadow } from './draw-ball.js';
 
 // A setup velocity arrow ends where the ball would be after this many seconds.
 export const VEL_TAU = 0.25;

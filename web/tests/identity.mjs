@@ -273,6 +273,7 @@ for (const step of script.steps) {
     case 'state':
     case 'link':
     case 'record':
+    case 'turns':
       print(`${step.do} ${step.game}`, raw[step.do](gameOf(step)));
       break;
     case 'check_placement':
@@ -301,6 +302,18 @@ for (const step of script.steps) {
       if (h) {
         frames(h, step.count, step.dt);
         print('events 0', raw.events(h, 0));
+        raw.playbackFree(h);
+      }
+      break;
+    }
+    case 'carom_playback': {
+      const h = raw.shotPlayback(gameOf(step), step.index);
+      print(`carom_playback ${step.game} ${step.index}`, h ? OK : raw.lastError());
+      if (h) {
+        for (let k = 0; k < step.count; ++k) {
+          print(`frame ${k}`, raw.frame(h, k * step.dt));
+          print(`carom_count ${k}`, raw.caromCount(h));
+        }
         raw.playbackFree(h);
       }
       break;

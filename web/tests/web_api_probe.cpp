@@ -32,7 +32,7 @@
 //   playback_free {pb}               (prints nothing)
 //   game_new {as, config}            bs_game_new(config as JSON text); the state or bs_last_error
 //   game_new_text {as, text}
-//   table / state / link / record {game}
+//   table / state / link / record / turns {game}
 //   check_placement {game, x, y}
 //   act {game, action}               bs_game_act(action as JSON text)
 //   ai {game, level, play}           bs_game_ai_action(level or NULL); with play,
@@ -42,6 +42,9 @@
 //                                    seat, `level` for a human seat)
 //   shot_playback {game, index, count, dt}   bs_game_shot_playback, frames as above,
 //                                    events from 0, free
+//   carom_playback {game, index, count, dt}  bs_game_shot_playback; at k * dt, k =
+//                                    0..count-1: bs_playback_frame ("frame k") then
+//                                    bs_playback_carom_count ("carom_count k"); free
 //   from_link {game, as}             bs_game_from_link(link of game); the state or error
 //   from_link_text {as, text}
 //   undo {game, n}
@@ -161,6 +164,8 @@ class Probe {
       print("link " + name_of(step), bs_game_link(game(step)));
     } else if (kind == "record") {
       print("record " + name_of(step), bs_game_record(game(step)));
+    } else if (kind == "turns") {
+      print("turns " + name_of(step), bs_game_turns(game(step)));
     } else if (kind == "check_placement") {
       print("check_placement " + name_of(step),
             bs_game_check_placement(game(step), step.at("x").get<double>(), step.at("y").get<double>()));
@@ -185,6 +190,20 @@ class Probe {
       if (pb != nullptr) {
         frames(pb, step.at("count").get<int>(), step.at("dt").get<double>());
         print("events 0", bs_playback_events(pb, 0));
+        bs_playback_free(pb);
+      }
+    } else if (kind == "carom_playback") {
+      const int index = step.at("index").get<int>();
+      BsPlayback* pb = bs_game_shot_playback(game(step), index);
+      print("carom_playback " + name_of(step) + " " + std::to_string(index),
+            pb != nullptr ? std::string("{\"ok\":true}") : std::string(bs_last_error()));
+      if (pb != nullptr) {
+        const int count = step.at("count").get<int>();
+        const double dt = step.at("dt").get<double>();
+        for (int k = 0; k < count; ++k) {
+          print("frame " + std::to_string(k), bs_playback_frame(pb, static_cast<double>(k) * dt));
+          print("carom_count " + std::to_string(k), bs_playback_carom_count(pb));
+        }
         bs_playback_free(pb);
       }
     } else if (kind == "from_link") {
