@@ -81,6 +81,18 @@ std::string as_version_2(std::string v1, const std::string& engine) {
   return v1;
 }
 
+/// A record's text with the words of its rulings and results left out
+/// (read, emptied, written again): what a later version still writes byte
+/// for byte, the words being put better since.
+std::string without_words(const std::string& text) {
+  GameRecord r = read_ok(text);
+  for (RecordedAction& a : r.actions) {
+    a.ruling.text.clear();
+    a.after.result.clear();
+  }
+  return write_record(r);
+}
+
 const char* const kV1Files[] = {"nine_ball_club_seed1_game1.json",
                                 "eight_ball_club_seed1_game1.json"};
 
@@ -116,7 +128,7 @@ TEST(RecordVersions, Version1RecordIsRewrittenAsVersion2WithTheLegacyHeader) {
 
 TEST(RecordVersions, LegacyGamesGiveTheRecordsTheyGaveBefore) {
   // The games of the version 1 files, played now with the legacy physics:
-  // the same bytes apart from the version 2 header.
+  // the same bytes apart from the version 2 header and the words.
   for (const GameType game : {GameType::nine_ball, GameType::eight_ball}) {
     MatchOptions opt;
     opt.game = game;
@@ -132,7 +144,10 @@ TEST(RecordVersions, LegacyGamesGiveTheRecordsTheyGaveBefore) {
                      [&](int, const GameRecord& r) { records.push_back(write_record(r)); });
     ASSERT_EQ(records.size(), 1u);
     const std::string name = std::string(to_string(game)) + "_club_seed1_game1.json";
-    EXPECT_EQ(records[0], as_version_2(data_file(name), std::string(kVersion))) << name;
+    EXPECT_EQ(without_words(records[0]),
+              without_words(as_version_2(data_file(name), std::string(kVersion))))
+        << name;
+    EXPECT_EQ(records[0].find("Foul ("), std::string::npos) << name;
   }
 }
 

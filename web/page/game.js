@@ -55,21 +55,6 @@ const POCKET_WORDS = {
   top_left: 'top-left corner',
 };
 
-const FOUL_WORDS = {
-  scratch: 'scratch (the cue ball fell)',
-  no_contact: 'no ball hit',
-  wrong_ball_first: 'wrong ball hit first',
-  no_rail: 'no rail after contact',
-  illegal_break: 'illegal break',
-  behind_head_string: 'first ball hit was behind the head string',
-  ball_off_table: 'a ball left the table',
-  in_off: 'in-off (the cue ball fell)',
-  wrong_ball_potted: 'a ball not on was potted',
-  free_ball_snooker: 'the free ball snookered the opponent',
-  wrong_cue_ball: 'the wrong cue ball was struck',
-  push_through: 'pushed through (the tip still on the ball)',
-};
-
 const CHOICE_WORDS = {
   shoot: 'Take the table and shoot',
   pass_back: 'Pass it back: the other player must shoot',
@@ -1619,13 +1604,11 @@ export class GameUI {
     const r = e.ruling || {};
     let text = r.text || (e.kind === 'place' ? 'places the cue ball' : e.kind === 'decide' ? 'decides' : 'shoots');
     if (e.kind === 'decide' && e.action && e.action.choice && !r.text) text = `chooses: ${e.action.choice.replace(/_/g, ' ')}`;
-    li.appendChild(document.createTextNode(`${capital(text)} `));
-    if (r.fouls && r.fouls.length) {
-      const f = document.createElement('span');
-      f.className = 'foul';
-      f.textContent = `Foul: ${r.fouls.map((x) => FOUL_WORDS[x] || x).join(', ')}. `;
-      li.appendChild(f);
-    }
+    // The ruling's words name its fouls; a foul's are shown in the foul colour.
+    const words = document.createElement('span');
+    if (r.fouls && r.fouls.length) words.className = 'foul';
+    words.textContent = `${capital(text)} `;
+    li.appendChild(words);
     if (r.winner != null && r.winner >= 0) {
       const w = document.createElement('span');
       w.className = 'win';
