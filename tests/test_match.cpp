@@ -595,6 +595,25 @@ TEST_F(MatchCli, ReplayOfATamperedRecordExitsFour) {
   EXPECT_NE(r.out.find("[5]"), std::string::npos) << r.out;
 }
 
+TEST_F(MatchCli, ReplayOfAForfeitSaysItsEnding) {
+  ASSERT_EQ(play_one().status, 0);
+  ojson doc = ojson::parse(slurp(dir_ / "records" / "game-0001.json"));
+  doc["version"] = 3;
+  doc["actions"].erase(doc["actions"].begin() + 1, doc["actions"].end());
+  doc["ending"] = {{"kind", "forfeit"},
+                   {"player", 0},
+                   {"winner", 1},
+                   {"text", "Player 1 left the table for 120 s and forfeits"}};
+  std::ofstream(dir_ / "forfeit.json", std::ios::binary) << doc.dump();
+  const Run r = run("replay " + quote((dir_ / "forfeit.json").string()));
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("replayed 1 actions: identical\nforfeit: winner Player 2 ("),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("): Player 1 left the table for 120 s and forfeits\n"), std::string::npos)
+      << r.out;
+}
+
 TEST_F(MatchCli, InvalidRecordExitsTwoNamingThePath) {
   ASSERT_EQ(play_one().status, 0);
   ojson doc = ojson::parse(slurp(dir_ / "records" / "game-0001.json"));

@@ -304,6 +304,50 @@ TEST_F(RoomsTest, ASeatLeftEmptyForfeitsAndEmptyRoomsExpire) {
   EXPECT_EQ(rooms_.clients(), 0u);
 }
 
+TEST_F(RoomsTest, AForfeitEndsTheRecord) {
+  start_game();
+  const std::string code = created_["room"];
+  ASSERT_TRUE(first_of(rooms_.receive(1, shot(90, 0), 2), 2, "action").is_object());
+  rooms_.disconnect(1, 10);
+  EXPECT_TRUE(rooms_.tick(129).records.empty());
+  const Effects fx = rooms_.tick(130);
+  // The record is written again, with its ending: Player 1 left.
+  ASSERT_EQ(fx.records.size(), 1u);
+  EXPECT_EQ(fx.records[0].name, "test-000001-" + code + ".json");
+  EXPECT_NE(fx.records[0].text.find("\"version\": 3,"), std::string::npos);
+  const auto read = breakshot::read_record(fx.records[0].text);
+  ASSERT_TRUE(std::holds_alternative<breakshot::GameRecord>(read));
+  const auto& record = std::get<breakshot::GameRecord>(read);
+  EXPECT_EQ(record.actions.size(), 1u);
+  ASSERT_TRUE(record.ending.has_value());
+  EXPECT_EQ(record.ending->kind, breakshot::GameEnding::Kind::forfeit);
+  EXPECT_EQ(record.ending->player, 0);
+  EXPECT_EQ(record.ending->winner, 1);
+  EXPECT_EQ(record.ending->text, first_of(fx, 2, "over")["result"]);
+  const breakshot::ReplayReport rep = breakshot::replay(record);
+  EXPECT_TRUE(rep.identical) << rep.message;
+  // Once over, nothing more is written.
+  EXPECT_TRUE(rooms_.tick(200).records.empty());
+}
+
+TEST_F(RoomsTest, BothSeatsLeftEmptyAbandonTheGameInTheRecord) {
+  start_game();
+  rooms_.disconnect(1, 10);
+  rooms_.disconnect(2, 11);
+  const Effects fx = rooms_.tick(131);
+  EXPECT_EQ(first_of(fx, 1, "over"), json());  // nobody is there to be told
+  ASSERT_EQ(fx.records.size(), 1u);
+  const auto read = breakshot::read_record(fx.records[0].text);
+  ASSERT_TRUE(std::holds_alternative<breakshot::GameRecord>(read));
+  const auto& record = std::get<breakshot::GameRecord>(read);
+  EXPECT_TRUE(record.actions.empty());
+  ASSERT_TRUE(record.ending.has_value());
+  EXPECT_EQ(record.ending->kind, breakshot::GameEnding::Kind::abandoned);
+  EXPECT_EQ(record.ending->player, -1);
+  EXPECT_EQ(record.ending->winner, -1);
+  EXPECT_TRUE(breakshot::replay(record).identical);
+}
+
 TEST(StateHash, IsFnv1a64) {
   EXPECT_EQ(breakshot::online::state_hash(""), "cbf29ce484222325");
   EXPECT_EQ(breakshot::online::state_hash("a"), "af63dc4c8601ec8c");
