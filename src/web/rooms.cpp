@@ -49,6 +49,9 @@ constexpr std::size_t kTokenLength = 32;
 // A well-formed message the rules or the rooms refuse: answered, not closed.
 struct Refused {
   std::string reason;
+  /// A rejoin of a seat another connection plays: the reply says so
+  /// ("seat_in_use": true), and the page takes the free seat or watches.
+  bool seat_in_use = false;
 };
 // A malformed message: answered with the reason, then the connection closes.
 struct Malformed {
@@ -289,7 +292,12 @@ struct Rooms::Impl {
   }
 
   void rejoin(Effects& fx, ClientId c, const json& msg) {
-    only_keys(msg, {"type", "room", "token"});
+    only_keys(msg, {"type", "room", "token", "replace"});
+    bool replace = false;
+    if (const auto it = msg.find("replace"); it != msg.end()) {
+      if (!it->is_boolean()) throw Malformed{"field 'replace' must be true or false"};
+      replace = it->get<bool>();
+    }
     Room& r = room_named(msg);
     const std::string& token = string_field(msg, "token");
     int seat = -1;
@@ -305,8 +313,17 @@ struct Rooms::Impl {
     if (seat < 0) throw Refused{"that token holds no seat of room " + r.code};
     Seat& s = r.seats[static_cast<std::size_t>(seat)];
     if (s.client != 0) {
-      // The seat's old connection (a closed tab not yet noticed) gives way.
-      send(fx, s.client, {{"type", "error"}, {"reason", "the seat was taken back by a rejoin"}});
+      // Another connection plays the seat: a second tab of the same
+      // browser, which has the token too, is refused (it takes the free
+      // seat or watches); the seat's own page coming back after its
+      // connection broke (replace) takes it, and the old connection, not
+      // yet noticed to be gone, is told so and closed.
+      if (!replace) {
+        throw Refused{"seat " + std::to_string(seat) + " of room " + r.code +
+                          " is played by another connection",
+                      true};
+      }
+      send(fx, s.client, {{"type", "replaced"}, {"reason", "the seat was taken back by a rejoin"}});
       fx.close.push_back(s.client);
       members.erase(s.client);
     }
@@ -406,7 +423,9 @@ struct Rooms::Impl {
         throw Malformed{"unknown message type '" + type + "'"};
       }
     } catch (const Refused& e) {
-      send(fx, c, {{"type", "refused"}, {"reason", e.reason}});
+      json reply = {{"type", "refused"}, {"reason", e.reason}};
+      if (e.seat_in_use) reply["seat_in_use"] = true;
+      send(fx, c, reply);
     } catch (const Malformed& e) {
       send(fx, c, {{"type", "error"}, {"reason", e.reason}});
       fx.close.push_back(c);
