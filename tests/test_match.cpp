@@ -587,12 +587,31 @@ TEST_F(MatchCli, ReplayOfATamperedRecordExitsFour) {
   ASSERT_EQ(play_one().status, 0);
   const fs::path file = dir_ / "records" / "game-0001.json";
   ojson doc = ojson::parse(slurp(file));
-  doc["actions"][0]["ruling"]["text"] = "a different story";
+  doc["actions"][0]["ruling"]["spotted"] = ojson::array({5});
   std::ofstream(dir_ / "tampered.json", std::ios::binary) << doc.dump();
   const Run r = run("replay " + quote((dir_ / "tampered.json").string()));
   EXPECT_EQ(r.status, 4) << r.out << r.err;
-  EXPECT_NE(r.out.find("actions[0].ruling.text"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("a different story"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("actions[0].ruling.spotted"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[5]"), std::string::npos) << r.out;
+}
+
+TEST_F(MatchCli, ReplayOfAForfeitSaysItsEnding) {
+  ASSERT_EQ(play_one().status, 0);
+  ojson doc = ojson::parse(slurp(dir_ / "records" / "game-0001.json"));
+  doc["version"] = 3;
+  doc["actions"].erase(doc["actions"].begin() + 1, doc["actions"].end());
+  doc["ending"] = {{"kind", "forfeit"},
+                   {"player", 0},
+                   {"winner", 1},
+                   {"text", "Player 1 left the table for 120 s and forfeits"}};
+  std::ofstream(dir_ / "forfeit.json", std::ios::binary) << doc.dump();
+  const Run r = run("replay " + quote((dir_ / "forfeit.json").string()));
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("replayed 1 actions: identical\nforfeit: winner Player 2 ("),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("): Player 1 left the table for 120 s and forfeits\n"), std::string::npos)
+      << r.out;
 }
 
 TEST_F(MatchCli, InvalidRecordExitsTwoNamingThePath) {

@@ -177,6 +177,93 @@ TEST(RecordIo, RecordWithoutActions) {
   EXPECT_EQ(write_record(read_ok(text)), text);
 }
 
+// ---------------------------------------------------------------------------
+// The ending (version 3): a forfeit of online play
+
+GameEnding forfeit_of(int player) {
+  GameEnding e;
+  e.kind = GameEnding::Kind::forfeit;
+  e.player = player;
+  e.winner = 1 - player;
+  e.text = "Player " + std::to_string(player + 1) + " left the table for 120 s and forfeits";
+  return e;
+}
+
+TEST(RecordEnding, ARecordWithAnEndingIsVersion3AndRoundTrips) {
+  GameRecord r = sample_record();
+  const std::string without = write_record(r);
+  EXPECT_NE(without.find("\n  \"version\": 2,\n"), std::string::npos);
+  EXPECT_EQ(without.find("ending"), std::string::npos);
+  r.ending = forfeit_of(1);
+  const std::string text = write_record(r);
+  EXPECT_NE(text.find("\n  \"version\": 3,\n"), std::string::npos) << text;
+  // The same bytes but the version and a last line for the ending.
+  std::string expected = without;
+  expected.replace(expected.find("\"version\": 2"), 12, "\"version\": 3");
+  expected.insert(expected.size() - 3,
+                  ",\n  \"ending\": {\"kind\":\"forfeit\",\"player\":1,\"winner\":0,\"text\":"
+                  "\"Player 2 left the table for 120 s and forfeits\"}");
+  EXPECT_EQ(text, expected);
+  const GameRecord back = read_ok(text);
+  EXPECT_TRUE(back == r);
+  ASSERT_TRUE(back.ending.has_value());
+  EXPECT_EQ(*back.ending, forfeit_of(1));
+  EXPECT_EQ(write_record(back), text);
+  // Without actions, and abandoned.
+  r.actions.clear();
+  r.ending = GameEnding{GameEnding::Kind::abandoned, -1, -1, "both players left the table"};
+  EXPECT_TRUE(read_ok(write_record(r)) == r);
+  // The ending is part of a record's equality.
+  GameRecord other = r;
+  other.ending.reset();
+  EXPECT_FALSE(other == r);
+}
+
+TEST(RecordEnding, BadEndingsAreRefusedByName) {
+  GameRecord r = sample_record();
+  r.ending = forfeit_of(0);
+  const ojson good = ojson::parse(write_record(r));
+  struct Case {
+    const char* name;
+    void (*mutate)(ojson&);
+    const char* path;
+    const char* said;
+  };
+  const Case cases[] = {
+      {"version 3 without an ending", [](ojson& j) { j.erase("ending"); }, "ending",
+       "missing required field"},
+      {"an ending in version 2", [](ojson& j) { j["version"] = 2; }, "ending", "unknown field"},
+      {"unknown kind", [](ojson& j) { j["ending"]["kind"] = "resigned"; }, "ending.kind",
+       "\"forfeit\" or \"abandoned\""},
+      {"seat out of range", [](ojson& j) { j["ending"]["player"] = 2; }, "ending.player",
+       "must be"},
+      {"forfeit without a seat", [](ojson& j) { j["ending"]["player"] = -1; }, "ending.player",
+       "names the seat"},
+      {"forfeit won by the one who left", [](ojson& j) { j["ending"]["winner"] = 0; },
+       "ending.winner", "the other seat (1), not 0"},
+      {"abandoned with a winner",
+       [](ojson& j) {
+         j["ending"]["kind"] = "abandoned";
+         j["ending"]["player"] = -1;
+       },
+       "ending.winner", "no winner"},
+      {"no words", [](ojson& j) { j["ending"]["text"] = ""; }, "ending.text", "in words"},
+      {"unknown field", [](ojson& j) { j["ending"]["when"] = 3; }, "ending.when", "unknown field"},
+  };
+  for (const Case& c : cases) {
+    ojson doc = good;
+    c.mutate(doc);
+    const RecordError err = read_error(doc.dump());
+    EXPECT_EQ(err.path, c.path) << c.name << ": " << err.reason;
+    EXPECT_NE(err.reason.find(c.said), std::string::npos) << c.name << ": " << err.reason;
+  }
+  // The writer refuses what the reader would.
+  GameRecord bad = sample_record();
+  bad.ending = forfeit_of(0);
+  bad.ending->winner = 0;
+  EXPECT_THROW((void)write_record(bad), std::invalid_argument);
+}
+
 TEST(RecordIo, EqualityIsBitwise) {
   const GameRecord r = sample_record();
   GameRecord other = r;
@@ -228,8 +315,8 @@ TEST(RecordIo, MalformedRecordsNameThePath) {
        "config[\"ball size\"]", "unknown field"},
       {"wrong type", [](ojson& j) { j["actions"][0]["player"] = "zero"; }, "actions[0].player",
        "expected an integer in [0, 1], not a string"},
-      {"wrong type bool", [](ojson& j) { j["start"]["kitchen_shot"] = 1; },
-       "start.kitchen_shot", "expected true or false"},
+      {"wrong type bool", [](ojson& j) { j["start"]["kitchen_shot"] = 1; }, "start.kitchen_shot",
+       "expected true or false"},
       {"unknown phase", [](ojson& j) { j["start"]["phase"] = "warm_up"; }, "start.phase",
        "unknown phase \"warm_up\""},
       {"unknown foul", [](ojson& j) { j["actions"][1]["ruling"]["fouls"][1] = "spitting"; },
@@ -246,19 +333,19 @@ TEST(RecordIo, MalformedRecordsNameThePath) {
       {"unknown action", [](ojson& j) { j["actions"][0]["action"]["type"] = "jump"; },
        "actions[0].action.type", "unknown action type"},
       {"field of another action type",
-       [](ojson& j) { j["actions"][0]["action"]["choice"] = "shoot"; },
-       "actions[0].action.choice", "unknown field"},
-      {"unknown table", [](ojson& j) { j["config"]["table_size"] = "10ft"; },
-       "config.table_size", "unknown table size \"10ft\" (expected \"7ft\", \"8ft\" or \"9ft\")"},
+       [](ojson& j) { j["actions"][0]["action"]["choice"] = "shoot"; }, "actions[0].action.choice",
+       "unknown field"},
+      {"unknown table", [](ojson& j) { j["config"]["table_size"] = "10ft"; }, "config.table_size",
+       "unknown table size \"10ft\" (expected \"7ft\", \"8ft\" or \"9ft\")"},
       {"seed as a number", [](ojson& j) { j["seed"] = 12; }, "seed", "decimal string"},
-      {"bad seed", [](ojson& j) { j["actions"][2]["noise_seed"] = "-1"; },
-       "actions[2].noise_seed", "decimal integer"},
+      {"bad seed", [](ojson& j) { j["actions"][2]["noise_seed"] = "-1"; }, "actions[2].noise_seed",
+       "decimal integer"},
       {"seed too large", [](ojson& j) { j["seed"] = "18446744073709551616"; }, "seed",
        "decimal integer"},
-      {"player out of range", [](ojson& j) { j["actions"][0]["player"] = 2; },
-       "actions[0].player", "[0, 1]"},
-      {"short position", [](ojson& j) { j["start"]["position"][4] = {0.5}; },
-       "start.position[4]", "expected an array of 2 numbers, not an array of 1"},
+      {"player out of range", [](ojson& j) { j["actions"][0]["player"] = 2; }, "actions[0].player",
+       "[0, 1]"},
+      {"short position", [](ojson& j) { j["start"]["position"][4] = {0.5}; }, "start.position[4]",
+       "expected an array of 2 numbers, not an array of 1"},
       {"null number", [](ojson& j) { j["actions"][1]["action"]["strike"]["speed"] = nullptr; },
        "actions[1].action.strike.speed", "expected a number, not null"},
       {"on_table length", [](ojson& j) { j["start"]["on_table"].erase(0); }, "start.on_table",
@@ -276,11 +363,9 @@ TEST(RecordIo, MalformedRecordsNameThePath) {
        "missing required field"},
       {"format", [](ojson& j) { j["format"] = "breakshot-scenario"; }, "format",
        "breakshot-game-record"},
-      {"version", [](ojson& j) { j["version"] = 3; }, "version", "not version 3"},
-      {"players", [](ojson& j) { j["players"].push_back("third"); }, "players",
-       "an array of 2"},
-      {"not an object", [](ojson& j) { j = ojson::array(); }, "(document)",
-       "expected an object"},
+      {"version", [](ojson& j) { j["version"] = 4; }, "version", "not version 4"},
+      {"players", [](ojson& j) { j["players"].push_back("third"); }, "players", "an array of 2"},
+      {"not an object", [](ojson& j) { j = ojson::array(); }, "(document)", "expected an object"},
   };
   for (const Case& c : cases) {
     ojson doc = good;
@@ -366,15 +451,15 @@ TEST(RecordReplay, PlayedGameReplaysIdentical) {
 TEST(RecordReplay, TamperedRulingIsNamed) {
   GameRecord r = played_game();
   const std::size_t k = a_shot(r);
-  r.actions[k].ruling.text += " (edited)";
+  r.actions[k].ruling.turn_continues = !r.actions[k].ruling.turn_continues;
   const ReplayReport rep = replay(r);
   EXPECT_FALSE(rep.identical);
   ASSERT_TRUE(rep.action.has_value());
   EXPECT_EQ(*rep.action, k);
   EXPECT_EQ(rep.actions_identical, k);
-  EXPECT_EQ(rep.where, action_path(k) + ".ruling.text");
-  EXPECT_NE(rep.recorded.find("(edited)"), std::string::npos) << rep.recorded;
-  EXPECT_EQ(rep.replayed.find("(edited)"), std::string::npos) << rep.replayed;
+  EXPECT_EQ(rep.where, action_path(k) + ".ruling.turn_continues");
+  EXPECT_EQ(rep.recorded, r.actions[k].ruling.turn_continues ? "true" : "false");
+  EXPECT_EQ(rep.replayed, r.actions[k].ruling.turn_continues ? "false" : "true");
   EXPECT_NE(rep.message.find("action " + std::to_string(k)), std::string::npos) << rep.message;
 
   r = played_game();
@@ -384,6 +469,22 @@ TEST(RecordReplay, TamperedRulingIsNamed) {
   EXPECT_EQ(fouls.where.substr(0, (action_path(k) + ".ruling.fouls").size()),
             action_path(k) + ".ruling.fouls")
       << fouls.where;
+}
+
+TEST(RecordReplay, RulingsAreComparedNotTheirWords) {
+  // The words of a ruling and of a game's result are put better from one
+  // version to the next: a record whose words differ, and no more, still
+  // replays identical (records written before the words changed).
+  GameRecord r = played_game();
+  for (RecordedAction& a : r.actions) {
+    a.ruling.text = "Older words.";
+    a.after.result = a.after.result.empty() ? "" : "older words";
+  }
+  const ReplayReport rep = replay(r);
+  EXPECT_TRUE(rep.identical) << rep.message;
+  EXPECT_EQ(rep.actions_identical, r.actions.size());
+  // The replayed state has today's words.
+  EXPECT_EQ(rep.final_state.result, played_game().actions.back().after.result);
 }
 
 TEST(RecordReplay, TamperedPositionIsNamed) {
@@ -507,6 +608,24 @@ TEST(RecordReplay, ExtraActionAfterTheEndIsRefused) {
   const ReplayReport rep = replay(r);
   EXPECT_FALSE(rep.identical);
   EXPECT_EQ(rep.action, r.actions.size() - 1);
+}
+
+TEST(RecordReplay, AForfeitEndsAGameTheRulesHadNotEnded) {
+  GameRecord r = played_game();
+  r.actions.resize(r.actions.size() / 2);
+  r.ending = forfeit_of(1);
+  const ReplayReport rep = replay(read_ok(write_record(r)));
+  EXPECT_TRUE(rep.identical) << rep.message;
+  EXPECT_NE(rep.final_state.phase, Phase::game_over);
+  // A game the rules ended cannot also end by a forfeit.
+  GameRecord over = played_game();
+  over.ending = forfeit_of(1);
+  const ReplayReport both = replay(over);
+  EXPECT_FALSE(both.identical);
+  EXPECT_EQ(both.where, "ending");
+  EXPECT_EQ(both.actions_identical, over.actions.size());
+  EXPECT_NE(both.replayed.find("the rules ended the game first"), std::string::npos)
+      << both.replayed;
 }
 
 TEST(RecordReplay, ShortenedRecordIsIdenticalButNotOver) {

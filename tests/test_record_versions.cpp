@@ -83,6 +83,18 @@ std::string as_version_2(std::string v1, const std::string& engine) {
   return v1;
 }
 
+/// A record's text with the words of its rulings and results left out
+/// (read, emptied, written again): what a later version still writes byte
+/// for byte, the words being put better since.
+std::string without_words(const std::string& text) {
+  GameRecord r = read_ok(text);
+  for (RecordedAction& a : r.actions) {
+    a.ruling.text.clear();
+    a.after.result.clear();
+  }
+  return write_record(r);
+}
+
 const char* const kV1Files[] = {"nine_ball_club_seed1_game1.json",
                                 "eight_ball_club_seed1_game1.json"};
 
@@ -118,7 +130,7 @@ TEST(RecordVersions, Version1RecordIsRewrittenAsVersion2WithTheLegacyHeader) {
 
 TEST(RecordVersions, LegacyGamesGiveTheRecordsTheyGaveBefore) {
   // The games of the version 1 files, played now with the legacy physics:
-  // the same bytes apart from the version 2 header.
+  // the same bytes apart from the version 2 header and the words.
   for (const GameType game : {GameType::nine_ball, GameType::eight_ball}) {
     MatchOptions opt;
     opt.game = game;
@@ -134,7 +146,10 @@ TEST(RecordVersions, LegacyGamesGiveTheRecordsTheyGaveBefore) {
                      [&](int, const GameRecord& r) { records.push_back(write_record(r)); });
     ASSERT_EQ(records.size(), 1u);
     const std::string name = std::string(to_string(game)) + "_club_seed1_game1.json";
-    EXPECT_EQ(records[0], as_version_2(data_file(name), std::string(kVersion))) << name;
+    EXPECT_EQ(without_words(records[0]),
+              without_words(as_version_2(data_file(name), std::string(kVersion))))
+        << name;
+    EXPECT_EQ(records[0].find("Foul ("), std::string::npos) << name;
   }
 }
 
@@ -299,8 +314,10 @@ TEST(RecordVersions, UnreplayableRecordsAreRefusedWithTheirVersion) {
        },
        "physics.cushion_model",
        {"unknown cushion model \"cushion_law_of_2099\"", "version 2 record",
-        "made by breakshot 0.3.0, a newer version", "this breakshot (" + std::string(kVersion) + ")"}},
-      {"unknown cushion model", [](ojson& j) { j["physics"]["cushion_model"] = "han_2006"; },
+        "made by breakshot 0.3.0, a newer version",
+        "this breakshot (" + std::string(kVersion) + ")"}},
+      {"unknown cushion model",
+       [](ojson& j) { j["physics"]["cushion_model"] = "han_2006"; },
        "physics.cushion_model",
        {"unknown cushion model \"han_2006\"", "made by breakshot 0.1.0", "version 2 record"}},
       {"ball-ball model of a newer engine",
@@ -315,27 +332,37 @@ TEST(RecordVersions, UnreplayableRecordsAreRefusedWithTheirVersion) {
          j["engine"]["version"] = "0.2.0";
          j["physics"]["jump"] = true;
        },
-       "physics.jump", {"unknown field", "made by breakshot 0.2.0, a newer version"}},
+       "physics.jump",
+       {"unknown field", "made by breakshot 0.2.0, a newer version"}},
       {"friction that is no curve",
        [](ojson& j) { j["physics"]["ball_ball_friction"]["b"] = 2.0; },
-       "physics.ball_ball_friction.b", {"must be in [0, 1]", "made by breakshot 0.1.0"}},
-      {"negative constant friction", [](ojson& j) { j["physics"]["ball_ball_friction"] = -0.1; },
-       "physics.ball_ball_friction", {"must be >= 0"}},
+       "physics.ball_ball_friction.b",
+       {"must be in [0, 1]", "made by breakshot 0.1.0"}},
+      {"negative constant friction",
+       [](ojson& j) { j["physics"]["ball_ball_friction"] = -0.1; },
+       "physics.ball_ball_friction",
+       {"must be >= 0"}},
       {"record version of a newer engine",
        [](ojson& j) {
-         j["version"] = 3;
+         j["version"] = 4;
          j["engine"]["version"] = "0.4.0";
        },
-       "version", {"not version 3", "made by breakshot 0.4.0", "versions 1 to 2"}},
+       "version",
+       {"not version 4", "made by breakshot 0.4.0", "versions 1 to 3"}},
       {"version 0", [](ojson& j) { j["version"] = 0; }, "version", {"not version 0"}},
-      {"version 2 without physics", [](ojson& j) { j.erase("physics"); }, "physics",
+      {"version 2 without physics",
+       [](ojson& j) { j.erase("physics"); },
+       "physics",
        {"missing required field"}},
-      {"version 2 without engine", [](ojson& j) { j.erase("engine"); }, "engine",
+      {"version 2 without engine",
+       [](ojson& j) { j.erase("engine"); },
+       "engine",
        {"missing required field"}},
-      {"empty engine", [](ojson& j) { j["engine"]["version"] = ""; }, "engine.version",
+      {"empty engine",
+       [](ojson& j) { j["engine"]["version"] = ""; },
+       "engine.version",
        {"a library version"}},
-      {"version 1 with physics", [](ojson& j) { j["version"] = 1; }, "engine",
-       {"unknown field"}},
+      {"version 1 with physics", [](ojson& j) { j["version"] = 1; }, "engine", {"unknown field"}},
   };
   for (const Case& c : cases) {
     ojson doc = good;
@@ -485,14 +512,14 @@ TEST(RecordVersions, SummaryShowsThePhysicsOnlyWhenNotTheDefault) {
 
 TEST(RecordCorpus, EverySeedRecordReplays) {
   // The fuzzer's seed records (fuzz/record_corpus) are games this engine
-  // plays: each reads and replays identical, versions 1 and 2 alike.
+  // plays: each reads and replays identical, versions 1, 2 and 3 alike.
   const std::filesystem::path folder =
       std::filesystem::path(BREAKSHOT_SOURCE_DIR) / "fuzz" / "record_corpus";
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(folder)) files.push_back(e.path());
   std::sort(files.begin(), files.end());
   ASSERT_GE(files.size(), 6u);
-  std::array<int, 3> versions{};
+  std::array<int, 4> versions{};
   for (const std::filesystem::path& file : files) {
     std::ifstream in(file, std::ios::binary);
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -507,9 +534,10 @@ TEST(RecordCorpus, EverySeedRecordReplays) {
     const ReplayReport rep = replay(r);
     EXPECT_TRUE(rep.identical) << file.filename() << ": " << rep.message;
   }
-  // Both versions' readers keep seeds of their own.
+  // Every version's reader keeps seeds of its own.
   EXPECT_GE(versions[1], 1);
   EXPECT_GE(versions[2], 1);
+  EXPECT_GE(versions[3], 1);
 }
 
 TEST(RecordVersions, AReplayThatDiffersNamesTheVersionAndTheEngine) {

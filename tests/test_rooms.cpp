@@ -275,14 +275,47 @@ TEST_F(RoomsTest, ASeatIsTakenBackWithItsTokenOnly) {
   EXPECT_EQ(j["seat"], 0);
   EXPECT_EQ(j["actions"].size(), 1u);  // the log to continue from
   EXPECT_EQ(first_of(back, 2, "seats")["connected"], json({true, true}));
-  // A rejoin while the old connection still holds the seat: the old one goes.
-  const Effects again =
-      rooms_.receive(7,
-                     R"({"type": "rejoin", "room": ")" + code + R"(", "token": ")" +
-                         created_["token"].get<std::string>() + "\"}",
-                     6);
+  // A rejoin while another connection plays the seat (a second tab with
+  // the same token) is refused, saying so; nothing changes for the seat.
+  const std::string rejoin = R"({"type": "rejoin", "room": ")" + code + R"(", "token": ")" +
+                             created_["token"].get<std::string>() + "\"";
+  const Effects second = rooms_.receive(7, rejoin + "}", 6);
+  const json busy = first_of(second, 7, "refused");
+  EXPECT_EQ(busy["seat_in_use"], true) << busy;
+  EXPECT_NE(busy["reason"].get<std::string>().find("another connection"), std::string::npos);
+  EXPECT_FALSE(closes(second, 6));
+  EXPECT_TRUE(to(second, 6).empty());
+  // The refused tab then joins: both seats are taken, so it watches.
+  const json watching =
+      first_of(rooms_.receive(7, R"({"type": "join", "room": ")" + code + "\"}", 6), 7, "joined");
+  EXPECT_TRUE(watching["seat"].is_null()) << watching;
+  // The seat's own page coming back (replace): the old connection, not yet
+  // noticed to be gone, is told it was replaced and closed.
+  const Effects again = rooms_.receive(8, rejoin + R"(, "replace": true})", 7);
   EXPECT_TRUE(closes(again, 6));
-  EXPECT_EQ(first_of(again, 7, "joined")["seat"], 0);
+  EXPECT_EQ(first_of(again, 6, "replaced")["reason"], "the seat was taken back by a rejoin");
+  EXPECT_EQ(first_of(again, 8, "joined")["seat"], 0);
+  EXPECT_TRUE(
+      first_of(rooms_.receive(9, rejoin + R"(, "replace": 1})", 8), 9, "error").is_object());
+}
+
+TEST_F(RoomsTest, ASecondTabTakesTheFreeSeat) {
+  // The creator's token is in a second tab of the same browser before
+  // anyone joined: that tab's rejoin is refused, and it takes seat 1.
+  const Effects made = rooms_.receive(1, kQuick, 0);
+  const json created = first_of(made, 1, "joined");
+  const std::string code = created["room"];
+  const Effects second =
+      rooms_.receive(2,
+                     R"({"type": "rejoin", "room": ")" + code + R"(", "token": ")" +
+                         created["token"].get<std::string>() + "\"}",
+                     1);
+  EXPECT_EQ(first_of(second, 2, "refused")["seat_in_use"], true);
+  EXPECT_TRUE(to(second, 1).empty());  // the first tab is left alone
+  const json seated =
+      first_of(rooms_.receive(2, R"({"type": "join", "room": ")" + code + "\"}", 2), 2, "joined");
+  EXPECT_EQ(seated["seat"], 1);
+  EXPECT_NE(seated["token"], created["token"]);
 }
 
 TEST_F(RoomsTest, ASeatLeftEmptyForfeitsAndEmptyRoomsExpire) {
@@ -302,6 +335,50 @@ TEST_F(RoomsTest, ASeatLeftEmptyForfeitsAndEmptyRoomsExpire) {
   rooms_.tick(740);
   EXPECT_EQ(rooms_.rooms(), 0u);
   EXPECT_EQ(rooms_.clients(), 0u);
+}
+
+TEST_F(RoomsTest, AForfeitEndsTheRecord) {
+  start_game();
+  const std::string code = created_["room"];
+  ASSERT_TRUE(first_of(rooms_.receive(1, shot(90, 0), 2), 2, "action").is_object());
+  rooms_.disconnect(1, 10);
+  EXPECT_TRUE(rooms_.tick(129).records.empty());
+  const Effects fx = rooms_.tick(130);
+  // The record is written again, with its ending: Player 1 left.
+  ASSERT_EQ(fx.records.size(), 1u);
+  EXPECT_EQ(fx.records[0].name, "test-000001-" + code + ".json");
+  EXPECT_NE(fx.records[0].text.find("\"version\": 3,"), std::string::npos);
+  const auto read = breakshot::read_record(fx.records[0].text);
+  ASSERT_TRUE(std::holds_alternative<breakshot::GameRecord>(read));
+  const auto& record = std::get<breakshot::GameRecord>(read);
+  EXPECT_EQ(record.actions.size(), 1u);
+  ASSERT_TRUE(record.ending.has_value());
+  EXPECT_EQ(record.ending->kind, breakshot::GameEnding::Kind::forfeit);
+  EXPECT_EQ(record.ending->player, 0);
+  EXPECT_EQ(record.ending->winner, 1);
+  EXPECT_EQ(record.ending->text, first_of(fx, 2, "over")["result"]);
+  const breakshot::ReplayReport rep = breakshot::replay(record);
+  EXPECT_TRUE(rep.identical) << rep.message;
+  // Once over, nothing more is written.
+  EXPECT_TRUE(rooms_.tick(200).records.empty());
+}
+
+TEST_F(RoomsTest, BothSeatsLeftEmptyAbandonTheGameInTheRecord) {
+  start_game();
+  rooms_.disconnect(1, 10);
+  rooms_.disconnect(2, 11);
+  const Effects fx = rooms_.tick(131);
+  EXPECT_EQ(first_of(fx, 1, "over"), json());  // nobody is there to be told
+  ASSERT_EQ(fx.records.size(), 1u);
+  const auto read = breakshot::read_record(fx.records[0].text);
+  ASSERT_TRUE(std::holds_alternative<breakshot::GameRecord>(read));
+  const auto& record = std::get<breakshot::GameRecord>(read);
+  EXPECT_TRUE(record.actions.empty());
+  ASSERT_TRUE(record.ending.has_value());
+  EXPECT_EQ(record.ending->kind, breakshot::GameEnding::Kind::abandoned);
+  EXPECT_EQ(record.ending->player, -1);
+  EXPECT_EQ(record.ending->winner, -1);
+  EXPECT_TRUE(breakshot::replay(record).identical);
 }
 
 TEST(StateHash, IsFnv1a64) {

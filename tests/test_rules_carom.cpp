@@ -326,7 +326,8 @@ TEST(ThreeCushion, FoulsEndTheInningWithoutAPoint) {
                                 rail(1.3, kWhite), rail(1.8, kWhite), hit(2.4, kWhite, kYellow)});
   EXPECT_EQ(push.ruling.fouls, std::vector<Foul>{Foul::push_through});
   EXPECT_FALSE(push.ruling.carom->point);
-  EXPECT_NE(push.ruling.text.find("Foul (push_through)"), std::string::npos) << push.ruling.text;
+  EXPECT_NE(push.ruling.text.find("Foul: a push-through. No point."), std::string::npos)
+      << push.ruling.text;
 }
 
 TEST(ThreeCushion, TheBreakMustTakeTheRedDirectly) {

@@ -792,8 +792,8 @@ TEST(RulesEightOffTable, AnObjectBallOffTheTableIsAFoulAndStaysOff) {
   EXPECT_EQ(o.state.ball_in_hand, BallInHand::anywhere);
   EXPECT_FALSE(o.ruling.turn_continues);
   EXPECT_EQ(o.ruling.text,
-            "Player 1 pockets nothing. The 3 leaves the table. Foul (ball_off_table): Player 2 "
-            "has the cue ball in hand.");
+            "Player 1 pockets nothing. The 3 leaves the table. Foul: a ball off the table. "
+            "Player 2 has the cue ball in hand.");
 }
 
 TEST(RulesEightOffTable, ABallOffTheTableSpoilsALegalPot) {
@@ -921,8 +921,8 @@ TEST(RulesEightOffTable, AnObjectBallOffTheTableOnALegalBreakGivesKitchenBallInH
   EXPECT_FALSE(on(o.state, 2));
   EXPECT_FALSE(on(o.state, 11));
   EXPECT_TRUE(o.ruling.spotted.empty());
-  EXPECT_EQ(o.ruling.text.find("Player 1 pockets 2. The 11 leaves the table. Foul (ball_off_table "
-                               "on the break)"),
+  EXPECT_EQ(o.ruling.text.find("Player 1 pockets 2. The 11 leaves the table. Foul on the break: "
+                               "a ball off the table."),
             0u)
       << o.ruling.text;
 }

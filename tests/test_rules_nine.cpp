@@ -587,8 +587,8 @@ TEST(RulesNineOffTable, TheNineOffTheTableIsSpotted) {
   EXPECT_EQ(o.state.player, 1);
   EXPECT_EQ(o.state.ball_in_hand, BallInHand::anywhere);
   EXPECT_EQ(o.ruling.text,
-            "Player 1 pockets nothing. The 9 leaves the table. Foul (ball_off_table): Player 2 "
-            "has the cue ball in hand; the 9 is spotted.");
+            "Player 1 pockets nothing. The 9 leaves the table. Foul: a ball off the table. "
+            "Player 2 has the cue ball in hand; the 9 is spotted.");
 }
 
 TEST(RulesNineOffTable, TheCueBallOffTheTableGivesBallInHand) {

@@ -511,7 +511,16 @@ int run_replay(const std::string& file) {
   }
   out << "replayed " << record.actions.size() << " actions: identical\n";
   const bs::GameState& end = report.final_state;
-  if (end.phase != bs::Phase::game_over) {
+  if (record.ending) {
+    // A game the rules did not end: online play's forfeit.
+    const bs::GameEnding& e = *record.ending;
+    if (e.winner < 0) {
+      out << bs::to_string(e.kind) << ": " << e.text << '\n';
+    } else {
+      out << bs::to_string(e.kind) << ": winner Player " << e.winner + 1 << " ("
+          << record.players[static_cast<std::size_t>(e.winner)] << "): " << e.text << '\n';
+    }
+  } else if (end.phase != bs::Phase::game_over) {
     out << "the game is not over (phase " << bs::to_string(end.phase) << ")\n";
   } else if (end.winner < 0) {
     out << "draw: " << end.result << '\n';

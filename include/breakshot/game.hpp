@@ -218,6 +218,9 @@ enum class Foul : std::uint8_t {
 };
 std::string_view to_string(Foul f);
 std::optional<Foul> parse_foul(std::string_view s);
+/// The foul in words, as every ruling's text says it ("the wrong ball hit
+/// first"); to_string gives its name in records and summaries.
+std::string_view foul_words(Foul f);
 
 /// Snooker's part of the state (GameState::snooker): the score and what
 /// the striker is on. The ball on follows from it and the table

@@ -42,12 +42,35 @@ struct RecordedAction {
   bool operator==(const RecordedAction& o) const;
 };
 
+/// How a game ended that the rules did not end: online play's forfeit of
+/// a player who left for good (src/web/rooms.cpp), or the game abandoned
+/// when both did. The actions stop there; the last state is not over.
+struct GameEnding {
+  enum class Kind : std::uint8_t {
+    forfeit,    ///< `player` left for good and forfeits: `winner` is the other seat
+    abandoned,  ///< both players left: no winner (player and winner -1)
+  };
+  Kind kind = Kind::forfeit;
+  int player = -1;   ///< the seat that forfeited (0 or 1); -1 when abandoned
+  int winner = -1;   ///< 1 - player for a forfeit; -1 when abandoned
+  std::string text;  ///< in words: "Player 1 left the table for 120 s and forfeits"
+  bool operator==(const GameEnding&) const = default;
+};
+std::string_view to_string(GameEnding::Kind k);
+std::optional<GameEnding::Kind> parse_ending_kind(std::string_view s);
+
 struct GameRecord {
   static constexpr std::string_view kFormat = "breakshot-game-record";
   /// Version 2 adds the engine and the
   /// physics (GameConfig::physics) to the header; version 1 records have
-  /// neither and were played with kLegacyGamePhysics.
-  static constexpr int kVersion = 2;
+  /// neither and were played with kLegacyGamePhysics. Version 3 adds the
+  /// ending (`ending`): a record is written as version 3 only when it has
+  /// one, else as version 2, so that the games the rules end keep their
+  /// bytes and a breakshot that knows no ending refuses the record by its
+  /// version.
+  static constexpr int kVersion = 3;
+  /// The version of a record without an ending.
+  static constexpr int kVersionWithoutEnding = 2;
 
   /// The version of the library that played the game (version.hpp's
   /// kVersion): this build's for a new record; "0.1.0" for a version 1
@@ -64,8 +87,12 @@ struct GameRecord {
   /// The noise each seat's shots were played with, by seat (a player's
   /// own, or the match's for a player without one).
   std::array<NoiseModel, 2> noise;
-  GameState start;  ///< the initial rack and whose break: Rules::start(start.rack_seed, start.breaker)
+  GameState
+      start;  ///< the initial rack and whose break: Rules::start(start.rack_seed, start.breaker)
   std::vector<RecordedAction> actions;
+  /// How the game ended when the rules did not end it (a forfeit); nullopt
+  /// for a game the rules ended or that is still going on.
+  std::optional<GameEnding> ending;
 
   /// Exact equality, as RecordedAction's.
   bool operator==(const GameRecord& o) const;

@@ -1,11 +1,14 @@
 // Exact equality of game records (include/breakshot/record.hpp): doubles
 // are compared by their bits, so -0 is not +0 and a NaN equals itself.
-// And three-cushion's innings of a record (carom_innings).
+// The names of a record's ending kinds, and three-cushion's innings of a
+// record (carom_innings).
+#include "breakshot/record.hpp"
+
 #include <bit>
 #include <cstdint>
+#include <optional>
+#include <string_view>
 #include <variant>
-
-#include "breakshot/record.hpp"
 
 namespace breakshot {
 
@@ -76,9 +79,19 @@ bool RecordedAction::operator==(const RecordedAction& o) const {
 }
 
 bool GameRecord::operator==(const GameRecord& o) const {
-  return identical(config, o.config) && engine == o.engine && players == o.players && seed == o.seed &&
-         identical(noise[0], o.noise[0]) && identical(noise[1], o.noise[1]) &&
-         identical(start, o.start) && actions == o.actions;
+  return identical(config, o.config) && engine == o.engine && players == o.players &&
+         seed == o.seed && identical(noise[0], o.noise[0]) && identical(noise[1], o.noise[1]) &&
+         identical(start, o.start) && actions == o.actions && ending == o.ending;
+}
+
+std::string_view to_string(GameEnding::Kind k) {
+  return k == GameEnding::Kind::forfeit ? "forfeit" : "abandoned";
+}
+
+std::optional<GameEnding::Kind> parse_ending_kind(std::string_view s) {
+  if (s == "forfeit") return GameEnding::Kind::forfeit;
+  if (s == "abandoned") return GameEnding::Kind::abandoned;
+  return std::nullopt;
 }
 
 std::vector<CaromInning> carom_innings(const GameRecord& record) {

@@ -33,11 +33,11 @@ std::string join_balls(const std::vector<int>& balls) {
   return out;
 }
 
-std::string join_fouls(const std::vector<Foul>& fouls) {
+std::string fouls_in_words(const std::vector<Foul>& fouls) {
   std::string out;
   for (std::size_t i = 0; i < fouls.size(); ++i) {
-    if (i > 0) out += ", ";
-    out += to_string(fouls[i]);
+    if (i > 0) out += i + 1 == fouls.size() ? " and " : ", ";
+    out += foul_words(fouls[i]);
   }
   return out;
 }
@@ -73,12 +73,12 @@ void rotation_foul(ShotRuling& x, int game_ball, bool spot_game_ball) {
   streak += 1;
   if (streak >= 3) {
     x.game_over(x.opp, x.who + " fouled three times in a row");
-    r.text = x.what + "Foul (" + join_fouls(r.fouls) +
-             "), the third in a row: " + player_name(x.opp) + " wins.";
+    r.text = x.what + "Foul: " + fouls_in_words(r.fouls) +
+             ". The third foul in a row: " + player_name(x.opp) + " wins.";
     return;
   }
   x.ball_in_hand_for_opponent(BallInHand::anywhere);
-  r.text = x.what + "Foul (" + join_fouls(r.fouls) + "): " + player_name(x.opp) +
+  r.text = x.what + "Foul: " + fouls_in_words(r.fouls) + ". " + player_name(x.opp) +
            " has the cue ball in hand" +
            (spot_game_ball ? "; the " + std::to_string(game_ball) + " is spotted" : "") +
            (streak == 2 ? "; " + x.who + " is on two fouls" : "") + ".";

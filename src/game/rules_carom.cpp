@@ -206,7 +206,7 @@ class ThreeCushionRuleset final : public Ruleset {
       text += balls + (x.f.off_table.size() == 1 ? " leaves" : " leave") + " the table. ";
     }
     if (!r.fouls.empty()) {
-      text += "Foul (" + join_fouls(r.fouls) + "): no point. ";
+      text += "Foul: " + fouls_in_words(r.fouls) + ". No point. ";
     } else if (c.point) {
       text += "A point. ";
     } else if (both) {

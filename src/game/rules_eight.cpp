@@ -193,12 +193,12 @@ class EightBall final : public Ruleset {
       if (fouled) {
         x.pass_turn();
         const bool only_scratch = r.fouls.size() == 1 && r.fouls.front() == Foul::scratch;
-        r.text = what +
-                 (eight_off ? "The 8 left the table on the break" : "The 8 fell on the break") +
-                 (only_scratch ? " with a scratch" : " with a foul (" + join_fouls(r.fouls) + ")") +
-                 ": " + player_name(x.opp) +
-                 " chooses to spot the 8 and shoot from the kitchen, or to "
-                 "re-rack and break.";
+        r.text =
+            what + (eight_off ? "The 8 left the table on the break" : "The 8 fell on the break") +
+            (only_scratch ? " with a scratch" : " with a foul (" + fouls_in_words(r.fouls) + ")") +
+            ": " + player_name(x.opp) +
+            " chooses to spot the 8 and shoot from the kitchen, or to "
+            "re-rack and break.";
       } else {
         r.turn_continues = true;
         r.text = what + "The 8 fell on the break: " + who +
@@ -217,7 +217,7 @@ class EightBall final : public Ruleset {
                " accepts the table or has the balls re-racked.";
     } else if (fouled) {
       x.ball_in_hand_for_opponent(BallInHand::kitchen);
-      r.text = what + "Foul (" + join_fouls(r.fouls) + " on the break): " + player_name(x.opp) +
+      r.text = what + "Foul on the break: " + fouls_in_words(r.fouls) + ". " + player_name(x.opp) +
                " has the cue ball in hand behind the head string; the table is "
                "open.";
     } else if (!x.objects.empty()) {
@@ -259,13 +259,13 @@ class EightBall final : public Ruleset {
     if (has(x.objects_off, 8)) {
       // The 8 driven off the table loses the rack (WPA 8-ball 3.8).
       x.game_over(opp, who + " drove the 8 off the table");
-      r.text = what + "Foul (" + join_fouls(fouls) + "). " + s.result + ": " +
+      r.text = what + "Foul: " + fouls_in_words(fouls) + ". " + s.result + ": " +
                player_name(s.winner) + " wins.";
     } else if (eight_in) {
       const bool called_eight = shot.call && shot.call->ball == 8;
       const bool right_pocket = called_eight && x.pocket_of(8) == shot.call->pocket;
       if (!fouls.empty()) {
-        x.game_over(opp, who + " pocketed the 8 on a foul (" + join_fouls(fouls) + ")");
+        x.game_over(opp, who + " pocketed the 8 on a foul (" + fouls_in_words(fouls) + ")");
       } else if (!was_on_eight) {
         x.game_over(opp, who + " pocketed the 8 before clearing the group");
       } else if (!called_eight) {
@@ -277,11 +277,11 @@ class EightBall final : public Ruleset {
       } else {
         x.game_over(shooter, who + " pocketed the 8 in the called pocket");
       }
-      r.text = what + (fouls.empty() ? "" : "Foul (" + join_fouls(fouls) + "). ") + s.result +
-               ": " + player_name(s.winner) + " wins.";
+      // On a foul the result names it.
+      r.text = what + s.result + ": " + player_name(s.winner) + " wins.";
     } else if (!fouls.empty()) {
       x.ball_in_hand_for_opponent(BallInHand::anywhere);
-      r.text = what + "Foul (" + join_fouls(fouls) + "): " + player_name(opp) +
+      r.text = what + "Foul: " + fouls_in_words(fouls) + ". " + player_name(opp) +
                " has the cue ball in hand.";
     } else {
       // Did the shot count? A called ball in its called pocket; an

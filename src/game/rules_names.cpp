@@ -1,4 +1,5 @@
-// Names of the game enums, as used in records and rulings.
+// Names of the game enums, as used in records, and the fouls in words, as
+// rulings say them.
 #include <array>
 #include <string>
 #include <string_view>
@@ -51,6 +52,38 @@ std::optional<BallInHand> parse_ball_in_hand(std::string_view s) {
 std::string_view to_string(Choice c) { return kChoiceNames[static_cast<std::size_t>(c)]; }
 std::optional<Choice> parse_choice(std::string_view s) { return parse<Choice>(s, kChoiceNames); }
 std::string_view to_string(Foul f) { return kFoulNames[static_cast<std::size_t>(f)]; }
+
+std::string_view foul_words(Foul f) {
+  // The one place a foul is put in words: every ruling's text takes its
+  // fouls from here (rules.cpp's fouls_in_words).
+  switch (f) {
+    case Foul::scratch:
+      return "a scratch";
+    case Foul::no_contact:
+      return "no ball hit";
+    case Foul::wrong_ball_first:
+      return "the wrong ball hit first";
+    case Foul::no_rail:
+      return "no ball to a cushion after the contact";
+    case Foul::illegal_break:
+      return "an illegal break";
+    case Foul::behind_head_string:
+      return "a ball behind the head string hit first from the kitchen";
+    case Foul::ball_off_table:
+      return "a ball off the table";
+    case Foul::in_off:
+      return "an in-off";
+    case Foul::wrong_ball_potted:
+      return "a ball not on potted";
+    case Foul::free_ball_snooker:
+      return "a snooker behind the free ball";
+    case Foul::wrong_cue_ball:
+      return "the wrong cue ball played";
+    case Foul::push_through:
+      return "a push-through";
+  }
+  return "a foul";
+}
 std::optional<Foul> parse_foul(std::string_view s) { return parse<Foul>(s, kFoulNames); }
 
 }  // namespace breakshot

@@ -558,9 +558,9 @@ class Snooker final : public Ruleset {
       k.score[opp] += penalty;
       k.break_points = 0;
       k.colour_on = false;
-      const std::string foul_text = "Foul (" + join_fouls(r.fouls) + ")" +
-                                    (sr.miss ? " and a miss" : "") + ": " + points_text(penalty) +
-                                    " to " + player_name(x.opp) + ". ";
+      const std::string foul_text = std::string(sr.miss ? "Foul and a miss: " : "Foul: ") +
+                                    fouls_in_words(r.fouls) + ". " + points_text(penalty) + " to " +
+                                    player_name(x.opp) + ". ";
       if (last_black) {
         // The first score or foul on the last black ends the frame (3.3(j)).
         r.snooker = sr;

@@ -24,7 +24,8 @@ namespace breakshot::detail {
 bool has(const std::vector<int>& v, int x);
 std::string player_name(int p);
 std::string join_balls(const std::vector<int>& balls);
-std::string join_fouls(const std::vector<Foul>& fouls);
+/// The fouls in words (foul_words), joined: "a scratch and no ball hit".
+std::string fouls_in_words(const std::vector<Foul>& fouls);
 
 /// A decision being ruled: the state before it, the state and ruling
 /// being built, and the moves the games' decisions share.

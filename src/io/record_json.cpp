@@ -1,7 +1,7 @@
 // Game records (include/breakshot/record.hpp): writing, reading and
 // replaying them.
 //
-// The file, version 2:
+// The file, version 2 (3 with an ending):
 //
 //   {
 //     "format": "breakshot-game-record",
@@ -20,7 +20,8 @@
 //     "actions": [
 //       {"player", "action", "intended", "noise_seed", "ruling", "after": STATE},
 //       ...one action per line
-//     ]
+//     ],
+//     version 3 only: "ending": ENDING
 //   }
 //
 //   "engine" is the library version that played the game (version.hpp)
@@ -37,6 +38,15 @@
 //   version and engine too, and "another engine" when that is not this
 //   build.
 //
+//   A record with an ending (GameRecord::ending: a game online play ended
+//   by a forfeit, which the rules did not end) is version 3, and version 3
+//   requires it; every other record is written as version 2, its bytes
+//   unchanged. Versions 1 and 2 have no ending.
+//
+//   ENDING  {"kind": "forfeit" | "abandoned", "player", "winner", "text"}:
+//           a forfeit names the seat that left for good ("player", 0 or 1)
+//           and the other ("winner"); an abandoned game (both left) has
+//           player and winner -1; "text" says it in words
 //   NOISE   {"phi", "theta", "speed", "a", "b"}: the noise model of a seat's
 //           shots (seat order, as "players"), in noise.hpp's units
 //   STATE   {"game", "phase", "player", "breaker", "ball_in_hand", "kitchen_shot", "group": [2],
@@ -82,7 +92,9 @@
 //
 // replay() lives here too: it names what differs by its path in this
 // format, found by comparing the JSON of the recorded and the replayed
-// values.
+// values. It compares rulings and states, not their words (a ruling's
+// "text", a state's "result"): those read better from one version to the
+// next, and records written before still replay.
 
 #include <algorithm>
 #include <bit>
@@ -139,6 +151,15 @@ ojson recorded_action_json(const RecordedAction& ra) {
   return j;
 }
 
+ojson record_ending_json(const GameEnding& e) {
+  ojson j = ojson::object();
+  j["kind"] = std::string(to_string(e.kind));
+  j["player"] = e.player;
+  j["winner"] = e.winner;
+  j["text"] = e.text;
+  return j;
+}
+
 /// Path of the first infinity or NaN in `j`: JSON has no such numbers
 /// (nlohmann would write null, which reads back as a type error).
 std::optional<std::string> non_finite(const ojson& j, const std::string& path) {
@@ -169,6 +190,32 @@ std::string dump_compact(const ojson& j) {
 
 // ---------------------------------------------------------------------------
 // Reading
+
+struct EndingProblem {
+  std::string_view field;
+  std::string reason;
+};
+
+/// What is wrong with an ending whose fields each have a valid value, if
+/// anything: the seats and the winner must agree with its kind.
+std::optional<EndingProblem> ending_problem(const GameEnding& e) {
+  if (e.kind == GameEnding::Kind::forfeit) {
+    if (e.player != 0 && e.player != 1) {
+      return EndingProblem{
+          "player", "a forfeit names the seat that left (0 or 1), not " + std::to_string(e.player)};
+    }
+    if (e.winner != 1 - e.player) {
+      return EndingProblem{"winner", "the winner of a forfeit is the other seat (" +
+                                         std::to_string(1 - e.player) + "), not " +
+                                         std::to_string(e.winner)};
+    }
+  } else {
+    if (e.player != -1) return EndingProblem{"player", "an abandoned game names no seat (-1)"};
+    if (e.winner != -1) return EndingProblem{"winner", "an abandoned game has no winner (-1)"};
+  }
+  if (e.text.empty()) return EndingProblem{"text", "expected the ending in words, not \"\""};
+  return std::nullopt;
+}
 
 /// The library version that wrote every version 1 record.
 constexpr std::string_view kVersion1Engine = "0.1.0";
@@ -212,6 +259,7 @@ class RecordReader : public json_io::GameReader {
 
  private:
   bool recorded_action(const json& v, const std::string& path, RecordedAction& ra);
+  bool ending(const json& v, const std::string& path, GameEnding& e);
 };
 
 bool RecordReader::read(const json& doc, GameRecord& r) {
@@ -254,9 +302,14 @@ bool RecordReader::read(const json& doc, GameRecord& r) {
     if (!config(doc["config"], "config", r.config)) return false;
     r.config.physics = kLegacyGamePhysics;
   } else {
-    if (!exact_object(doc, "",
-                      {"format", "version", "engine", "config", "physics", "players", "seed",
-                       "noise", "start", "actions"})) {
+    if (version == 2 && !exact_object(doc, "",
+                                      {"format", "version", "engine", "config", "physics",
+                                       "players", "seed", "noise", "start", "actions"})) {
+      return false;
+    }
+    if (version == 3 && !exact_object(doc, "",
+                                      {"format", "version", "engine", "config", "physics",
+                                       "players", "seed", "noise", "start", "actions", "ending"})) {
       return false;
     }
     const json& engine = doc["engine"];
@@ -295,6 +348,28 @@ bool RecordReader::read(const json& doc, GameRecord& r) {
   for (std::size_t i = 0; i < actions.size(); ++i) {
     if (!recorded_action(actions[i], index_path("actions", i), r.actions[i])) return false;
   }
+  if (version >= 3) {
+    GameEnding e;
+    if (!ending(doc["ending"], "ending", e)) return false;
+    r.ending = std::move(e);
+  }
+  return true;
+}
+
+bool RecordReader::ending(const json& v, const std::string& path, GameEnding& e) {
+  if (!exact_object(v, path, {"kind", "player", "winner", "text"})) return false;
+  const auto at = [&](std::string_view key) { return member_path(path, key); };
+  std::string kind;
+  if (!text(v["kind"], at("kind"), kind)) return false;
+  const std::optional<GameEnding::Kind> k = parse_ending_kind(kind);
+  if (!k) return fail(at("kind"), "expected \"forfeit\" or \"abandoned\", not \"" + kind + "\"");
+  e.kind = *k;
+  if (!integer(v["player"], at("player"), -1, 1, e.player) ||
+      !integer(v["winner"], at("winner"), -1, 1, e.winner) ||
+      !text(v["text"], at("text"), e.text)) {
+    return false;
+  }
+  if (auto bad = ending_problem(e)) return fail(at(bad->field), bad->reason);
   return true;
 }
 
@@ -379,6 +454,18 @@ Difference difference(const ojson& recorded, const ojson& replayed, const std::s
   return Difference{path, shorten(recorded.dump()), "(differs in a way JSON does not show)"};
 }
 
+/// A ruling and a state as replay compares them: without their words
+/// (Ruling::text, GameState::result), which may be put better from one
+/// version to the next; records written before keep replaying.
+Ruling without_words(Ruling r) {
+  r.text.clear();
+  return r;
+}
+GameState without_words(GameState s) {
+  s.result.clear();
+  return s;
+}
+
 std::string_view action_name(const Action& a) {
   if (std::holds_alternative<PlaceCueBall>(a)) return "place_cue_ball";
   if (std::holds_alternative<Shoot>(a)) return "shoot";
@@ -422,7 +509,7 @@ std::string write_record(const GameRecord& record) {
   };
   const Part head[] = {
       {"format", GameRecord::kFormat},
-      {"version", GameRecord::kVersion},
+      {"version", record.ending ? GameRecord::kVersion : GameRecord::kVersionWithoutEnding},
       {"engine", ojson::object({{"version", record.engine}})},
       {"config", config_json(record.config)},
       {"physics", physics_json(record.config.physics)},
@@ -451,7 +538,16 @@ std::string write_record(const GameRecord& record) {
     out += i == 0 ? "\n    " : ",\n    ";
     out += dump_compact(a);
   }
-  out += record.actions.empty() ? "]\n}\n" : "\n  ]\n}\n";
+  out += record.actions.empty() ? "]" : "\n  ]";
+  if (record.ending) {
+    const GameEnding& e = *record.ending;
+    if (auto bad = ending_problem(e)) {
+      throw std::invalid_argument("record: ending." + std::string(bad->field) + ": " + bad->reason);
+    }
+    out += ",\n  \"ending\": ";
+    out += dump_compact(record_ending_json(e));
+  }
+  out += "\n}\n";
   return out;
 }
 
@@ -570,21 +666,33 @@ ReplayReport replay(const GameRecord& record) {
                         context, record);
       return rep;
     }
-    if (!(out.ruling == ra.ruling)) {
-      report_difference(
-          rep,
-          difference(ruling_json(ra.ruling), ruling_json(out.ruling), member_path(path, "ruling")),
-          context, record);
+    const Ruling ruled = without_words(out.ruling);
+    const Ruling recorded_ruling = without_words(ra.ruling);
+    if (!(ruled == recorded_ruling)) {
+      report_difference(rep, difference(ruling_json(recorded_ruling), ruling_json(ruled),
+                                        member_path(path, "ruling")),
+                        context, record);
       return rep;
     }
-    if (!identical(out.state, ra.after)) {
-      report_difference(
-          rep, difference(state_json(ra.after), state_json(out.state), member_path(path, "after")),
-          context, record);
+    const GameState after = without_words(out.state);
+    const GameState recorded_after = without_words(ra.after);
+    if (!identical(after, recorded_after)) {
+      report_difference(rep, difference(state_json(recorded_after), state_json(after),
+                                        member_path(path, "after")),
+                        context, record);
       return rep;
     }
     rep.final_state = session->state();
     rep.actions_identical = i + 1;
+  }
+  if (record.ending && rep.final_state.phase == Phase::game_over) {
+    // A forfeit ends a game the rules had not ended.
+    rep.action.reset();
+    report_difference(rep,
+                      {"ending", shorten(record_ending_json(*record.ending).dump()),
+                       "(the rules ended the game first: " + rep.final_state.result + ")"},
+                      "the ending differs", record);
+    return rep;
   }
   rep.action.reset();
   rep.identical = true;

@@ -18,7 +18,10 @@
 #include <optional>
 #include <set>
 #include <utility>
+#include <variant>
 
+#include "breakshot/record.hpp"
+#include "breakshot/record_io.hpp"
 #include "web_api.hpp"
 
 namespace breakshot::online {
@@ -46,6 +49,9 @@ constexpr std::size_t kTokenLength = 32;
 // A well-formed message the rules or the rooms refuse: answered, not closed.
 struct Refused {
   std::string reason;
+  /// A rejoin of a seat another connection plays: the reply says so
+  /// ("seat_in_use": true), and the page takes the free seat or watches.
+  bool seat_in_use = false;
 };
 // A malformed message: answered with the reason, then the connection closes.
 struct Malformed {
@@ -149,12 +155,27 @@ struct Rooms::Impl {
   static json over_json(const Room& r) {
     return {{"type", "over"}, {"winner", r.winner}, {"result", r.result}, {"forfeit", r.forfeit}};
   }
-  void record(Effects& fx, const Room& r) const {
+  /// The room's record, written again whole (the same file each time):
+  /// after every action, and with its ending when a forfeit ends the game.
+  void record(Effects& fx, const Room& r, const std::optional<GameEnding>& ending = {}) const {
     char serial_text[32];
     std::snprintf(serial_text, sizeof serial_text, "%06llu",
                   static_cast<unsigned long long>(r.serial));
-    fx.records.push_back({limits.record_prefix + "-" + serial_text + "-" + r.code + ".json",
-                          std::string(bs_game_record(r.game.get()))});
+    std::string text = bs_game_record(r.game.get());
+    if (ending) {
+      auto parsed = read_record(text);
+      if (const auto* err = std::get_if<RecordError>(&parsed)) {
+        // The facade wrote it: not expected. Keep the record as it is.
+        std::fprintf(stderr, "breakshot serve: the record of room %s does not read back (%s: %s)\n",
+                     r.code.c_str(), err->path.c_str(), err->reason.c_str());
+      } else {
+        GameRecord& rec = std::get<GameRecord>(parsed);
+        rec.ending = ending;
+        text = write_record(rec);
+      }
+    }
+    fx.records.push_back(
+        {limits.record_prefix + "-" + serial_text + "-" + r.code + ".json", std::move(text)});
   }
 
   // --- codes and tokens ---------------------------------------------------
@@ -271,7 +292,12 @@ struct Rooms::Impl {
   }
 
   void rejoin(Effects& fx, ClientId c, const json& msg) {
-    only_keys(msg, {"type", "room", "token"});
+    only_keys(msg, {"type", "room", "token", "replace"});
+    bool replace = false;
+    if (const auto it = msg.find("replace"); it != msg.end()) {
+      if (!it->is_boolean()) throw Malformed{"field 'replace' must be true or false"};
+      replace = it->get<bool>();
+    }
     Room& r = room_named(msg);
     const std::string& token = string_field(msg, "token");
     int seat = -1;
@@ -287,8 +313,17 @@ struct Rooms::Impl {
     if (seat < 0) throw Refused{"that token holds no seat of room " + r.code};
     Seat& s = r.seats[static_cast<std::size_t>(seat)];
     if (s.client != 0) {
-      // The seat's old connection (a closed tab not yet noticed) gives way.
-      send(fx, s.client, {{"type", "error"}, {"reason", "the seat was taken back by a rejoin"}});
+      // Another connection plays the seat: a second tab of the same
+      // browser, which has the token too, is refused (it takes the free
+      // seat or watches); the seat's own page coming back after its
+      // connection broke (replace) takes it, and the old connection, not
+      // yet noticed to be gone, is told so and closed.
+      if (!replace) {
+        throw Refused{"seat " + std::to_string(seat) + " of room " + r.code +
+                          " is played by another connection",
+                      true};
+      }
+      send(fx, s.client, {{"type", "replaced"}, {"reason", "the seat was taken back by a rejoin"}});
       fx.close.push_back(s.client);
       members.erase(s.client);
     }
@@ -388,7 +423,9 @@ struct Rooms::Impl {
         throw Malformed{"unknown message type '" + type + "'"};
       }
     } catch (const Refused& e) {
-      send(fx, c, {{"type", "refused"}, {"reason", e.reason}});
+      json reply = {{"type", "refused"}, {"reason", e.reason}};
+      if (e.seat_in_use) reply["seat_in_use"] = true;
+      send(fx, c, reply);
     } catch (const Malformed& e) {
       send(fx, c, {{"type", "error"}, {"reason", e.reason}});
       fx.close.push_back(c);
@@ -409,16 +446,23 @@ struct Rooms::Impl {
         if (gone[0] || gone[1]) {
           r.over = true;
           r.forfeit = true;
+          GameEnding ending;
           if (gone[0] && gone[1]) {
             r.winner = -1;
             r.result = "both players left the table: the game is abandoned";
+            ending.kind = GameEnding::Kind::abandoned;
           } else {
             const int left = gone[0] ? 0 : 1;
             r.winner = 1 - left;
             r.result = "Player " + std::to_string(left + 1) + " left the table for " +
                        std::to_string(static_cast<long>(limits.seat_timeout)) + " s and forfeits";
+            ending.kind = GameEnding::Kind::forfeit;
+            ending.player = left;
           }
+          ending.winner = r.winner;
+          ending.text = r.result;
           broadcast(fx, r, over_json(r));
+          record(fx, r, ending);
         }
       }
       const bool waiting = !r.started() || r.over;

@@ -1,6 +1,6 @@
 // The ruling log under the table: one line per action, in the words of
-// game-words.js's logLine (the engine's ruling, its fouls, the winner,
-// whose turn it is next), a shot's line with its replay and link buttons.
+// game-words.js's logLine (the engine's ruling, the winner, whose turn
+// it is next where the engine gave no words), a shot's line with its replay and link buttons.
 // Functions of the GameUI (game.js).
 
 import { $ } from './game-dom.js';
@@ -44,8 +44,8 @@ function logItem(ui, e) {
   }
   const line = logLine(e, ui.flow.players);
   li.appendChild(span('who', line.who));
-  li.appendChild(document.createTextNode(`${line.text} `));
-  if (line.fouls) li.appendChild(span('foul', `${line.fouls} `));
+  // The ruling's words name its fouls; a foul's are shown in the foul colour.
+  li.appendChild(line.foul ? span('foul', `${line.text} `) : document.createTextNode(`${line.text} `));
   if (line.win) li.appendChild(span('win', `${line.win} `));
   if (line.next) li.appendChild(span('meta', line.next));
   return li;

@@ -1,7 +1,7 @@
-// The game tab's words: the pockets, the fouls, the decisions on offer
-// and their buttons, the seats' names, and the log's sentence for each
-// action (the engine's ruling, its fouls, the winner, and whose turn it
-// is next as the facade says it). Words only, no DOM: node imports it
+// The game tab's words: the pockets, the decisions on offer and their
+// buttons, the seats' names, and the log's sentence for each action (the
+// engine's ruling, which names its fouls and whose turn it is, the
+// winner, and the facade's turn where the engine has no words). Words only, no DOM: node imports it
 // for the page's unit tests.
 
 export const POCKET_WORDS = {
@@ -11,21 +11,6 @@ export const POCKET_WORDS = {
   top_right: 'top-right corner',
   side_top: 'top side',
   top_left: 'top-left corner',
-};
-
-export const FOUL_WORDS = {
-  scratch: 'scratch (the cue ball fell)',
-  no_contact: 'no ball hit',
-  wrong_ball_first: 'wrong ball hit first',
-  no_rail: 'no rail after contact',
-  illegal_break: 'illegal break',
-  behind_head_string: 'first ball hit was behind the head string',
-  ball_off_table: 'a ball left the table',
-  in_off: 'in-off (the cue ball fell)',
-  wrong_ball_potted: 'a ball not on was potted',
-  free_ball_snooker: 'the free ball snookered the opponent',
-  wrong_cue_ball: 'the wrong cue ball was struck',
-  push_through: 'pushed through (the tip still on the ball)',
 };
 
 export const CHOICE_WORDS = {
@@ -116,9 +101,11 @@ export function turnSentence(turn) {
 
 /**
  * The log's line for an action (entry: {index, player, kind, ruling,
- * action, turn}) as parts: who acted, the ruling's words, its fouls, the
- * winner, and whose turn it is next (shots only; none when the game
- * ended). Each part is '' when absent.
+ * action, turn}) as parts: who acted, the ruling's words (which name its
+ * fouls and whose turn it is), whether it is a foul (the line's colour),
+ * the winner, and whose turn it is next from the facade where the engine
+ * gave no words (shots only; none when the game ended). Each text part is
+ * '' when absent.
  */
 export function logLine(entry, players) {
   const p = players[entry.player];
@@ -126,9 +113,9 @@ export function logLine(entry, players) {
   const r = entry.ruling || {};
   let text = r.text || (entry.kind === 'place' ? 'places the cue ball' : entry.kind === 'decide' ? 'decides' : 'shoots');
   if (entry.kind === 'decide' && entry.action && entry.action.choice && !r.text) text = `chooses: ${entry.action.choice.replace(/_/g, ' ')}`;
-  const fouls = r.fouls && r.fouls.length ? `Foul: ${r.fouls.map((x) => FOUL_WORDS[x] || x).join(', ')}.` : '';
+  const foul = !!(r.fouls && r.fouls.length);
   const won = r.winner != null && r.winner >= 0;
   const win = won ? `${shortName(players, r.winner)} wins.` : '';
-  const next = !won && entry.kind === 'shoot' ? turnSentence(entry.turn) : '';
-  return { who, text: capital(text), fouls, win, next };
+  const next = !won && entry.kind === 'shoot' && !r.text ? turnSentence(entry.turn) : '';
+  return { who, text: capital(text), foul, win, next };
 }

@@ -6,9 +6,14 @@
 // server plays them with the same rules and sends every action of the
 // room, with the hash of the state after it, to both players and the
 // watchers. The page compares that hash with its own and shows a
-// difference. The room code is in the link (#room=CODE); the seat's
-// token is kept in localStorage, so a closed tab that is opened again
-// takes its seat back and catches up from the game's log.
+// difference. The room code is in the link (#room=CODE). A seat's token
+// is kept twice: in sessionStorage, the tab's own (a reload or a broken
+// connection takes the seat back, replacing a connection the server has
+// not yet seen go), and in localStorage, the browser's tokens of the room
+// (a closed tab opened again takes its seat back). A tab without a token
+// of its own tries the browser's without replacing anyone: a seat another
+// tab plays is refused ("seat_in_use"), and the tab takes the free seat,
+// or watches.
 
 const TOKEN_KEY = 'breakshot.online.';
 
@@ -45,6 +50,9 @@ export class Online {
     this.retry = null;
     this.presence = null;
     this.over = null;
+    this.trying = null;     // the token of the rejoin awaiting its answer
+    this.candidates = [];   // the browser's tokens of the room not tried yet
+    this.displaced = false;
     this.pump = setInterval(() => this.playQueued(), 50);
   }
 
@@ -68,13 +76,59 @@ export class Online {
   }
 
   hello() {
-    const token = this.token(this.room);
+    const own = this.ownToken(this.room);
+    if (own) {
+      this.trying = own;
+      this.candidates = [];
+      this.send({ type: 'rejoin', room: this.room, token: own, replace: true });
+      return;
+    }
+    this.candidates = this.browserTokens(this.room);
+    this.tryNext();
+  }
+
+  /** Rejoins with the browser's next token of the room, without taking a
+   *  seat from another tab; when none is left, joins (the free seat, or
+   *  watching). */
+  tryNext() {
+    const token = this.candidates.shift();
+    this.trying = token || null;
     if (token) this.send({ type: 'rejoin', room: this.room, token });
     else this.send({ type: 'join', room: this.room });
   }
 
-  token(code) {
-    try { return localStorage.getItem(TOKEN_KEY + code); } catch (e) { return null; }
+  /** This tab's token of room `code` (sessionStorage), or null. */
+  ownToken(code) {
+    try { return sessionStorage.getItem(TOKEN_KEY + code); } catch (e) { return null; }
+  }
+
+  /** The browser's tokens of room `code` (localStorage: a list, or one
+   *  token as older pages kept it). */
+  browserTokens(code) {
+    let v = null;
+    try { v = localStorage.getItem(TOKEN_KEY + code); } catch (e) { return []; }
+    if (!v) return [];
+    try {
+      const list = JSON.parse(v);
+      if (Array.isArray(list)) return list.filter((t) => typeof t === 'string');
+    } catch (e) { /* an older page's single token */ }
+    return [v];
+  }
+
+  keepToken(code, token) {
+    try { sessionStorage.setItem(TOKEN_KEY + code, token); } catch (e) { /* private mode */ }
+    const list = this.browserTokens(code).filter((t) => t !== token);
+    list.push(token);
+    try { localStorage.setItem(TOKEN_KEY + code, JSON.stringify(list.slice(-2))); } catch (e) { /* private mode */ }
+  }
+
+  forgetToken(code, token) {
+    try { if (sessionStorage.getItem(TOKEN_KEY + code) === token) sessionStorage.removeItem(TOKEN_KEY + code); } catch (e) { /* ignore */ }
+    const list = this.browserTokens(code).filter((t) => t !== token);
+    try {
+      if (list.length) localStorage.setItem(TOKEN_KEY + code, JSON.stringify(list));
+      else localStorage.removeItem(TOKEN_KEY + code);
+    } catch (e) { /* ignore */ }
   }
 
   open(first) {
@@ -89,7 +143,8 @@ export class Online {
     }
     this.ws = ws;
     ws.addEventListener('open', () => { this.connected = true; first(); });
-    ws.addEventListener('message', (ev) => this.receive(ev.data));
+    // a socket this page has left behind (resync) speaks no more for it
+    ws.addEventListener('message', (ev) => { if (this.ws === ws) this.receive(ev.data); });
     ws.addEventListener('close', () => {
       this.connected = false;
       if (this.ws !== ws || this.closedByUs) return;
@@ -138,20 +193,38 @@ export class Online {
     else if (m.type === 'action') { this.inbox.push(m); this.playQueued(); }
     else if (m.type === 'seats') { this.presence = m; this.show(); this.ui.updatePanel(); }
     else if (m.type === 'over') { this.over = m; this.show(); this.ui.updatePanel(); }
-    else if (m.type === 'refused') this.refused(m.reason);
+    else if (m.type === 'refused') this.refused(m.reason, m);
+    else if (m.type === 'replaced') this.replaced();
     else if (m.type === 'error') this.status(`The server: ${m.reason}`);
   }
 
-  refused(reason) {
-    if (/token holds no seat/.test(reason) && this.room) {
-      // a token of an older room of the same code: join afresh
-      try { localStorage.removeItem(TOKEN_KEY + this.room); } catch (e) { /* ignore */ }
-      this.send({ type: 'join', room: this.room });
+  refused(reason, m = {}) {
+    if (m.seat_in_use && this.room && this.trying) {
+      // another tab of this browser plays that seat: try the next token,
+      // then the free seat, then watch
+      this.tryNext();
+      return;
+    }
+    if (/token holds no seat/.test(reason) && this.room && this.trying) {
+      // a token of an older room of the same code: forget it
+      this.forgetToken(this.room, this.trying);
+      this.tryNext();
       return;
     }
     this.ui.showError(`The server refused: ${reason}`);
     // the page played its action already: go back to the server's game
     if (this.unconfirmed > 0) this.resync();
+  }
+
+  /** The seat was taken by another page with its token (this tab's
+   *  duplicate, say): this page stops, without reconnecting, so that the
+   *  two never take it from each other in turn. */
+  replaced() {
+    this.closedByUs = true;
+    clearTimeout(this.retry);
+    this.seat = null;
+    this.displaced = true;
+    this.status(`Room ${this.room}: this seat is now played in another tab or window; reload this page to take it back.`);
   }
 
   /** Takes the game from the server again: a new connection, which
@@ -167,9 +240,9 @@ export class Online {
   joined(m) {
     this.room = m.room;
     this.seat = m.seat === null || m.seat === undefined ? null : m.seat;
-    if (m.token) {
-      try { localStorage.setItem(TOKEN_KEY + m.room, m.token); } catch (e) { /* private mode */ }
-    }
+    this.trying = null;
+    this.candidates = [];
+    if (m.token) this.keepToken(m.room, m.token);
     let g;
     try {
       g = this.E.newGame(m.config);
@@ -238,6 +311,7 @@ export class Online {
   }
 
   show() {
+    if (this.displaced) return;  // replaced() said why this page stopped
     const who = this.seat === null ? 'You are watching' : `You are Player ${this.seat + 1}`;
     let friend = '';
     if (this.presence) {

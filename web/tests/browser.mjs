@@ -501,6 +501,13 @@ test('a scripted scratch shows the foul and ball in hand', async ({ browser, url
   const status = (await page.textContent('#status')) + (await page.textContent('#ruling-log'));
   check(/scratch/i.test(status), 'the page does not say scratch: ' + status);
   check(/ball in hand/i.test(status), 'the page does not say ball in hand: ' + status);
+  // The log says the ruling once, in words: no foul's identifier, no
+  // second "Foul: ..." after the ruling's own.
+  const entries = await page.$$eval('#ruling-log li', (li) => li.map((x) => x.textContent));
+  const scratch = entries.find((t) => /scratch/i.test(t)) || '';
+  check(/Foul: a scratch\b/.test(scratch), 'the log entry of the scratch is: ' + scratch);
+  check((scratch.match(/Foul/g) || []).length === 1, 'the log says the foul more than once: ' + scratch);
+  check(!entries.some((t) => t.includes('_')), 'the log shows an identifier: ' + entries.join(' | '));
   await page.screenshot({ path: path.join(shots, 'game-scratch.png') });
   check(problems.length === 0, problems.join('\n'));
   await context.close();
@@ -629,6 +636,58 @@ test('online: two pages play each other through the server; one closes and comes
   check(two.problems.length === 0, two.problems.join('\n'));
   await one.context.close();
   await two.context.close();
+});
+
+// The room link opened in more tabs of the same browser (one context, so
+// one localStorage): the second tab takes the free seat, the third watches,
+// and the first keeps its seat; none loops on a lost connection. A reload
+// keeps the tab's seat (its token in sessionStorage).
+test('online: tabs of one browser take the free seat, then watch', async ({ browser, url }) => {
+  const one = await openPage(browser, url);
+  await idle(one.page);
+  await one.page.click('#new-game');
+  await one.page.selectOption('#game-type', 'three_cushion');
+  await one.page.click('#online-create');
+  await one.page.waitForFunction(() => /#room=/.test(document.getElementById('online-link').value), null, { timeout: 20000 });
+  const link = await one.page.inputValue('#online-link');
+  const tab = async () => {
+    const p = await one.context.newPage();
+    p.on('pageerror', (e) => one.problems.push('page error: ' + e.message));
+    await p.goto(link);
+    await p.waitForFunction(() => window.breakshot && window.breakshot.online && window.breakshot.online()
+      && window.breakshot.online().room && window.breakshot.state(), null, { timeout: 30000 });
+    return p;
+  };
+  const status = (p) => p.textContent('#online-status');
+  const seatOf = (p) => p.evaluate(() => window.breakshot.online().seat);
+  const second = await tab();
+  await second.waitForFunction(() => /You are Player 2/.test(document.getElementById('online-status').textContent), null, { timeout: 20000 });
+  await one.page.waitForFunction(() => /your friend is here/.test(document.getElementById('online-status').textContent), null, { timeout: 20000 });
+  const third = await tab();
+  await third.waitForFunction(() => /You are watching/.test(document.getElementById('online-status').textContent), null, { timeout: 20000 });
+  // A while later, nobody has lost a seat or a connection.
+  await one.page.waitForTimeout(3000);
+  for (const [p, seat] of [[one.page, 0], [second, 1], [third, null]]) {
+    check(await seatOf(p) === seat, `a tab holds seat ${await seatOf(p)}, not ${seat}: ${await status(p)}`);
+    check(!/lost|reconnecting|another tab/.test(await status(p)), 'a tab says: ' + await status(p));
+    check(await p.evaluate(() => window.breakshot.online().connected), 'a tab is not connected: ' + await status(p));
+  }
+  // The two seats play each other.
+  const shot = { type: 'shoot', strike: { speed: 3, phi: 90, theta: 0, a: 0, b: 0 }, call: null, safety: false, push_out: false };
+  const r = await one.page.evaluate((a) => window.breakshot.act(a), shot);
+  check(!r.error, 'the shot was refused: ' + r.error);
+  for (const p of [second, third]) {
+    await p.waitForFunction(() => window.breakshot.state().actions === 1 && !window.breakshot.busy(), null, { timeout: 60000 });
+  }
+  // A reload keeps the tab's seat.
+  await second.reload();
+  await second.waitForFunction(() => window.breakshot && window.breakshot.online && window.breakshot.online()
+    && window.breakshot.online().seat === 1 && window.breakshot.state().actions === 1, null, { timeout: 30000 });
+  await one.page.waitForTimeout(1000);
+  check(await seatOf(one.page) === 0, 'the first tab lost its seat: ' + await status(one.page));
+  check(!/lost|reconnecting/.test(await status(one.page)), 'the first tab says: ' + await status(one.page));
+  check(one.problems.length === 0, one.problems.join('\n'));
+  await one.context.close();
 });
 
 // --- run ----------------------------------------------------------------

@@ -1,6 +1,7 @@
 // game-words.js: the page's words for every ruling kind of every game
-// (the log's line: the engine's text, the fouls, the winner, whose turn
-// it is next), every foul, choice and phase the engine names, and the
+// (the log's line: the engine's text, which names the fouls and whose
+// turn it is, the foul colour, the winner, the facade's turn where the
+// engine said nothing), every choice and phase the engine names, and the
 // seats. The engine's names are read from its sources, so that a name
 // added there without words here fails.
 
@@ -11,7 +12,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 import {
-  CHOICE_WORDS, FOUL_WORDS, PHASE_WORDS, TURN_WORDS, choiceWords, logLine, phaseWords, seatName, shortName, turnSentence,
+  CHOICE_WORDS, PHASE_WORDS, TURN_WORDS, choiceWords, logLine, phaseWords, seatName, shortName, turnSentence,
 } from '../../page/game-words.js';
 import { GAMES, gameOf } from '../../page/game-games.js';
 
@@ -33,8 +34,7 @@ function turnReasons() {
   return [...new Set([...body.matchAll(/why = "([a-z_]+)"/g), ...body.matchAll(/const char\* why = "([a-z_]+)"/g)].map((x) => x[1]))];
 }
 
-test('every foul, choice, phase and game the engine names has its words', () => {
-  for (const f of engineNames('kFoulNames')) assert.ok(FOUL_WORDS[f], `no words for the foul ${f}`);
+test('every choice, phase and game the engine names has its words', () => {
   for (const c of engineNames('kChoiceNames')) assert.ok(CHOICE_WORDS[c], `no words for the choice ${c}`);
   const decisions = engineNames('kPhaseNames').filter((p) => p.endsWith('_choice'));
   assert.ok(decisions.length >= 4);
@@ -56,26 +56,33 @@ test('whose turn it is, in words', () => {
   assert.equal(turnSentence({ next: 0, why: 'unheard_of' }), '');
 });
 
-// A shot of each ruling kind in each game: the ruling (as the engine
-// writes it) and the line the log shows.
+// A shot of each ruling kind in each game: the ruling (the engine's words
+// name its fouls and whose turn it is: tests/test_ruling_words.cpp) and the
+// line the log shows. The facade's turn is said only where the engine gave
+// no words, so that no sentence is said twice.
 const KINDS = [
   // [kind, ruling, turn, the line's parts after "who"]
-  ['continues', { text: 'pots: shoots again.' }, { next: 0, why: 'continues' },
-    { text: 'Pots: shoots again.', fouls: '', win: '', next: 'Turn continues.' }],
-  ['passes', { text: 'misses.' }, { next: 1, why: 'passes' },
-    { text: 'Misses.', fouls: '', win: '', next: 'Player 2 to play.' }],
-  ['foul', { text: 'fouls.', fouls: ['scratch', 'no_rail'] }, { next: 1, why: 'foul' },
-    { text: 'Fouls.', fouls: 'Foul: scratch (the cue ball fell), no rail after contact.', win: '', next: 'Player 2 to play.' }],
-  ['decides', { text: 'pushes out.' }, { next: 1, why: 'decides' },
-    { text: 'Pushes out.', fouls: '', win: '', next: 'Player 2 to decide.' }],
-  ['breaks', { text: 'fouls the break.', fouls: ['illegal_break'] }, { next: 0, why: 'breaks' },
-    { text: 'Fouls the break.', fouls: 'Foul: illegal break.', win: '', next: 'Player 1 to break.' }],
+  ['continues', { text: 'Player 1 pots the 3; Player 1 shoots again.' }, { next: 0, why: 'continues' },
+    { text: 'Player 1 pots the 3; Player 1 shoots again.', foul: false, win: '', next: '' }],
+  ['passes', { text: 'Player 1 pots nothing. Player 2 to shoot.' }, { next: 1, why: 'passes' },
+    { text: 'Player 1 pots nothing. Player 2 to shoot.', foul: false, win: '', next: '' }],
+  ['foul', { text: 'Foul: a scratch. Player 2 has the cue ball in hand.', fouls: ['scratch'] }, { next: 1, why: 'foul' },
+    { text: 'Foul: a scratch. Player 2 has the cue ball in hand.', foul: true, win: '', next: '' }],
   ['wins', { text: 'pots the last ball.', winner: 0 }, { next: -1, why: 'game_over' },
-    { text: 'Pots the last ball.', fouls: '', win: 'Player 1 wins.', next: '' }],
+    { text: 'Pots the last ball.', foul: false, win: 'Player 1 wins.', next: '' }],
   ['loses on a foul', { text: 'fouls on the last ball.', fouls: ['wrong_ball_first'], winner: 1 }, { next: -1, why: 'game_over' },
-    { text: 'Fouls on the last ball.', fouls: 'Foul: wrong ball hit first.', win: 'Player 2 wins.', next: '' }],
+    { text: 'Fouls on the last ball.', foul: true, win: 'Player 2 wins.', next: '' }],
   ['draw', { text: 'the game is drawn.' }, { next: -1, why: 'game_over' },
-    { text: 'The game is drawn.', fouls: '', win: '', next: '' }],
+    { text: 'The game is drawn.', foul: false, win: '', next: '' }],
+  // no words from the engine: the facade's turn is said
+  ['no words, passes', {}, { next: 1, why: 'passes' },
+    { text: 'Shoots', foul: false, win: '', next: 'Player 2 to play.' }],
+  ['no words, foul', { fouls: ['no_contact'] }, { next: 1, why: 'foul' },
+    { text: 'Shoots', foul: true, win: '', next: 'Player 2 to play.' }],
+  ['no words, decides', {}, { next: 1, why: 'decides' },
+    { text: 'Shoots', foul: false, win: '', next: 'Player 2 to decide.' }],
+  ['no words, breaks', {}, { next: 0, why: 'breaks' },
+    { text: 'Shoots', foul: false, win: '', next: 'Player 1 to break.' }],
 ];
 
 test('the log\'s line for each ruling kind of each game', () => {
@@ -84,21 +91,18 @@ test('the log\'s line for each ruling kind of each game', () => {
       const line = logLine({ index: 4, player: 0, kind: 'shoot', ruling, turn, action: { type: 'shoot' } }, ['human', 'human']);
       assert.deepEqual(line, { who: '5. Player 1: ', ...want }, `${game}, ${kind}`);
     }
-    // the engine's own words for every foul of the game's kind
-    for (const f of Object.keys(FOUL_WORDS)) {
-      const line = logLine({ index: 0, player: 1, kind: 'shoot', ruling: { text: 'x', fouls: [f] }, turn: { next: 0, why: 'foul' } }, ['club', 'human']);
-      assert.equal(line.fouls, `Foul: ${FOUL_WORDS[f]}.`, `${game}, ${f}`);
-      assert.equal(line.who, '1. Player 2: ');
-    }
+    const line = logLine({ index: 0, player: 1, kind: 'shoot', ruling: { text: 'x', fouls: ['in_off'] }, turn: { next: 0, why: 'foul' } }, ['club', 'human']);
+    assert.equal(line.who, '1. Player 2: ');
+    assert.equal(line.foul, true);
   }
 });
 
 test('placements and decisions: the engine\'s words, else the page\'s; no turn line', () => {
   const players = ['human', 'expert'];
   const place = logLine({ index: 0, player: 0, kind: 'place', ruling: {}, turn: { next: 0, why: 'continues' } }, players);
-  assert.deepEqual(place, { who: '1. Player 1: ', text: 'Places the cue ball', fouls: '', win: '', next: '' });
+  assert.deepEqual(place, { who: '1. Player 1: ', text: 'Places the cue ball', foul: false, win: '', next: '' });
   const decide = logLine({ index: 2, player: 1, kind: 'decide', ruling: {}, action: { type: 'decide', choice: 'pass_back' }, turn: { next: 0, why: 'passes' } }, players);
-  assert.deepEqual(decide, { who: '3. Player 2 (expert): ', text: 'Chooses: pass back', fouls: '', win: '', next: '' });
+  assert.deepEqual(decide, { who: '3. Player 2 (expert): ', text: 'Chooses: pass back', foul: false, win: '', next: '' });
   const said = logLine({ index: 2, player: 1, kind: 'decide', ruling: { text: 'takes the table.' }, action: { type: 'decide', choice: 'shoot' } }, players);
   assert.equal(said.text, 'Takes the table.');
   const bare = logLine({ index: 3, player: 0, kind: 'shoot', ruling: {} }, players);
