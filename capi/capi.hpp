@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <new>
 #include <optional>
 #include <string>
@@ -31,6 +32,7 @@
 #include "breakshot.h"
 #include "breakshot/scenario.hpp"
 #include "breakshot/simulation.hpp"
+#include "physics/run_record.hpp"
 
 namespace capi {
 
@@ -134,21 +136,21 @@ struct BsScenario : capi::Handle {
   BsScenario() : Handle(capi::kScenarioTag) {}
   /// The scenario document, in the scenario format.
   capi::json doc = capi::json::object();
-  /// The scenario read from doc, while doc has not changed since.
-  mutable std::optional<breakshot::Scenario> read;
+  /// The scenario read from doc, while doc has not changed since (shared
+  /// with the simulations run from it).
+  mutable std::shared_ptr<const breakshot::Scenario> read;
 };
 
 struct BsSimulation : capi::Handle {
   BsSimulation() : Handle(capi::kSimulationTag) {}
-  breakshot::Scenario scenario;
+  std::shared_ptr<const breakshot::Scenario> scenario;
   breakshot::RunResult result;
-  /// Each ball's trajectories in time order, ball-major: ball i's are
-  /// segments[first[i] .. first[i + 1]); each starts at `time`.
-  struct Segment {
-    double time;
-    breakshot::Simulation::Trajectory trajectory;
-  };
-  std::vector<Segment> segments;
+  /// The run's record: each ball's trajectory after set-up, and every
+  /// change at an event.
+  breakshot::detail::RunRecord record;
+  /// The record's changes ball by ball, each ball's in time order: ball
+  /// i's are record.changes[order[k]] for k in [first[i], first[i + 1]).
+  std::vector<std::uint32_t> order;
   std::vector<std::size_t> first;
 };
 
@@ -158,8 +160,11 @@ namespace capi {
 /// naming the field.
 const bs::Scenario& scenario_of(const BsScenario& s);
 
-/// A run of `scenario` recorded into `out` (result, segments).
-void run_into(bs::Scenario scenario, BsSimulation& out);
+/// The scenario of `s` as a shared value (scenario_of's).
+std::shared_ptr<const bs::Scenario> shared_scenario_of(const BsScenario& s);
+
+/// A run of `scenario` recorded into `out` (result, record, order).
+void run_into(std::shared_ptr<const bs::Scenario> scenario, BsSimulation& out);
 
 }  // namespace capi
 

@@ -219,16 +219,18 @@ void ball_state_fields(const BsBall& b, json& j) {
 
 }  // namespace
 
-const bs::Scenario& scenario_of(const BsScenario& s) {
+std::shared_ptr<const bs::Scenario> shared_scenario_of(const BsScenario& s) {
   if (!s.read) {
     auto read = bs::json_io::read_scenario_tree(s.doc);
     if (auto* e = std::get_if<bs::ScenarioError>(&read)) {
       fail(BS_ERROR_INVALID, e->path + ": " + e->reason);
     }
-    s.read = std::get<bs::Scenario>(std::move(read));
+    s.read = std::make_shared<const bs::Scenario>(std::get<bs::Scenario>(std::move(read)));
   }
-  return *s.read;
+  return s.read;
 }
+
+const bs::Scenario& scenario_of(const BsScenario& s) { return *shared_scenario_of(s); }
 
 }  // namespace capi
 

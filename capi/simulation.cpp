@@ -9,7 +9,6 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
-#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -22,7 +21,6 @@
 #include "breakshot/scenario_io.hpp"
 #include "capi.hpp"
 #include "physics/motion.hpp"
-#include "physics/run_record.hpp"
 
 namespace capi {
 
@@ -37,25 +35,20 @@ static_assert(static_cast<int>(bs::MotionState::off_table) == BS_MOTION_OFF_TABL
 
 }  // namespace
 
-void run_into(bs::Scenario scenario, BsSimulation& out) {
-  bs::detail::RunRecord record;
+void run_into(std::shared_ptr<const bs::Scenario> scenario, BsSimulation& out) {
   out.scenario = std::move(scenario);
-  out.result = bs::detail::simulate_recorded(out.scenario, record);
-  // Ball-major segments: the start, then each change of the ball in
-  // event order (a counting sort of the record's changes).
-  const std::size_t n = record.start.size();
+  out.result = bs::detail::simulate_recorded(*out.scenario, out.record);
+  // The changes ball by ball (a counting sort, stable: each ball's stay in
+  // event order, which is time order).
+  const std::size_t n = out.record.start.size();
+  const auto& changes = out.record.changes;
   out.first.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) out.first[i + 1] = 1;
-  for (const auto& c : record.changes) ++out.first[static_cast<std::size_t>(c.ball) + 1];
+  for (const auto& c : changes) ++out.first[static_cast<std::size_t>(c.ball) + 1];
   for (std::size_t i = 0; i < n; ++i) out.first[i + 1] += out.first[i];
-  out.segments.resize(out.first[n]);
+  out.order.resize(changes.size());
   std::vector<std::size_t> next(out.first.begin(), out.first.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    // The start holds from before the first event (one at t = 0 included).
-    out.segments[next[i]++] = {-std::numeric_limits<double>::infinity(), record.start[i]};
-  }
-  for (const auto& c : record.changes) {
-    out.segments[next[static_cast<std::size_t>(c.ball)]++] = {c.time, c.trajectory};
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    out.order[next[static_cast<std::size_t>(changes[k].ball)]++] = static_cast<std::uint32_t>(k);
   }
 }
 
@@ -90,7 +83,7 @@ BsStatus bs_simulate(const BsScenario* scenario, BsSimulation** out) {
     need(out, "out");
     *out = nullptr;
     auto sim = std::make_unique<BsSimulation>();
-    run_into(scenario_of(s), *sim);
+    run_into(shared_scenario_of(s), *sim);
     made = sim.release();
   });
   if (st == BS_OK) *out = made;
@@ -109,14 +102,14 @@ BsStatus bs_simulate_batch(const BsScenario* const* scenarios, std::size_t n, st
     }
     // Every scenario is read here, on the calling thread, so that the
     // workers only run.
-    std::vector<const bs::Scenario*> read(n);
+    std::vector<std::shared_ptr<const bs::Scenario>> read(n);
     for (std::size_t k = 0; k < n; ++k) {
       const std::string where = "scenarios[" + std::to_string(k) + "]";
       const BsScenario* s = scenarios[k];
       if (s == nullptr) fail(BS_ERROR_NULL, where + ": a null handle");
       if (s->tag != kScenarioTag) fail(BS_ERROR_BAD_HANDLE, where + ": not a live scenario handle");
       try {
-        read[k] = &scenario_of(*s);
+        read[k] = shared_scenario_of(*s);
       } catch (const Failure& f) {
         fail(f.status, where + ": " + f.message);
       }
@@ -132,7 +125,7 @@ BsStatus bs_simulate_batch(const BsScenario* const* scenarios, std::size_t n, st
     const auto work = [&] {
       for (std::size_t k = next++; k < n; k = next++) {
         try {
-          run_into(*read[k], *sims[k]);
+          run_into(read[k], *sims[k]);
         } catch (...) {
           const std::lock_guard<std::mutex> lock(error_lock);
           if (!error) error = std::current_exception();
@@ -162,7 +155,7 @@ void bs_simulation_free(BsSimulation* simulation) {
 BsStatus bs_simulation_info(const BsSimulation* simulation, BsSimulationInfo* out) {
   return on_handle(simulation, kSimulationTag, "simulation", [&](const BsSimulation& s) {
     need(out, "out");
-    out->balls = s.scenario.balls.size();
+    out->balls = s.scenario->balls.size();
     out->events = s.result.events.size();
     out->end_time = s.result.final_time;
     out->complete = s.result.complete ? 1 : 0;
@@ -203,27 +196,31 @@ BsStatus bs_simulation_states_at(const BsSimulation* simulation, double t, BsBal
                                  std::size_t n) {
   return on_handle(simulation, kSimulationTag, "simulation", [&](const BsSimulation& s) {
     need(out, "out");
-    const std::size_t balls = s.first.size() - 1;
+    const std::size_t balls = s.record.start.size();
     if (n != balls) {
       fail(BS_ERROR_OUT_OF_RANGE, "n: the run has " + std::to_string(balls) + " balls, not " +
                                       std::to_string(n));
     }
     if (std::isnan(t)) fail(BS_ERROR_OUT_OF_RANGE, "t: not a number");
     t = std::clamp(t, 0.0, s.result.final_time);
-    const BsSimulation::Segment* seg = s.segments.data();
+    const auto& changes = s.record.changes;
+    const std::uint32_t* order = s.order.data();
     for (std::size_t i = 0; i < balls; ++i) {
-      // The last segment that starts at or before t (the first always does).
+      // The last of the ball's changes at or before t (every change with
+      // time <= t has been taken at t), else its start.
       std::size_t lo = s.first[i];
       std::size_t hi = s.first[i + 1];
-      while (hi - lo > 1) {
+      while (lo < hi) {
         const std::size_t mid = lo + (hi - lo) / 2;
-        if (seg[mid].time <= t) {
-          lo = mid;
+        if (changes[order[mid]].time <= t) {
+          lo = mid + 1;
         } else {
           hi = mid;
         }
       }
-      to_c(bs::detail::state_at(seg[lo].trajectory, t), out[i]);
+      const bs::Simulation::Trajectory& tr =
+          lo == s.first[i] ? s.record.start[i] : changes[order[lo - 1]].trajectory;
+      to_c(bs::detail::state_at(tr, t), out[i]);
     }
   });
 }
@@ -232,11 +229,11 @@ BsStatus bs_simulation_ball_id(const BsSimulation* simulation, std::size_t ball,
                                const char** out) {
   return on_handle(simulation, kSimulationTag, "simulation", [&](const BsSimulation& s) {
     need(out, "out");
-    if (ball >= s.scenario.balls.size()) {
+    if (ball >= s.scenario->balls.size()) {
       fail(BS_ERROR_OUT_OF_RANGE, "ball: " + std::to_string(ball) + " is not below the " +
-                                      std::to_string(s.scenario.balls.size()) + " balls");
+                                      std::to_string(s.scenario->balls.size()) + " balls");
     }
-    *out = s.scenario.balls[ball].id.c_str();
+    *out = s.scenario->balls[ball].id.c_str();
   });
 }
 
@@ -244,7 +241,7 @@ BsStatus bs_simulation_wall_name(const BsSimulation* simulation, std::int32_t wa
                                  const char** out) {
   return on_handle(simulation, kSimulationTag, "simulation", [&](const BsSimulation& s) {
     need(out, "out");
-    const auto& walls = s.scenario.table.walls;
+    const auto& walls = s.scenario->table.walls;
     if (wall < 0 || static_cast<std::size_t>(wall) >= walls.size()) {
       fail(BS_ERROR_OUT_OF_RANGE, "wall: " + std::to_string(wall) + " is not in [0, " +
                                       std::to_string(walls.size()) + ")");
@@ -257,7 +254,7 @@ BsStatus bs_simulation_pocket_name(const BsSimulation* simulation, std::int32_t 
                                    const char** out) {
   return on_handle(simulation, kSimulationTag, "simulation", [&](const BsSimulation& s) {
     need(out, "out");
-    const auto& pockets = s.scenario.table.pockets;
+    const auto& pockets = s.scenario->table.pockets;
     if (pocket < 0 || static_cast<std::size_t>(pocket) >= pockets.size()) {
       fail(BS_ERROR_OUT_OF_RANGE, "pocket: " + std::to_string(pocket) + " is not in [0, " +
                                       std::to_string(pockets.size()) + ")");
@@ -270,7 +267,7 @@ BsStatus bs_simulation_result_json(const BsSimulation* simulation, char** out) {
   return on_handle(simulation, kSimulationTag, "simulation", [&](const BsSimulation& s) {
     need(out, "out");
     *out = nullptr;
-    *out = copy_out(bs::write_result(s.scenario, s.result));
+    *out = copy_out(bs::write_result(*s.scenario, s.result));
   });
 }
 
