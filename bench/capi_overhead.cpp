@@ -18,14 +18,15 @@
 //
 //   capi_overhead [ROUNDS]      (default 11)
 
+#include <time.h>
+
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <string>
-#include <time.h>
 #include <vector>
 
 #include "breakshot.h"
@@ -86,8 +87,8 @@ BsScenario* to_c(const bs::Scenario& s) {
   }
   const bs::CueStrike& k = s.cue->strike;
   const BsStrike strike{k.speed, k.phi, k.theta, k.a, k.b};
-  must(bs_scenario_strike(c, s.balls[static_cast<std::size_t>(s.cue->ball)].id.c_str(), &strike),
-       c, "bs_scenario_strike");
+  must(bs_scenario_strike(c, s.balls[static_cast<std::size_t>(s.cue->ball)].id.c_str(), &strike), c,
+       "bs_scenario_strike");
   must(bs_scenario_validate(c), c, "bs_scenario_validate");
   return c;
 }
@@ -159,11 +160,12 @@ void compare(const char* name, const std::vector<bs::Scenario>& cpp, int rounds)
     r_cpp.push_back(x / a);
     r_rec.push_back(x / b);
   }
-  std::printf("%-9s %4zu shots x %d rounds (median us/shot): C++ simulate() %7.1f, C++ recorded "
-              "%7.1f, C API bs_simulate %7.1f; median ratio C API / simulate() %.3f, "
-              "C API / recorded %.3f\n",
-              name, cpp.size(), rounds, median(t_cpp), median(t_rec), median(t_c),
-              median(r_cpp), median(r_rec));
+  std::printf(
+      "%-9s %4zu shots x %d rounds (median us/shot): C++ simulate() %7.1f, C++ recorded "
+      "%7.1f, C API bs_simulate %7.1f; median ratio C API / simulate() %.3f, "
+      "C API / recorded %.3f\n",
+      name, cpp.size(), rounds, median(t_cpp), median(t_rec), median(t_c), median(r_cpp),
+      median(r_rec));
   for (BsScenario* s : c) bs_scenario_free(s);
 }
 
@@ -188,9 +190,10 @@ void frame_cost(int rounds) {
     per.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count() /
                   static_cast<double>(times.size()));
   }
-  std::printf("frame     16 balls of an 8-ball break (%zu events), %zu random times x %d rounds: "
-              "%.3f us per bs_simulation_states_at\n",
-              info.events, times.size(), rounds, median(per));
+  std::printf(
+      "frame     16 balls of an 8-ball break (%zu events), %zu random times x %d rounds: "
+      "%.3f us per bs_simulation_states_at\n",
+      info.events, times.size(), rounds, median(per));
   bs_simulation_free(sim);
   bs_scenario_free(s);
 }

@@ -1,12 +1,13 @@
 // The C API's status names, errors, strings, version and physics options
 // (include/breakshot.h).
 
+#include "capi.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "breakshot.h"
 #include "breakshot/game.hpp"
@@ -14,7 +15,6 @@
 #include "breakshot/players.hpp"
 #include "breakshot/pool.hpp"
 #include "breakshot/version.hpp"
-#include "capi.hpp"
 
 namespace capi {
 
@@ -78,7 +78,9 @@ using namespace capi;
 extern "C" {
 
 const char* bs_status_name(BsStatus status) {
-  switch (status) {
+  const long long value = raw(status);
+  if (value < BS_OK || value > BS_ERROR_INTERNAL) return "BS_UNKNOWN_STATUS";
+  switch (static_cast<BsStatus>(value)) {
     case BS_OK:
       return "BS_OK";
     case BS_ERROR_NULL:

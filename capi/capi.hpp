@@ -19,15 +19,16 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <new>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "breakshot.h"
 #include "breakshot/scenario.hpp"
@@ -64,6 +65,16 @@ struct Failure {
 
 [[noreturn]] inline void fail(BsStatus status, std::string message) {
   throw Failure{status, std::move(message)};
+}
+
+/// The value of an enum argument as an integer, read without loading it
+/// as the enum: a C caller may pass any int, and a value outside the
+/// enum's range is not a value of the C++ type.
+template <class E>
+long long raw(const E& e) {
+  std::underlying_type_t<E> v;
+  std::memcpy(&v, &e, sizeof v);
+  return static_cast<long long>(v);
 }
 
 /// The calling thread's message slot.
@@ -114,8 +125,8 @@ BsStatus on_handle(H* h, Tag tag, const char* what, F&& body) {
     return BS_ERROR_NULL;
   }
   if (h->tag != tag) {
-    thread_error() = std::string(what) + ": not a live " + what +
-                     " handle (freed, or a handle of another type)";
+    thread_error() =
+        std::string(what) + ": not a live " + what + " handle (freed, or a handle of another type)";
     return BS_ERROR_BAD_HANDLE;
   }
   return guarded(h->error, [&] { body(*h); });

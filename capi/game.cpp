@@ -6,6 +6,8 @@
 // and a record read back is checked by replay() before it is played
 // again.
 
+#include "breakshot/game.hpp"
+
 #include <array>
 #include <cstring>
 #include <memory>
@@ -17,7 +19,6 @@
 #include <vector>
 
 #include "breakshot.h"
-#include "breakshot/game.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/players.hpp"
 #include "breakshot/record.hpp"
@@ -220,8 +221,8 @@ BsStatus bs_game_apply_json(BsGame* game, const char* action, std::size_t len) {
     try {
       (void)g.session.play(a);
     } catch (const bs::GameSession::ExecutedRefused& e) {
-      fail(BS_ERROR_ILLEGAL, std::string("the action as executed (after noise) was refused: ") +
-                                 e.what());
+      fail(BS_ERROR_ILLEGAL,
+           std::string("the action as executed (after noise) was refused: ") + e.what());
     } catch (const std::invalid_argument& e) {
       fail(BS_ERROR_ILLEGAL, e.what());
     }

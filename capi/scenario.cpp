@@ -27,8 +27,8 @@ void finite(double x, const std::string& path) {
 
 bs::Model model_of(std::int32_t m, const std::string& path) {
   if (m < BS_MODEL_IDEAL || m > BS_MODEL_POOL) {
-    fail(BS_ERROR_OUT_OF_RANGE, path + ": not a BsModel (0 ideal, 1 friction, 2 pool), but " +
-                                    std::to_string(m));
+    fail(BS_ERROR_OUT_OF_RANGE,
+         path + ": not a BsModel (0 ideal, 1 friction, 2 pool), but " + std::to_string(m));
   }
   return static_cast<bs::Model>(m);
 }
@@ -42,7 +42,8 @@ void flag(std::int32_t v, const std::string& path) {
 /// The physics as the scenario format's "physics" object.
 json physics_doc(const BsPhysics& p) {
   const bs::Model model = model_of(p.model, "physics.model");
-  if (p.ball_ball_model != BS_BALL_BALL_FRICTION && p.ball_ball_model != BS_BALL_BALL_MATHAVAN_2014) {
+  if (p.ball_ball_model != BS_BALL_BALL_FRICTION &&
+      p.ball_ball_model != BS_BALL_BALL_MATHAVAN_2014) {
     fail(BS_ERROR_OUT_OF_RANGE,
          "physics.ball_ball_model: not a BsBallBallModel (0 friction, 1 mathavan_2014), but " +
              std::to_string(p.ball_ball_model));
@@ -82,8 +83,7 @@ json physics_doc(const BsPhysics& p) {
   j["spinning_friction"] = p.spinning_friction;
   j["collapse_speed"] = p.collapse_speed;
   j["ball_clusters"] = p.ball_clusters != 0;
-  j["ball_ball_model"] =
-      p.ball_ball_model == BS_BALL_BALL_FRICTION ? "friction" : "mathavan_2014";
+  j["ball_ball_model"] = p.ball_ball_model == BS_BALL_BALL_FRICTION ? "friction" : "mathavan_2014";
   j["airborne"] = p.airborne != 0;
   // The format takes these only with airborne balls.
   if (p.airborne != 0) {
@@ -109,8 +109,8 @@ json table_doc(const BsTable& t) {
     case BS_TABLE_POLYGON: {
       if (t.vertex_count > 0) need(t.vertices, "table.vertices");
       if (t.vertex_count > 1'000'000) {
-        fail(BS_ERROR_OUT_OF_RANGE, "table.vertex_count: at most 1000000, not " +
-                                        std::to_string(t.vertex_count));
+        fail(BS_ERROR_OUT_OF_RANGE,
+             "table.vertex_count: at most 1000000, not " + std::to_string(t.vertex_count));
       }
       json v = json::array();
       for (std::size_t k = 0; k < t.vertex_count; ++k) {
@@ -135,7 +135,8 @@ json table_doc(const BsTable& t) {
     default:
       fail(BS_ERROR_OUT_OF_RANGE,
            "table.shape: not a BsTableShape (0 rectangle, 1 polygon, 2 pool, 3 snooker, 4 "
-           "carom), but " + std::to_string(t.shape));
+           "carom), but " +
+               std::to_string(t.shape));
   }
   if (t.cushion_model != BS_CUSHION_DEFAULT) {
     bs::CushionModel m{};
@@ -241,7 +242,8 @@ extern "C" {
 BsStatus bs_physics_default(BsModel model, BsPhysics* out) {
   return on_thread([&] {
     need(out, "out");
-    const bs::PhysicsParams p = bs::default_physics(model_of(model, "model"));
+    const bs::PhysicsParams p =
+        bs::default_physics(model_of(static_cast<std::int32_t>(raw(model)), "model"));
     *out = BsPhysics{};
     out->model = static_cast<std::int32_t>(p.model);
     out->ball_ball_model = static_cast<std::int32_t>(p.ball_ball_model);
@@ -267,9 +269,9 @@ BsStatus bs_physics_default(BsModel model, BsPhysics* out) {
 BsStatus bs_table_default(BsTableShape shape, BsTable* out) {
   return on_thread([&] {
     need(out, "out");
-    if (shape < BS_TABLE_RECTANGLE || shape > BS_TABLE_CAROM) {
-      fail(BS_ERROR_OUT_OF_RANGE, "shape: not a BsTableShape (0 to 4), but " +
-                                      std::to_string(static_cast<int>(shape)));
+    if (raw(shape) < BS_TABLE_RECTANGLE || raw(shape) > BS_TABLE_CAROM) {
+      fail(BS_ERROR_OUT_OF_RANGE,
+           "shape: not a BsTableShape (0 to 4), but " + std::to_string(raw(shape)));
     }
     const double nan = std::numeric_limits<double>::quiet_NaN();
     *out = BsTable{};
@@ -437,7 +439,7 @@ BsStatus bs_scenario_strike(BsScenario* scenario, const char* ball_id, const BsS
     finite(strike->theta, "strike.theta");
     finite(strike->a, "strike.a");
     finite(strike->b, "strike.b");
-    edit(s)["cue"] = {{"ball", ball_id},       {"speed", strike->speed}, {"phi", strike->phi},
+    edit(s)["cue"] = {{"ball", ball_id},        {"speed", strike->speed}, {"phi", strike->phi},
                       {"theta", strike->theta}, {"a", strike->a},         {"b", strike->b}};
   });
 }

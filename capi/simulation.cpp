@@ -198,8 +198,8 @@ BsStatus bs_simulation_states_at(const BsSimulation* simulation, double t, BsBal
     need(out, "out");
     const std::size_t balls = s.record.start.size();
     if (n != balls) {
-      fail(BS_ERROR_OUT_OF_RANGE, "n: the run has " + std::to_string(balls) + " balls, not " +
-                                      std::to_string(n));
+      fail(BS_ERROR_OUT_OF_RANGE,
+           "n: the run has " + std::to_string(balls) + " balls, not " + std::to_string(n));
     }
     if (std::isnan(t)) fail(BS_ERROR_OUT_OF_RANGE, "t: not a number");
     t = std::clamp(t, 0.0, s.result.final_time);
@@ -225,8 +225,7 @@ BsStatus bs_simulation_states_at(const BsSimulation* simulation, double t, BsBal
   });
 }
 
-BsStatus bs_simulation_ball_id(const BsSimulation* simulation, std::size_t ball,
-                               const char** out) {
+BsStatus bs_simulation_ball_id(const BsSimulation* simulation, std::size_t ball, const char** out) {
   return on_handle(simulation, kSimulationTag, "simulation", [&](const BsSimulation& s) {
     need(out, "out");
     if (ball >= s.scenario->balls.size()) {

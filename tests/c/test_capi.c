@@ -525,6 +525,7 @@ static void test_games(void) {
   OK(bs_game_record_json(again, &record2));
   CHECK(record2 != NULL && strcmp(record, record2) == 0);
   bs_string_free(record2);
+  bs_game_free(again);
   FAILS(bs_game_from_record_json(record, 10, &again), BS_ERROR_BAD_JSON, NULL, "record");
   {
     /* a record whose first strike was changed: replay finds it */
@@ -574,12 +575,14 @@ static void test_games(void) {
     OK(bs_game_legal_actions_json(g, &text));
     CHECK(text != NULL && strstr(text, "\"nominate\"") != NULL);
     bs_string_free(text);
-    FAILS(bs_game_new_config(NULL, &g), BS_ERROR_NULL, NULL, "config");
-    FAILS(bs_game_new_config(&c, NULL), BS_ERROR_NULL, NULL, "out");
     bs_game_free(g);
+    FAILS(bs_game_new_config(NULL, &g), BS_ERROR_NULL, NULL, "config");
+    CHECK(g == NULL);
+    FAILS(bs_game_new_config(&c, NULL), BS_ERROR_NULL, NULL, "out");
   }
 
   /* players */
+  bs_player_free(p);
   FAILS(bs_player_new("grandmaster", 1, &p), BS_ERROR_OUT_OF_RANGE, NULL, "grandmaster");
   FAILS(bs_player_new("champion@loud", 1, &p), BS_ERROR_OUT_OF_RANGE, NULL, "noise");
   FAILS(bs_player_new(NULL, 1, &p), BS_ERROR_NULL, NULL, "name");
