@@ -9,7 +9,9 @@
 #       7 s of the ctest stage, run again under the sanitizers in (b)
 #   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
 #   (c) install the release build and build and run the example consumer
-#       against it (find_package(breakshot)); build the Python wheel and
+#       against it (find_package(breakshot)), and the C API's example
+#       (examples/c) through the CMake package and pkg-config, shared and
+#       static; build the Python wheel and
 #       use it from a fresh environment; run scripts/run.sh --check
 #   (d) the browser version: the page's logic in node without a browser
 #       (web/tests/unit/, node --test, about 5 s), native and wasm give the
@@ -163,6 +165,29 @@ if [ "$quick" -eq 0 ]; then
     -DCMAKE_PREFIX_PATH="$root/build/install"
   cmake --build build/consumer -j 2
   build/consumer/consumer
+  # The C API from C (examples/c/example.c, -std=c99 -Wall -Wextra -Werror):
+  # through the CMake package (breakshot::c and breakshot::c_static) and
+  # through pkg-config (breakshot, breakshot-static); every build prints
+  # the same.
+  rm -rf build/example-c
+  cmake -S examples/c -B build/example-c -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_PREFIX_PATH="$root/build/install"
+  cmake --build build/example-c -j 2
+  build/example-c/example_c >build/example-c/cmake.txt
+  build/example-c/example_c_static >build/example-c/cmake-static.txt
+  pc_path=$(echo "$root"/build/install/lib*/pkgconfig)
+  pc() { PKG_CONFIG_PATH=$pc_path pkg-config "$@"; }
+  cc -std=c99 -Wall -Wextra -Werror examples/c/example.c $(pc --cflags --libs breakshot) \
+    -Wl,-rpath,"$(pc --variable=libdir breakshot)" -o build/example-c/example_pc
+  cc -std=c99 -Wall -Wextra -Werror examples/c/example.c $(pc --cflags --libs breakshot-static) \
+    -o build/example-c/example_pc_static
+  build/example-c/example_pc >build/example-c/pkg-config.txt
+  build/example-c/example_pc_static >build/example-c/pkg-config-static.txt
+  for out in cmake-static pkg-config pkg-config-static; do
+    cmp build/example-c/cmake.txt build/example-c/$out.txt
+  done
+  head -n 3 build/example-c/cmake.txt
+  echo "examples/c built four ways (CMake package, pkg-config; shared, static): the same output"
 
   stage "(c) python: a wheel installed into a fresh environment"
   rm -rf build/dist build/wheel-venv

@@ -483,6 +483,10 @@ CaromCount carom_count(const std::vector<Event>& events, int struck);
 /// defaults; the other fields GameConfig's defaults.
 GameConfig three_cushion_config();
 
+/// The config of `game` with its own equipment: snooker_config,
+/// three_cushion_config, else GameConfig's defaults for that game.
+GameConfig default_game_config(GameType game);
+
 /// Where a game stands for each side, as its rules count it: what the
 /// AI's value of a table (src/ai/evaluate.cpp) and other readers weigh,
 /// without knowing the game (docs/rules.md, "Standing").

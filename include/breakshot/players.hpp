@@ -61,6 +61,16 @@ std::vector<std::string> player_names(GameType game);
 /// can.
 std::optional<std::string> check_player(std::string_view name, GameType game);
 
+/// The seat name of a person in a game played through the browser's
+/// facade or the C API: their strikes are played as given.
+inline constexpr std::string_view kHumanSeat = "human";
+
+/// The noise a seat of such a game shoots with, by the seat's name: none
+/// for kHumanSeat; a player named at a noise (NAME@NOISE), that noise; an
+/// AI level, its own; the baseline, tournament noise. Throws
+/// std::invalid_argument for a name make_player does not know.
+NoiseModel seat_noise(std::string_view name);
+
 /// empty_summary (match.hpp) for the players named in options.players,
 /// with each one's own noise (make_player(name)->noise(), else
 /// options.noise). Throws std::invalid_argument for an unknown name.

@@ -128,6 +128,15 @@ std::unique_ptr<Player> make_player(std::string_view name, int threads) {
   return named_player(name, threads);
 }
 
+NoiseModel seat_noise(std::string_view name) {
+  if (name == kHumanSeat) return NoiseModel{};
+  const PlayerName read = read_player_name(name);
+  if (read.noise) return *read.noise;
+  // The baseline has no noise of its own: at a table with people, it
+  // shoots at tournament noise.
+  return make_player(name)->noise().value_or(parse_noise("tournament"));
+}
+
 MatchSummary empty_summary(const MatchOptions& options) {
   std::array<NoiseModel, 2> noise;
   for (std::size_t p = 0; p < 2; ++p) {

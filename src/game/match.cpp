@@ -154,10 +154,7 @@ MatchSummary empty_summary_with(const MatchOptions& options,
 }
 
 GameConfig config_of(const MatchOptions& options) {
-  GameConfig config = options.game == GameType::snooker         ? snooker_config()
-                      : options.game == GameType::three_cushion ? three_cushion_config()
-                                                                : GameConfig{};
-  config.game = options.game;
+  GameConfig config = default_game_config(options.game);
   config.table_size = options.table_size;
   config.physics = options.physics;
   if (options.game == GameType::three_cushion) config.carom = options.carom;

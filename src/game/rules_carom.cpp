@@ -415,4 +415,12 @@ GameConfig three_cushion_config() {
   return c;
 }
 
+GameConfig default_game_config(GameType game) {
+  if (game == GameType::snooker) return snooker_config();
+  if (game == GameType::three_cushion) return three_cushion_config();
+  GameConfig c;
+  c.game = game;
+  return c;
+}
+
 }  // namespace breakshot

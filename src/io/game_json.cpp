@@ -281,6 +281,31 @@ ojson action_json(const Action& a) {
   return j;
 }
 
+ojson legal_actions_json(const LegalActions& la, GameType game) {
+  const auto ints = [](const std::vector<int>& v) {
+    ojson a = ojson::array();
+    for (const int i : v) a.push_back(i);
+    return a;
+  };
+  ojson j = ojson::object();
+  j["place"] = to_string(la.place);
+  j["must_place"] = la.must_place;
+  j["shoot"] = la.shoot;
+  j["push_out"] = la.push_out;
+  j["call"] = la.call;
+  j["targets"] = ints(la.targets);
+  ojson choices = ojson::array();
+  for (const Choice c : la.choices) choices.push_back(to_string(c));
+  j["choices"] = choices;
+  // Snooker's nomination, only in snooker: the other games' replies keep
+  // their bytes.
+  if (game == GameType::snooker) {
+    j["nominate"] = ints(la.nominate);
+    j["must_nominate"] = la.must_nominate;
+  }
+  return j;
+}
+
 
 // ---------------------------------------------------------------------------
 // Decoding

@@ -77,6 +77,11 @@ ojson strike_json(const CueStrike& s);
 ojson state_json(const GameState& s);
 ojson ruling_json(const Ruling& r);
 ojson action_json(const Action& a);
+/// What the player to act may do (Rules::legal_actions): {"place",
+/// "must_place", "shoot", "push_out", "call", "targets", "choices"}, in
+/// snooker also "nominate" and "must_nominate". Not part of records: the
+/// facade's game state and the C API's legal actions.
+ojson legal_actions_json(const LegalActions& la, GameType game);
 
 // ---------------------------------------------------------------------------
 // Decoding

@@ -29,6 +29,7 @@
 #include "breakshot/snooker.hpp"
 #include "io/json_read.hpp"
 #include "io/json_write.hpp"
+#include "io/scenario_json.hpp"
 
 namespace breakshot {
 namespace {
@@ -1092,6 +1093,16 @@ std::variant<Scenario, ScenarioError> read_scenario(std::string_view json_text) 
     if (auto problem = json_io::parse_strict(json_text, doc, options)) {
       return ScenarioError{std::move(problem->error.path), std::move(problem->error.reason)};
     }
+    return json_io::read_scenario_tree(doc);
+  } catch (const std::bad_alloc&) {
+    return ScenarioError{kDocumentPath, "out of memory while reading the scenario"};
+  } catch (const std::exception& e) {
+    return ScenarioError{kDocumentPath, std::string("internal error: ") + e.what()};
+  }
+}
+
+std::variant<Scenario, ScenarioError> json_io::read_scenario_tree(const json& doc) {
+  try {
     Scenario scenario;
     ScenarioReader reader;
     if (!reader.read(doc, scenario)) return reader.take_error();

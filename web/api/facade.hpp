@@ -239,20 +239,7 @@ struct BsGame {
   static bs::Seats seats_of(const std::array<std::string, 2>& names) {
     bs::Seats s;
     s.names = names;
-    for (std::size_t k = 0; k < 2; ++k) {
-      if (names[k] == facade::kHuman) {
-        s.noise[k] = bs::NoiseModel{};
-        continue;
-      }
-      const bs::PlayerName n = bs::read_player_name(names[k]);
-      if (n.noise) {
-        s.noise[k] = *n.noise;
-      } else if (facade::is_baseline(names[k])) {
-        s.noise[k] = bs::parse_noise("tournament");
-      } else {
-        s.noise[k] = bs::ai_level(names[k]).noise;
-      }
-    }
+    for (std::size_t k = 0; k < 2; ++k) s.noise[k] = bs::seat_noise(names[k]);
     return s;
   }
 

@@ -104,26 +104,6 @@ bs::Action read_action(const json& doc) {
   return action;
 }
 
-ojson legal_json(const bs::LegalActions& la, bs::GameType game) {
-  ojson j = ojson::object();
-  j["place"] = bs::to_string(la.place);
-  j["must_place"] = la.must_place;
-  j["shoot"] = la.shoot;
-  j["push_out"] = la.push_out;
-  j["call"] = la.call;
-  j["targets"] = ints_json(la.targets);
-  ojson choices = ojson::array();
-  for (const bs::Choice c : la.choices) choices.push_back(bs::to_string(c));
-  j["choices"] = choices;
-  // Snooker's nomination, only in snooker: the other games' replies keep
-  // their bytes.
-  if (game == bs::GameType::snooker) {
-    j["nominate"] = ints_json(la.nominate);
-    j["must_nominate"] = la.must_nominate;
-  }
-  return j;
-}
-
 /// What the snooker page shows beside the score (game.hpp).
 ojson snooker_figures_json(const bs::GameState& s) {
   ojson j = ojson::object();
@@ -316,7 +296,7 @@ ojson state_json(const BsGame& g) {
   ojson j = bs::json_io::state_json(s);
   j["players"] = ojson::array({g.seats[0], g.seats[1]});
   j["actions"] = g.record().actions.size();
-  j["legal"] = legal_json(g.rules().legal_actions(s), s.game);
+  j["legal"] = bs::json_io::legal_actions_json(g.rules().legal_actions(s), s.game);
   if (s.game == bs::GameType::snooker) j["snooker_figures"] = snooker_figures_json(s);
   if (s.game == bs::GameType::three_cushion) j["carom_figures"] = carom_figures_json(g);
   return j;

@@ -1,0 +1,182 @@
+// The C API's handles and what its parts share (include/breakshot.h,
+// docs/c-api.md). Internal: only capi/*.cpp include it.
+//
+//   capi.cpp        status names, errors, strings, version, physics options
+//   scenario.cpp    BsScenario: a scenario document built by calls or read
+//                   from text, read by the scenario reader (io)
+//   simulation.cpp  BsSimulation: a recorded run, its events, the states at
+//                   any time, the result file; batches on threads
+//   game.cpp        BsGame and BsPlayer: GameSession, the records' JSON
+//                   (io/game_json.hpp), make_player
+//
+// Every entry point catches everything: a Failure becomes its status and
+// message, std::bad_alloc BS_ERROR_NO_MEMORY, anything else
+// BS_ERROR_INTERNAL. Messages go to the handle the call was given when
+// that handle is valid, else to the calling thread's slot.
+
+#ifndef BREAKSHOT_CAPI_HPP
+#define BREAKSHOT_CAPI_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <new>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "breakshot.h"
+#include "breakshot/scenario.hpp"
+#include "breakshot/simulation.hpp"
+#include "physics/run_record.hpp"
+
+namespace capi {
+
+namespace bs = breakshot;
+using json = nlohmann::json;
+
+// Each handle begins with its type's tag; bs_*_free writes kFreed over it
+// before the memory is released.
+enum Tag : std::uint32_t {
+  kScenarioTag = 0x42735363,    // "BsSc"
+  kSimulationTag = 0x42735369,  // "BsSi"
+  kGameTag = 0x42734761,        // "BsGa"
+  kPlayerTag = 0x4273506c,      // "BsPl"
+  kFreed = 0xdeadbea7,
+};
+
+struct Handle {
+  explicit Handle(Tag t) : tag(t) {}
+  std::uint32_t tag;
+  // The message of the last call on this handle ("" after a success).
+  mutable std::string error;
+};
+
+/// A failure of a call: its status and message.
+struct Failure {
+  BsStatus status;
+  std::string message;
+};
+
+[[noreturn]] inline void fail(BsStatus status, std::string message) {
+  throw Failure{status, std::move(message)};
+}
+
+/// The value of an enum argument as an integer, read without loading it
+/// as the enum: a C caller may pass any int, and a value outside the
+/// enum's range is not a value of the C++ type.
+template <class E>
+long long raw(const E& e) {
+  std::underlying_type_t<E> v;
+  std::memcpy(&v, &e, sizeof v);
+  return static_cast<long long>(v);
+}
+
+/// The calling thread's message slot.
+std::string& thread_error();
+
+/// A required pointer argument.
+template <class T>
+T* need(T* p, const char* what) {
+  if (p == nullptr) fail(BS_ERROR_NULL, std::string(what) + ": a null pointer");
+  return p;
+}
+
+/// Runs `body` and turns its outcome into a status and a message in `slot`.
+template <class F>
+BsStatus guarded(std::string& slot, F&& body) {
+  try {
+    body();
+    slot.clear();
+    return BS_OK;
+  } catch (const Failure& f) {
+    slot = f.message;
+    return f.status;
+  } catch (const std::bad_alloc&) {
+    slot = "out of memory";
+    return BS_ERROR_NO_MEMORY;
+  } catch (const std::exception& e) {
+    slot = std::string("internal error: ") + e.what();
+    return BS_ERROR_INTERNAL;
+  } catch (...) {
+    slot = "internal error";
+    return BS_ERROR_INTERNAL;
+  }
+}
+
+/// A call without a handle (constructors, free functions).
+template <class F>
+BsStatus on_thread(F&& body) {
+  return guarded(thread_error(), std::forward<F>(body));
+}
+
+/// A call on the handle `h` of type H (tag `tag`, named `what` in
+/// messages): a null or wrong handle is reported on the thread, the rest
+/// on the handle.
+template <class H, class F>
+BsStatus on_handle(H* h, Tag tag, const char* what, F&& body) {
+  if (h == nullptr) {
+    thread_error() = std::string(what) + ": a null handle";
+    return BS_ERROR_NULL;
+  }
+  if (h->tag != tag) {
+    thread_error() =
+        std::string(what) + ": not a live " + what + " handle (freed, or a handle of another type)";
+    return BS_ERROR_BAD_HANDLE;
+  }
+  return guarded(h->error, [&] { body(*h); });
+}
+
+/// A copy the caller owns (bs_string_free).
+char* copy_out(const std::string& s);
+
+/// Text of `len` bytes as a string (NUL-terminated or not).
+std::string text_arg(const char* text, std::size_t len, const char* what);
+
+}  // namespace capi
+
+// ---------------------------------------------------------------------------
+// The handles
+
+struct BsScenario : capi::Handle {
+  BsScenario() : Handle(capi::kScenarioTag) {}
+  /// The scenario document, in the scenario format.
+  capi::json doc = capi::json::object();
+  /// The scenario read from doc, while doc has not changed since (shared
+  /// with the simulations run from it).
+  mutable std::shared_ptr<const breakshot::Scenario> read;
+};
+
+struct BsSimulation : capi::Handle {
+  BsSimulation() : Handle(capi::kSimulationTag) {}
+  std::shared_ptr<const breakshot::Scenario> scenario;
+  breakshot::RunResult result;
+  /// The run's record: each ball's trajectory after set-up, and every
+  /// change at an event.
+  breakshot::detail::RunRecord record;
+  /// The record's changes ball by ball, each ball's in time order: ball
+  /// i's are record.changes[order[k]] for k in [first[i], first[i + 1]).
+  std::vector<std::uint32_t> order;
+  std::vector<std::size_t> first;
+};
+
+namespace capi {
+
+/// The scenario of `s`, read (and cached) or a BS_ERROR_INVALID failure
+/// naming the field.
+const bs::Scenario& scenario_of(const BsScenario& s);
+
+/// The scenario of `s` as a shared value (scenario_of's).
+std::shared_ptr<const bs::Scenario> shared_scenario_of(const BsScenario& s);
+
+/// A run of `scenario` recorded into `out` (result, record, order).
+void run_into(std::shared_ptr<const bs::Scenario> scenario, BsSimulation& out);
+
+}  // namespace capi
+
+#endif  // BREAKSHOT_CAPI_HPP
