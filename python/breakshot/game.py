@@ -192,6 +192,46 @@ def _action_text(action) -> str:
 
 
 # ---------------------------------------------------------------------------
+# The engine's JSON of tables and figures (src/io/table_json.hpp,
+# game_json.hpp) as Python values: points and pairs by seat as tuples.
+
+
+def _xy(p) -> Tuple[float, float]:
+    return (p[0], p[1])
+
+
+def _table(d: dict) -> dict:
+    """Game.table from the engine's table JSON: every point a tuple."""
+    for k in ("head_spot", "foot_spot"):
+        d[k] = _xy(d[k])
+    d["outline"] = [_xy(p) for p in d["outline"]]
+    for w in d["walls"]:
+        for k in ("a", "b", "normal"):
+            w[k] = _xy(w[k])
+    for p in d["pockets"]:
+        p["centre"] = _xy(p["centre"])
+    if "snooker" in d:
+        m = d["snooker"]
+        m["d_centre"] = _xy(m["d_centre"])
+        m["spots"] = {colour: _xy(p) for colour, p in m["spots"].items()}
+    if "carom" in d:
+        m = d["carom"]
+        for k in ("top_spot", "centre_spot", "bottom_spot"):
+            m[k] = _xy(m[k])
+        m["starting_spots"] = tuple(_xy(p) for p in m["starting_spots"])
+        m["diamonds"] = [_xy(p) for p in m["diamonds"]]
+    return d
+
+
+def _figures(d: dict) -> dict:
+    """State.snooker_figures and carom_figures: values by seat as tuples."""
+    for k in ("snookers_required", "general_average", "highest_run"):
+        if k in d:
+            d[k] = tuple(d[k])
+    return d
+
+
+# ---------------------------------------------------------------------------
 # States, legal actions, outcomes
 
 
@@ -228,7 +268,10 @@ class State:
     the other player's, 2 the red): ``carom`` is the records' carom part,
     a dict with ``score`` (by seat), ``run`` (the points of the inning in
     progress), ``innings`` (begun by each seat) and ``equalizing`` (the
-    inning in progress is the equalizing inning); None in the other games.
+    inning in progress is the equalizing inning); ``carom_figures`` what
+    the score panel shows: ``cue_ball`` (the ball the player to act
+    strikes), ``general_average`` and ``highest_run`` (by seat, the inning
+    in progress included). Both None in the other games.
     """
 
     game: str
@@ -254,12 +297,14 @@ class State:
     snooker: Optional[dict] = field(default=None, hash=False)
     snooker_figures: Optional[dict] = field(default=None, hash=False)
     carom: Optional[dict] = field(default=None, hash=False)
+    carom_figures: Optional[dict] = field(default=None, hash=False)
 
     @classmethod
     def from_dict(cls, d: dict, targets: Sequence[int] = (),
-                  snooker_figures: Optional[dict] = None) -> "State":
-        """A State from the records' JSON form of a state (and, in snooker,
-        the figures of ``Game.state``)."""
+                  snooker_figures: Optional[dict] = None,
+                  carom_figures: Optional[dict] = None) -> "State":
+        """A State from the records' JSON form of a state (and, in snooker
+        and three-cushion, the figures of ``Game.state``)."""
         return cls(
             game=d["game"], phase=d["phase"], player=d["player"], breaker=d["breaker"],
             ball_in_hand=d["ball_in_hand"], kitchen_shot=d["kitchen_shot"],
@@ -269,7 +314,8 @@ class State:
             shots=d["shots"], innings=d["innings"], rack_seed=int(d["rack_seed"]),
             racks=d["racks"], position=tuple((p[0], p[1]) for p in d["position"]),
             on_table=tuple(bool(f) for f in d["on_table"]), targets=tuple(targets),
-            snooker=d.get("snooker"), snooker_figures=snooker_figures, carom=d.get("carom"))
+            snooker=d.get("snooker"), snooker_figures=snooker_figures, carom=d.get("carom"),
+            carom_figures=carom_figures)
 
     def to_dict(self) -> dict:
         """The records' JSON form (rack_seed as a decimal string, on_table as 0/1)."""
@@ -372,7 +418,8 @@ class LegalActions:
         return cls(kinds=tuple(kinds), place=d["place"], must_place=d["must_place"],
                    shoot=d["shoot"], push_out=d["push_out"], call=d["call"],
                    targets=tuple(d["targets"]), choices=tuple(d["choices"]),
-                   nominate=tuple(d["nominate"]), must_nominate=d["must_nominate"])
+                   nominate=tuple(d.get("nominate", ())),
+                   must_nominate=d.get("must_nominate", False))
 
 
 @dataclass(frozen=True)
@@ -387,9 +434,10 @@ class Outcome:
     spotted, winner, text, call_made), ``events`` the shot's events (dicts
     as in a result file, but ``balls`` are ball numbers and a
     ``ball_pocket`` event gives ``pocket`` as an index and
-    ``pocket_name``), ``facts`` what the rules read from them (miscue,
-    first_hit, pocketed, pocket_of, cushion_after_contact,
-    object_balls_to_cushion) and ``state`` the state after the action.
+    ``pocket_name``), ``facts`` what the rules read from them (first_hit,
+    pocketed, pocket_of, miscue, cushion_after_contact,
+    object_balls_to_cushion; the web facade's ``facts``) and ``state`` the
+    state after the action.
     """
 
     index: int
@@ -520,7 +568,11 @@ class Game:
         """The state before action i (0: the start; ``actions``: now)."""
         d = json.loads(self._g.state_json(int(i)))
         targets = self._g.targets() if i == self._g.actions else ()
-        return State.from_dict(d, targets, self._g.snooker_figures(int(i)))
+        figures = self._g.figures_json(int(i))
+        figures = None if figures is None else _figures(json.loads(figures))
+        return State.from_dict(d, targets,
+                               snooker_figures=figures if d["game"] == "snooker" else None,
+                               carom_figures=figures if d["game"] == "three_cushion" else None)
 
     @property
     def positions(self) -> np.ndarray:
@@ -552,15 +604,18 @@ class Game:
 
     @property
     def table(self) -> dict:
-        """The table: size, length and width (m), head_string (x of the
-        kitchen's edge), head_spot, foot_spot, ball_radius, ball_count and
-        the pockets (name, centre, radius) in the index order calls use;
+        """The table, as the web facade's ``bs_game_table`` gives it (one
+        encoding, src/io/table_json.hpp; points as (x, y) tuples): size,
+        length and width (m), ball_radius, ball_count, head_string (x of the
+        kitchen's edge), head_spot, foot_spot, outline (the corners), walls
+        (kind, a, b, normal, radius, name) and the pockets (centre, radius,
+        name) in the index order calls use;
         in snooker also ``snooker``: the markings (``baulk_line``, the x of
         the baulk line; ``d_centre`` and ``d_radius``, the D; ``spots``, the
         six colour spots by colour); in three-cushion also ``carom``: the
         markings (``top_spot``, ``centre_spot``, ``bottom_spot``, the two
         ``starting_spots`` and the ``diamonds`` on the cushion lines)."""
-        return self._g.table()
+        return _table(json.loads(self._g.table_json()))
 
     @property
     def seed(self) -> int:
@@ -611,7 +666,7 @@ class Game:
 
     def legal_actions(self) -> LegalActions:
         """What the player to act may do now (nothing once the game is over)."""
-        return LegalActions._of(self._g.legal())
+        return LegalActions._of(json.loads(self._g.legal_json()))
 
     def check(self, action) -> Optional[str]:
         """Why the rules refuse ``action`` now, or None if they allow it.

@@ -2,10 +2,11 @@
 // GameSession), _core.PlayerCore (a Player made by name) and
 // _core.match_json, and the pieces of a match spread over many machines
 // (match_chunk, add_match_summaries, record_file_name, determinism_hash).
-// Actions, states and rulings cross the boundary as the
-// JSON of src/io/game_json.hpp, the one encoding the records use, so a
-// Python dict and a record's action are the same thing; the Python
-// classes (python/breakshot/game.py) build on these.
+// Actions, states, rulings, legal actions, facts, events, figures and the
+// table cross the boundary as the JSON text of src/io/game_json.hpp and
+// table_json.hpp, the one encoding the records and the web facade use, so
+// a Python dict and a record's action or the facade's table are the same
+// thing; the Python classes (python/breakshot/game.py) build on these.
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -36,6 +37,7 @@
 #include "breakshot/snooker.hpp"
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
+#include "io/table_json.hpp"
 
 namespace breakshot::python {
 
@@ -137,61 +139,6 @@ Action parse_action(const std::string& text) {
   return a;
 }
 
-/// An event of a game shot: as the result file writes it, but the balls
-/// are ball numbers (0 the cue ball) and a pocket is given by its index
-/// (the index a call names) and its name.
-ojson event_json(const Table& table, const Event& e) {
-  ojson j = ojson::object();
-  j["time"] = e.time;
-  j["type"] = std::string(to_string(e.type));
-  ojson balls = ojson::array();
-  balls.push_back(e.ball);
-  if (e.type == EventType::ball_ball) balls.push_back(e.other);
-  j["balls"] = balls;
-  switch (e.type) {
-    case EventType::ball_cushion:
-      if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < table.walls.size()) {
-        j["cushion"] = table.walls[static_cast<std::size_t>(e.wall)].name;
-      } else {
-        j["cushion"] = nullptr;
-      }
-      break;
-    case EventType::ball_pocket:
-      j["pocket"] = e.pocket;
-      if (e.pocket >= 0 && static_cast<std::size_t>(e.pocket) < table.pockets.size()) {
-        j["pocket_name"] = table.pockets[static_cast<std::size_t>(e.pocket)].name;
-      } else {
-        j["pocket_name"] = nullptr;
-      }
-      break;
-    case EventType::ball_off_table:
-      if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < table.walls.size()) {
-        j["cushion"] = table.walls[static_cast<std::size_t>(e.wall)].name;
-      }
-      break;
-    case EventType::ball_slate:
-    case EventType::state_change:
-      j["from"] = std::string(to_string(e.from));
-      j["to"] = std::string(to_string(e.to));
-      break;
-    case EventType::cue_strike:
-    case EventType::ball_ball:
-      break;
-  }
-  return j;
-}
-
-ojson facts_json(const ShotFacts& f) {
-  ojson j = ojson::object();
-  j["miscue"] = f.miscue;
-  j["first_hit"] = f.first_hit;
-  j["pocketed"] = f.pocketed;
-  j["pocket_of"] = f.pocket_of;
-  j["cushion_after_contact"] = f.cushion_after_contact;
-  j["object_balls_to_cushion"] = f.object_balls_to_cushion;
-  return j;
-}
-
 /// A game in progress: one GameSession.
 class GameCore {
  public:
@@ -238,50 +185,33 @@ class GameCore {
     return session_.rules().targets(session_.state());
   }
 
-  py::dict legal() const {
-    py::dict d;
-    if (session_.over()) {
-      d["place"] = "none";
-      d["must_place"] = false;
-      d["shoot"] = false;
-      d["push_out"] = false;
-      d["call"] = false;
-      d["targets"] = py::list();
-      d["choices"] = py::list();
-      d["nominate"] = py::list();
-      d["must_nominate"] = false;
-      return d;
-    }
-    const LegalActions la = session_.rules().legal_actions(session_.state());
-    d["place"] = std::string(to_string(la.place));
-    d["must_place"] = la.must_place;
-    d["shoot"] = la.shoot;
-    d["push_out"] = la.push_out;
-    d["call"] = la.call;
-    d["targets"] = la.targets;
-    py::list choices;
-    for (const Choice c : la.choices) choices.append(std::string(to_string(c)));
-    d["choices"] = choices;
-    d["nominate"] = la.nominate;
-    d["must_nominate"] = la.must_nominate;
-    return d;
+  /// What the player to act may do (json_io::legal_actions_json; nothing
+  /// once the game is over), as JSON text.
+  std::string legal_json() const {
+    const GameState& st = session_.state();
+    return json_io::legal_actions_json(session_.rules().legal_actions(st), st.game).dump();
   }
 
-  /// Snooker: what the table leaves before action i (game.hpp):
-  /// {"balls_on", "points_remaining", "snookers_required": [2]}; None in
-  /// the other games.
-  std::optional<py::dict> snooker_figures(std::size_t i) const {
+  /// Snooker: what the table leaves before action i
+  /// (json_io::snooker_figures_json); three-cushion: the figures of the
+  /// score panel before action i (json_io::carom_figures_json); as JSON
+  /// text, or None in the other games.
+  std::optional<std::string> figures_json(std::size_t i) const {
     if (i > session_.actions()) {
       throw std::invalid_argument("state_before: action " + std::to_string(i) + " of " +
                                   std::to_string(session_.actions()));
     }
     const GameState& s = session_.state_before(i);
-    if (!s.snooker) return std::nullopt;
-    py::dict d;
-    d["balls_on"] = snooker_balls_on(s);
-    d["points_remaining"] = snooker_points_remaining(s);
-    d["snookers_required"] = py::make_tuple(snookers_required(s, 0), snookers_required(s, 1));
-    return d;
+    if (s.snooker) return json_io::snooker_figures_json(s).dump();
+    if (s.carom) {
+      if (i == session_.actions()) {
+        return json_io::carom_figures_json(session_.rules(), s, session_.record()).dump();
+      }
+      GameRecord before = session_.record();
+      before.actions.resize(i);
+      return json_io::carom_figures_json(session_.rules(), s, before).dump();
+    }
+    return std::nullopt;
   }
 
   std::optional<std::string> check(const std::string& action_text) const {
@@ -310,9 +240,11 @@ class GameCore {
     j["intended"] = ra.intended ? json_io::strike_json(*ra.intended) : ojson(nullptr);
     j["noise_seed"] = json_io::seed_json(ra.noise_seed);
     j["ruling"] = json_io::ruling_json(out.ruling);
-    j["facts"] = facts_json(out.facts);
+    j["facts"] = json_io::facts_json(out.facts);
     ojson events = ojson::array();
-    for (const Event& e : out.events) events.push_back(event_json(session_.rules().table(), e));
+    for (const Event& e : out.events) {
+      events.push_back(json_io::game_event_json(session_.rules().table(), e));
+    }
     j["events"] = events;
     j["state"] = json_io::state_json(out.state);
     return j.dump();
@@ -322,61 +254,8 @@ class GameCore {
 
   std::string record_text() const { return write_record(session_.record()); }
 
-  py::dict table() const {
-    const Rules& rules = session_.rules();
-    const Table& t = rules.table();
-    py::dict d;
-    d["size"] = rules.config().table_size;
-    d["length"] = t.length;
-    d["width"] = t.width;
-    d["head_string"] = rules.head_string();
-    d["head_spot"] = py::make_tuple(t.head_spot.x, t.head_spot.y);
-    d["foot_spot"] = py::make_tuple(t.foot_spot.x, t.foot_spot.y);
-    d["ball_radius"] = rules.config().ball_radius;
-    d["ball_count"] = rules.ball_count();
-    py::list pockets;
-    for (const Pocket& p : t.pockets) {
-      py::dict pd;
-      pd["name"] = p.name;
-      pd["centre"] = py::make_tuple(p.centre.x, p.centre.y);
-      pd["radius"] = p.radius;
-      pockets.append(pd);
-    }
-    d["pockets"] = pockets;
-    if (rules.config().game == GameType::snooker) {
-      // The markings (snooker.hpp's SnookerMarks).
-      const SnookerMarks m = snooker_marks();
-      const auto xy = [](Vec2 v) { return py::make_tuple(v.x, v.y); };
-      py::dict k;
-      k["baulk_line"] = m.baulk_x;
-      k["d_centre"] = xy(m.d_centre);
-      k["d_radius"] = m.d_radius;
-      py::dict spots;
-      spots["yellow"] = xy(m.yellow);
-      spots["green"] = xy(m.green);
-      spots["brown"] = xy(m.brown);
-      spots["blue"] = xy(m.blue);
-      spots["pink"] = xy(m.pink);
-      spots["black"] = xy(m.black);
-      k["spots"] = spots;
-      d["snooker"] = k;
-    }
-    if (rules.config().game == GameType::three_cushion) {
-      // The markings (carom.hpp's CaromMarks).
-      const CaromMarks m = carom_marks();
-      const auto xy = [](Vec2 v) { return py::make_tuple(v.x, v.y); };
-      py::dict k;
-      k["top_spot"] = xy(m.top_spot);
-      k["centre_spot"] = xy(m.centre_spot);
-      k["bottom_spot"] = xy(m.bottom_spot);
-      k["starting_spots"] = py::make_tuple(xy(m.starting_spots[0]), xy(m.starting_spots[1]));
-      py::list diamonds;
-      for (const Vec2 p : m.diamonds) diamonds.append(xy(p));
-      k["diamonds"] = diamonds;
-      d["carom"] = k;
-    }
-    return d;
-  }
+  /// The table and its markings (json_io::game_table_json) as JSON text.
+  std::string table_json() const { return json_io::game_table_json(session_.rules()).dump(); }
 
   std::string config_json() const { return json_io::config_json(session_.rules().config()).dump(); }
   std::string physics_json() const {
@@ -647,14 +526,14 @@ void bind_game(py::module_& m) {
       .def_static("from_record", &GameCore::from_record, py::arg("text"))
       .def("state_json", &GameCore::state_json, py::arg("i"))
       .def("targets", &GameCore::targets)
-      .def("snooker_figures", &GameCore::snooker_figures, py::arg("i"))
-      .def("legal", &GameCore::legal)
+      .def("figures_json", &GameCore::figures_json, py::arg("i"))
+      .def("legal_json", &GameCore::legal_json)
       .def("check", &GameCore::check, py::arg("action"))
       .def("check_placement", &GameCore::check_placement, py::arg("x"), py::arg("y"))
       .def("apply", &GameCore::apply, py::arg("action"))
       .def("take_back_to", &GameCore::take_back_to, py::arg("n"))
       .def("record_text", &GameCore::record_text)
-      .def("table", &GameCore::table)
+      .def("table_json", &GameCore::table_json)
       .def("config_json", &GameCore::config_json)
       .def("physics_json", &GameCore::physics_json)
       .def("names", &GameCore::names)

@@ -2,7 +2,10 @@
 
 #include "io/game_json.hpp"
 
+#include <algorithm>
+#include <array>
 #include <climits>
+#include <cstddef>
 #include <string_view>
 #include <utility>
 #include <variant>
@@ -303,6 +306,88 @@ ojson legal_actions_json(const LegalActions& la, GameType game) {
     j["nominate"] = ints(la.nominate);
     j["must_nominate"] = la.must_nominate;
   }
+  return j;
+}
+
+ojson facts_json(const ShotFacts& f) {
+  ojson j = ojson::object();
+  j["first_hit"] = f.first_hit;
+  j["pocketed"] = f.pocketed;
+  j["pocket_of"] = f.pocket_of;
+  j["miscue"] = f.miscue;
+  j["cushion_after_contact"] = f.cushion_after_contact;
+  j["object_balls_to_cushion"] = f.object_balls_to_cushion;
+  return j;
+}
+
+ojson game_event_json(const Table& table, const Event& e) {
+  const auto wall_name = [&table](int wall) -> ojson {
+    if (wall >= 0 && static_cast<std::size_t>(wall) < table.walls.size()) {
+      return table.walls[static_cast<std::size_t>(wall)].name;
+    }
+    return nullptr;
+  };
+  ojson j = ojson::object();
+  j["time"] = e.time;
+  j["type"] = to_string(e.type);
+  ojson balls = ojson::array();
+  balls.push_back(e.ball);
+  if (e.type == EventType::ball_ball) balls.push_back(e.other);
+  j["balls"] = balls;
+  switch (e.type) {
+    case EventType::ball_cushion:
+      j["cushion"] = wall_name(e.wall);
+      break;
+    case EventType::ball_pocket:
+      j["pocket"] = e.pocket;
+      if (e.pocket >= 0 && static_cast<std::size_t>(e.pocket) < table.pockets.size()) {
+        j["pocket_name"] = table.pockets[static_cast<std::size_t>(e.pocket)].name;
+      } else {
+        j["pocket_name"] = nullptr;
+      }
+      break;
+    case EventType::ball_off_table:
+      if (e.wall >= 0 && static_cast<std::size_t>(e.wall) < table.walls.size()) {
+        j["cushion"] = wall_name(e.wall);
+      }
+      break;
+    case EventType::ball_slate:
+    case EventType::state_change:
+      j["from"] = to_string(e.from);
+      j["to"] = to_string(e.to);
+      break;
+    case EventType::cue_strike:
+    case EventType::ball_ball:
+      break;
+  }
+  return j;
+}
+
+ojson snooker_figures_json(const GameState& s) {
+  ojson j = ojson::object();
+  j["balls_on"] = snooker_balls_on(s);
+  j["points_remaining"] = snooker_points_remaining(s);
+  j["snookers_required"] = ojson::array({snookers_required(s, 0), snookers_required(s, 1)});
+  return j;
+}
+
+ojson carom_figures_json(const Rules& rules, const GameState& state, const GameRecord& record) {
+  std::array<int, 2> highest{0, 0};
+  for (const CaromInning& inning : carom_innings(record)) {
+    int& h = highest[static_cast<std::size_t>(inning.player)];
+    h = std::max(h, inning.points);
+  }
+  ojson j = ojson::object();
+  j["cue_ball"] = rules.cue_ball(state);
+  ojson average = ojson::array();
+  for (std::size_t p = 0; p < 2; ++p) {
+    const int innings = state.carom ? state.carom->innings[p] : 0;
+    const int score = state.carom ? state.carom->score[p] : 0;
+    average.push_back(innings > 0 ? static_cast<double>(score) / static_cast<double>(innings)
+                                  : 0.0);
+  }
+  j["general_average"] = average;
+  j["highest_run"] = ojson::array({highest[0], highest[1]});
   return j;
 }
 

@@ -1,6 +1,7 @@
 // The JSON of the game's types: one encoding of each, used by game
-// records (record_json.cpp) and by the web facade (web/api).
-// Internal: not installed.
+// records (record_json.cpp), the web facade (web/api), the C API (capi/)
+// and the Python binding (python/src). The table and its markings are in
+// table_json.hpp. Internal: not installed.
 //
 //   GameConfig  {"game", "table_size", "ball_radius", "ball_mass", "max_shots",
 //                three-cushion only: "carom": {"target", "innings_limit",
@@ -59,6 +60,7 @@
 
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
+#include "breakshot/record.hpp"
 #include "io/json_read.hpp"
 
 namespace breakshot::json_io {
@@ -82,6 +84,23 @@ ojson action_json(const Action& a);
 /// snooker also "nominate" and "must_nominate". Not part of records: the
 /// facade's game state and the C API's legal actions.
 ojson legal_actions_json(const LegalActions& la, GameType game);
+/// What the rules read from a shot's events (ShotFacts): {"first_hit",
+/// "pocketed", "pocket_of", "miscue", "cushion_after_contact",
+/// "object_balls_to_cushion"}. Not part of records.
+ojson facts_json(const ShotFacts& f);
+/// An event of a game shot as a result file writes it (time, type, balls,
+/// then cushion, pocket or from/to), but its balls are ball numbers (0 the
+/// cue ball) and a pocket is its index in `table` (the index a call
+/// names) with its "pocket_name". Not part of records.
+ojson game_event_json(const Table& table, const Event& e);
+/// Snooker: what the table leaves (game.hpp): {"balls_on",
+/// "points_remaining", "snookers_required": [2]}. Not part of records.
+ojson snooker_figures_json(const GameState& s);
+/// Three-cushion: {"cue_ball": the ball the player to act strikes,
+/// "general_average": [2] (points per inning begun), "highest_run": [2]},
+/// for `state` after the actions of `record` (record.hpp's carom_innings,
+/// the inning in progress included). Not part of records.
+ojson carom_figures_json(const Rules& rules, const GameState& state, const GameRecord& record);
 
 // ---------------------------------------------------------------------------
 // Decoding

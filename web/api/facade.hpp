@@ -288,13 +288,12 @@ std::unique_ptr<BsGame> make_game(const GameConfigInput& in);
 
 /// bs_game_state's reply: the state as game records write it
 /// (src/io/game_json.hpp), then the seats, the number of actions and what
-/// the rules allow next; in snooker also "snooker_figures": {"balls_on",
-/// "points_remaining", "snookers_required": [2]} (game.hpp's
-/// snooker_balls_on, snooker_points_remaining, snookers_required).
+/// the rules allow next (legal_actions_json); in snooker also
+/// "snooker_figures" (snooker_figures_json), in three-cushion
+/// "carom_figures" (carom_figures_json).
 ojson state_json(const BsGame& g);
-/// bs_game_table's reply: the table's size, lines, spots, outline, walls
-/// and pockets, and the ball radius; in snooker also "snooker": the
-/// markings (snooker.hpp's SnookerMarks).
+/// bs_game_table's reply: the table as src/io/table_json.hpp encodes it
+/// (game_table_json), its markings included.
 ojson table_json(const BsGame& g);
 /// bs_game_check_placement's reply: {"ok"} and, if not, {"reason"}.
 std::string check_placement_json(const BsGame& g, double x, double y);

@@ -42,6 +42,7 @@
 #include "breakshot/record.hpp"
 #include "breakshot/session.hpp"
 #include "breakshot/snooker.hpp"
+#include "io/table_json.hpp"
 
 namespace facade {
 
@@ -50,12 +51,12 @@ namespace {
 // ---------------------------------------------------------------------------
 // Writing replies
 
-// The one JSON of each of the game's types (src/io/game_json.hpp), as
-// game records write them.
+// The one JSON of each of the game's types (src/io/game_json.hpp, as game
+// records write them) and of the table (src/io/table_json.hpp).
 using bs::json_io::action_json;
+using bs::json_io::facts_json;
 using bs::json_io::ruling_json;
 using bs::json_io::strike_json;
-using bs::json_io::vec2_json;
 
 ojson ints_json(const std::vector<int>& v) {
   ojson a = ojson::array();
@@ -69,29 +70,6 @@ std::string_view action_kind(const bs::Action& a) {
   return "decide";
 }
 
-ojson facts_json(const bs::ShotFacts& f) {
-  ojson j = ojson::object();
-  j["first_hit"] = f.first_hit;
-  j["pocketed"] = ints_json(f.pocketed);
-  j["pocket_of"] = ints_json(f.pocket_of);
-  j["miscue"] = f.miscue;
-  j["cushion_after_contact"] = f.cushion_after_contact;
-  j["object_balls_to_cushion"] = f.object_balls_to_cushion;
-  return j;
-}
-
-std::string_view wall_kind(bs::WallKind k) {
-  switch (k) {
-    case bs::WallKind::segment:
-      return "segment";
-    case bs::WallKind::corner:
-      return "corner";
-    case bs::WallKind::arc:
-      return "arc";
-  }
-  return "segment";
-}
-
 // ---------------------------------------------------------------------------
 // Games
 
@@ -102,73 +80,6 @@ bs::Action read_action(const json& doc) {
   bs::Action action;
   r.must(r.action(doc, "", action));
   return action;
-}
-
-/// What the snooker page shows beside the score (game.hpp).
-ojson snooker_figures_json(const bs::GameState& s) {
-  ojson j = ojson::object();
-  j["balls_on"] = ints_json(bs::snooker_balls_on(s));
-  j["points_remaining"] = bs::snooker_points_remaining(s);
-  j["snookers_required"] = ojson::array({bs::snookers_required(s, 0), bs::snookers_required(s, 1)});
-  return j;
-}
-
-/// The markings of the snooker table (snooker.hpp).
-ojson snooker_marks_json() {
-  const bs::SnookerMarks m = bs::snooker_marks();
-  ojson j = ojson::object();
-  j["baulk_line"] = m.baulk_x;
-  j["d_centre"] = vec2_json(m.d_centre);
-  j["d_radius"] = m.d_radius;
-  ojson spots = ojson::object();
-  spots["yellow"] = vec2_json(m.yellow);
-  spots["green"] = vec2_json(m.green);
-  spots["brown"] = vec2_json(m.brown);
-  spots["blue"] = vec2_json(m.blue);
-  spots["pink"] = vec2_json(m.pink);
-  spots["black"] = vec2_json(m.black);
-  j["spots"] = spots;
-  return j;
-}
-
-/// The markings of the carom table (carom.hpp).
-ojson carom_marks_json() {
-  const bs::CaromMarks m = bs::carom_marks();
-  ojson j = ojson::object();
-  j["top_spot"] = vec2_json(m.top_spot);
-  j["centre_spot"] = vec2_json(m.centre_spot);
-  j["bottom_spot"] = vec2_json(m.bottom_spot);
-  j["starting_spots"] =
-      ojson::array({vec2_json(m.starting_spots[0]), vec2_json(m.starting_spots[1])});
-  ojson diamonds = ojson::array();
-  for (const bs::Vec2 d : m.diamonds) diamonds.push_back(vec2_json(d));
-  j["diamonds"] = diamonds;
-  return j;
-}
-
-/// What the three-cushion page shows beside the score: the ball the
-/// player to act strikes, and each player's general average (points per
-/// inning begun) and highest run, the inning in progress included. Runs
-/// as the match summary counts them (record.hpp's carom_innings).
-ojson carom_figures_json(const BsGame& g) {
-  const bs::GameState& s = g.state();
-  std::array<int, 2> highest{0, 0};
-  for (const bs::CaromInning& inning : bs::carom_innings(g.record())) {
-    int& h = highest[static_cast<std::size_t>(inning.player)];
-    h = std::max(h, inning.points);
-  }
-  ojson j = ojson::object();
-  j["cue_ball"] = g.rules().cue_ball(s);
-  ojson average = ojson::array();
-  for (std::size_t p = 0; p < 2; ++p) {
-    const int innings = s.carom ? s.carom->innings[p] : 0;
-    const int score = s.carom ? s.carom->score[p] : 0;
-    average.push_back(innings > 0 ? static_cast<double>(score) / static_cast<double>(innings)
-                                  : 0.0);
-  }
-  j["general_average"] = average;
-  j["highest_run"] = ojson::array({highest[0], highest[1]});
-  return j;
 }
 
 bs::AiLevel web_level(const std::string& name, const std::optional<std::int64_t>& budget) {
@@ -297,49 +208,14 @@ ojson state_json(const BsGame& g) {
   j["players"] = ojson::array({g.seats[0], g.seats[1]});
   j["actions"] = g.record().actions.size();
   j["legal"] = bs::json_io::legal_actions_json(g.rules().legal_actions(s), s.game);
-  if (s.game == bs::GameType::snooker) j["snooker_figures"] = snooker_figures_json(s);
-  if (s.game == bs::GameType::three_cushion) j["carom_figures"] = carom_figures_json(g);
+  if (s.game == bs::GameType::snooker) j["snooker_figures"] = bs::json_io::snooker_figures_json(s);
+  if (s.game == bs::GameType::three_cushion) {
+    j["carom_figures"] = bs::json_io::carom_figures_json(g.rules(), s, g.record());
+  }
   return j;
 }
 
-ojson table_json(const BsGame& g) {
-  const bs::Table& t = g.rules().table();
-  ojson j = ojson::object();
-  j["size"] = g.rules().config().table_size;
-  j["length"] = t.length;
-  j["width"] = t.width;
-  j["ball_radius"] = g.rules().config().ball_radius;
-  j["head_string"] = g.rules().head_string();
-  j["head_spot"] = vec2_json(t.head_spot);
-  j["foot_spot"] = vec2_json(t.foot_spot);
-  ojson outline = ojson::array();
-  for (const bs::Vec2 v : t.outline) outline.push_back(vec2_json(v));
-  j["outline"] = outline;
-  ojson walls = ojson::array();
-  for (const bs::Wall& w : t.walls) {
-    ojson wj = ojson::object();
-    wj["kind"] = wall_kind(w.kind);
-    wj["a"] = vec2_json(w.a);
-    wj["b"] = vec2_json(w.b);
-    wj["normal"] = vec2_json(w.normal);
-    wj["radius"] = w.radius;
-    wj["name"] = w.name;
-    walls.push_back(wj);
-  }
-  j["walls"] = walls;
-  ojson pockets = ojson::array();
-  for (const bs::Pocket& p : t.pockets) {
-    ojson pj = ojson::object();
-    pj["centre"] = vec2_json(p.centre);
-    pj["radius"] = p.radius;
-    pj["name"] = p.name;
-    pockets.push_back(pj);
-  }
-  j["pockets"] = pockets;
-  if (g.rules().config().game == bs::GameType::snooker) j["snooker"] = snooker_marks_json();
-  if (g.rules().config().game == bs::GameType::three_cushion) j["carom"] = carom_marks_json();
-  return j;
-}
+ojson table_json(const BsGame& g) { return bs::json_io::game_table_json(g.rules()); }
 
 ojson turn_json(const bs::RecordedAction& ra) {
   const bs::GameState& after = ra.after;
