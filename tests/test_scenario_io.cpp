@@ -108,7 +108,7 @@ TEST(ScenarioRead, ContractExample) {
   ASSERT_TRUE(s.sample_dt.has_value());
   EXPECT_EQ(*s.sample_dt, 0.01);
   EXPECT_EQ(s.max_events, 1000000u);
-  EXPECT_EQ(s.table.shape, "rectangle");
+  EXPECT_EQ(s.table.shape, bs::TableShape::rectangle);
   ASSERT_EQ(s.table.walls.size(), 4u);
 }
 
@@ -173,7 +173,7 @@ TEST(ScenarioRead, PolygonTable) {
   doc["balls"] = {{{"id", "a"}, {"position", {-0.5, 0.0}}, {"velocity", {1.0, 0.0}}},
                   {{"id", "b"}, {"position", {0.5, -0.25}}}};
   const auto s = read_ok(doc);
-  EXPECT_EQ(s.table.shape, "polygon");
+  EXPECT_EQ(s.table.shape, bs::TableShape::polygon);
   EXPECT_EQ(s.table.walls.front().name, "edge0");
 }
 

@@ -64,10 +64,10 @@ constexpr double kTouchTolerance = 1e-9;
 /// the pool ball.
 BallSpec default_ball(const Table& table) {
   BallSpec spec;
-  if (table.shape == "snooker") {
+  if (table.shape == TableShape::snooker) {
     spec.radius = kSnookerBallRadius;
     spec.mass = kSnookerBallMass;
-  } else if (table.shape == "carom") {
+  } else if (table.shape == TableShape::carom) {
     spec.radius = kCaromBallRadius;
     spec.mass = kCaromBallMass;
   }
@@ -348,9 +348,14 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
   const std::string shape_path = "table.shape";
   if (shape_v == nullptr) return fail(shape_path, "missing required field");
   if (!shape_v->is_string()) return fail(shape_path, expected("a string", *shape_v));
-  const std::string shape = shape_v->get<std::string>();
+  const std::string name = shape_v->get<std::string>();
+  TableShape shape{};
+  if (!parse_table_shape(name, shape)) {
+    return fail(shape_path, "unknown shape \"" + name +
+                                "\" (expected rectangle, polygon, pool, snooker or carom)");
+  }
 
-  if (shape == "rectangle") {
+  if (shape == TableShape::rectangle) {
     if (!known_fields(*t, path, {"shape", "min", "max", "cushion_restitution",
                                  "cushion_friction", "nose_height", "cushion_model", "cushion_height",
                                  "cushion_compliance_ratio"})) {
@@ -374,7 +379,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
     return read_cushion(*t, s);
   }
 
-  if (shape == "polygon") {
+  if (shape == TableShape::polygon) {
     if (!known_fields(*t, path, {"shape", "vertices", "cushion_restitution",
                                  "cushion_friction", "nose_height", "cushion_model", "cushion_height",
                                  "cushion_compliance_ratio"})) {
@@ -398,7 +403,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
     return read_cushion(*t, s);
   }
 
-  if (shape == "pool") {
+  if (shape == TableShape::pool) {
     if (!known_fields(*t, path, {"shape", "size", "cushion_restitution", "cushion_friction",
                                  "nose_height", "cushion_model", "cushion_height",
                                  "cushion_compliance_ratio"})) {
@@ -419,7 +424,7 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
     return read_cushion(*t, s);
   }
 
-  if (shape == "snooker") {
+  if (shape == TableShape::snooker) {
     if (!known_fields(*t, path,
                       {"shape", "cushion_restitution", "cushion_friction", "nose_height",
                        "cushion_model", "cushion_height",
@@ -430,18 +435,14 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
     return read_cushion(*t, s);
   }
 
-  if (shape == "carom") {
-    if (!known_fields(*t, path,
-                      {"shape", "cushion_restitution", "cushion_friction", "nose_height",
-                       "cushion_model", "cushion_height",
-                       "cushion_compliance_ratio"})) {
-      return false;
-    }
-    s.table = make_carom_table();
-    return read_cushion(*t, s);
+  // TableShape::carom
+  if (!known_fields(*t, path,
+                    {"shape", "cushion_restitution", "cushion_friction", "nose_height",
+                     "cushion_model", "cushion_height", "cushion_compliance_ratio"})) {
+    return false;
   }
-  return fail(shape_path, "unknown shape \"" + shape +
-                              "\" (expected rectangle, polygon, pool, snooker or carom)");
+  s.table = make_carom_table();
+  return read_cushion(*t, s);
 }
 
 /// The optional cushion fields of a table object, read after the table
@@ -452,8 +453,9 @@ bool ScenarioReader::read_table(const json& doc, Scenario& s) {
 /// the physics model is "pool" (the lab's tables); elsewhere they are
 /// errors rather than values silently unused.
 bool ScenarioReader::read_cushion(const json& t, Scenario& s) {
-  const bool pool_cushions = s.table.shape == "pool" || s.table.shape == "snooker" ||
-                             s.table.shape == "carom" || s.physics.model == Model::pool;
+  const TableShape shape = s.table.shape;
+  const bool pool_cushions = shape == TableShape::pool || shape == TableShape::snooker ||
+                             shape == TableShape::carom || s.physics.model == Model::pool;
   for (const char* key : {"cushion_friction", "nose_height", "cushion_model", "cushion_height",
                           "cushion_compliance_ratio"}) {
     if (find(t, key) != nullptr && !pool_cushions) {
@@ -557,7 +559,8 @@ bool ScenarioReader::read_balls(const json& doc, Scenario& s) {
 bool ScenarioReader::read_rack(const json& v, Scenario& s) {
   const std::string path = "rack";
   if (!require_object(v, path)) return false;
-  if (s.table.shape != "pool" && s.table.shape != "snooker" && s.table.shape != "carom") {
+  const TableShape shape = s.table.shape;
+  if (shape != TableShape::pool && shape != TableShape::snooker && shape != TableShape::carom) {
     return fail(path,
                 "a rack needs a pool table (\"table\": {\"shape\": \"pool\", ...}), "
                 "the snooker table (\"table\": {\"shape\": \"snooker\"}) or the carom "
@@ -582,23 +585,23 @@ bool ScenarioReader::read_rack(const json& v, Scenario& s) {
   }
   const bool snooker = game == "snooker";
   const bool carom = game == "three_cushion";
-  if (snooker && s.table.shape != "snooker") {
+  if (snooker && shape != TableShape::snooker) {
     return fail(game_path,
                 "the snooker rack needs the snooker table (\"table\": {\"shape\": "
                 "\"snooker\"}), not a " +
-                    s.table.shape + " table");
+                    std::string(to_string(shape)) + " table");
   }
-  if (carom && s.table.shape != "carom") {
+  if (carom && shape != TableShape::carom) {
     return fail(game_path,
                 "the three_cushion rack needs the carom table (\"table\": {\"shape\": "
                 "\"carom\"}), not a " +
-                    s.table.shape + " table");
+                    std::string(to_string(shape)) + " table");
   }
-  if (!snooker && !carom && s.table.shape != "pool") {
+  if (!snooker && !carom && shape != TableShape::pool) {
     return fail(game_path, "the " + game +
                                " rack needs a pool table (\"table\": {\"shape\": "
                                "\"pool\", ...}), not the " +
-                               s.table.shape + " table");
+                               std::string(to_string(shape)) + " table");
   }
 
   // The seed of the rack's tiny random gaps: a whole number >= 0, so that

@@ -241,7 +241,7 @@ std::string trajectories_svg(const Scenario& scenario, const std::vector<Sample>
   }
 
   // The snooker table's markings: the baulk line, the D and the six spots.
-  if (scenario.table.shape == "snooker") {
+  if (scenario.table.shape == TableShape::snooker) {
     const SnookerMarks m = snooker_marks();
     const std::string line = "stroke=\"#2f5d2f\" stroke-width=\"1\" fill=\"none\"";
     out += "<line x1=\"" + px(p.X(m.baulk_x)) + "\" y1=\"" + px(p.Y(0.0)) + "\" x2=\"" +
@@ -259,7 +259,7 @@ std::string trajectories_svg(const Scenario& scenario, const std::vector<Sample>
 
   // The carom table's markings: the three spots on the long string, the
   // two starting spots and the diamonds (drawn on the cushion lines).
-  if (scenario.table.shape == "carom") {
+  if (scenario.table.shape == TableShape::carom) {
     const CaromMarks m = carom_marks();
     out += "<g fill=\"#2f5d2f\">\n";
     for (const Vec2 spot :
