@@ -126,7 +126,6 @@ class ScenarioReader : public json_io::Reader {
   bool read_samples(const json& doc, Scenario& s);
   bool read_max_events(const json& doc, Scenario& s);
   bool check_run_ends(const json& doc, const Scenario& s);
-  bool check_pool_run_ends(const std::string& how, const Scenario& s);
   bool check_sample_count(const Scenario& s);
   ScenarioError locate(ScenarioError e, const Scenario& s) const;
 
@@ -978,97 +977,14 @@ bool ScenarioReader::read_max_events(const json& doc, Scenario& s) {
   return true;
 }
 
-/// "rest" must come: in the ideal model, the friction model without
-/// deceleration, or the pool model without one of its frictions, a
-/// moving ball never stops and the run would only end at max_events,
-/// long after the user wanted an answer.
+/// "rest" must come (check_run_ends, src/physics/validate.cpp). When the
+/// file gives no "until", the message says that "rest" is the default.
 bool ScenarioReader::check_run_ends(const json& doc, const Scenario& s) {
-  if (!s.until.rest) return true;
-  const bool given = find(doc, "until") != nullptr;
-  const std::string how = given ? "\"rest\" never comes" :
-                                  "no \"until\" given and the default \"rest\" never comes";
-  if (s.physics.model == Model::pool) return check_pool_run_ends(how, s);
-  for (std::size_t i = 0; i < s.balls.size(); ++i) {
-    const double speed = norm(s.start[i].velocity);
-    if (speed == 0.0) continue;
-    const std::string who = "ball '" + s.balls[i].id + "' moves";
-    if (s.physics.model == Model::ideal) {
-      return fail("until", how + ": nothing slows a ball in the ideal model and " + who +
-                               "; give {\"time\": T}");
-    }
-    if (s.physics.model == Model::friction) {
-      if (s.physics.deceleration == 0.0) {
-        return fail("until", how + ": physics.deceleration is 0 and " + who +
-                                 "; give {\"time\": T} or a positive deceleration");
-      }
-      if (!std::isfinite(speed / s.physics.deceleration)) {
-        return fail("until", how + ": physics.deceleration is too small for " + who +
-                                 " ever to stop; give {\"time\": T}");
-      }
-    }
-  }
-  return true;
-}
-
-/// The pool model's balls slow by friction forces mu m g: with gravity
-/// or the sliding or rolling friction at 0, a ball that moves never
-/// stops (a sliding ball never rolls, a rolling ball never stops), and
-/// with the spinning friction at 0 a ball spinning about the vertical
-/// never stops spinning. A cue strike moves its ball, and spins it about
-/// the vertical when it has side english (a != 0). Spin about the
-/// vertical that cushions or other balls give later is not foreseen here:
-/// such a run ends at max_events.
-bool ScenarioReader::check_pool_run_ends(const std::string& how, const Scenario& s) {
-  const PhysicsParams& ph = s.physics;
-  const auto stops = [&](double amount, double mu) {
-    return mu * ph.gravity > 0.0 && std::isfinite(amount / (mu * ph.gravity));
-  };
-  const auto refuse = [&](const std::string& why) {
-    return fail("until", how + ": " + why + "; give {\"time\": T}");
-  };
-  for (std::size_t i = 0; i < s.balls.size(); ++i) {
-    const BallState& b = s.start[i];
-    const double r = s.balls[i].radius;
-    const bool struck = s.cue && static_cast<std::size_t>(s.cue->ball) == i;
-    // A bound on the speed of the ball and of its contact point with the
-    // cloth; a struck ball leaves at less than twice the cue's speed.
-    double speed = norm(b.velocity) + r * norm(Vec2{b.spin.x, b.spin.y});
-    if (struck) speed = std::max(speed, 2.0 * s.cue->strike.speed);
-    double spin_z = std::fabs(b.spin.z);
-    const bool english = struck && s.cue->strike.a != 0.0;
-    const std::string who = struck ? "the cue strikes ball '" + s.balls[i].id + "'"
-                                   : "ball '" + s.balls[i].id + "' moves";
-    if (speed > 0.0) {
-      if (ph.gravity == 0.0) return refuse("physics.gravity is 0 (no friction acts) and " + who);
-      if (ph.sliding_friction == 0.0) {
-        return refuse("physics.sliding_friction is 0, so a sliding ball never starts rolling, "
-                      "and " + who);
-      }
-      if (ph.rolling_friction == 0.0) {
-        return refuse("physics.rolling_friction is 0, so a rolling ball never stops, and " + who);
-      }
-      if (!stops(speed, ph.sliding_friction) || !stops(speed, ph.rolling_friction)) {
-        return refuse("the frictions are too small for the ball to stop after " + who);
-      }
-    }
-    if (spin_z > 0.0 || english) {
-      const std::string spinner =
-          spin_z > 0.0 ? "ball '" + s.balls[i].id + "' spins about the vertical"
-                       : "the cue strike's side english (cue.a) spins ball '" +
-                             s.balls[i].id + "' about the vertical";
-      if (ph.gravity == 0.0) return refuse("physics.gravity is 0 (no friction acts) and " + spinner);
-      if (ph.spinning_friction == 0.0) {
-        return refuse("physics.spinning_friction is 0 and " + spinner);
-      }
-      // The spin decays at 5 mu_sp g / (2 R).
-      if (english) spin_z = std::max(spin_z, 2.0 * s.cue->strike.speed / r);
-      if (!stops(spin_z * r, ph.spinning_friction)) {
-        return refuse("physics.spinning_friction is too small for the spin of ball '" +
-                      s.balls[i].id + "' ever to stop");
-      }
-    }
-  }
-  return true;
+  auto problem = breakshot::check_run_ends(s);
+  if (!problem) return true;
+  if (find(doc, "until") == nullptr)
+    problem->reason = "no \"until\" given and the default " + problem->reason;
+  return fail(std::move(problem->path), std::move(problem->reason));
 }
 
 bool ScenarioReader::check_sample_count(const Scenario& s) {
