@@ -23,7 +23,7 @@
 #include <string_view>
 #include <vector>
 
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <variant>
 
-#include "breakshot/airborne.hpp"
+#include "physics/airborne.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/pool.hpp"
 #include "breakshot/scenario_io.hpp"

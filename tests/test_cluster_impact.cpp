@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-#include "breakshot/cluster_impact.hpp"
+#include "physics/cluster_impact.hpp"
 #include "breakshot/rack.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/scenario_io.hpp"

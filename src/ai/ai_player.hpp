@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"

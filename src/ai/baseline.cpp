@@ -65,7 +65,7 @@
 
 #include "baseline_carom.hpp"
 #include "breakshot/ai.hpp"
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/pool.hpp"

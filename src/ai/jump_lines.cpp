@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "breakshot/airborne.hpp"
+#include "physics/airborne.hpp"
 #include "breakshot/pool.hpp"
 #include "shot_generator.hpp"
 

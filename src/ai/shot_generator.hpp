@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"

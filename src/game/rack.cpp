@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "breakshot/carom.hpp"
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "breakshot/snooker.hpp"
 
 namespace breakshot {

@@ -82,7 +82,7 @@
 #include <cmath>
 #include <limits>
 
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "breakshot/pool.hpp"
 
 namespace breakshot {

@@ -29,7 +29,7 @@
 #include <vector>
 
 #include "breakshot/ball.hpp"
-#include "breakshot/cluster_impact.hpp"
+#include "physics/cluster_impact.hpp"
 #include "breakshot/event.hpp"
 #include "breakshot/pool.hpp"
 #include "breakshot/scenario.hpp"

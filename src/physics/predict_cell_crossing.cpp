@@ -3,7 +3,7 @@
 // (event_loop.cpp, take_cell_crossing).
 #include <algorithm>
 
-#include "breakshot/roots.hpp"
+#include "physics/roots.hpp"
 #include "physics/engine.hpp"
 #include "physics/prediction.hpp"
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "breakshot/roots.hpp"
+#include "physics/roots.hpp"
 #include "physics/engine.hpp"
 #include "physics/prediction.hpp"
 
