@@ -33,9 +33,9 @@
 #include <limits>
 
 #include "physics/airborne.hpp"
-#include "physics/roots.hpp"
 #include "physics/engine.hpp"
 #include "physics/prediction.hpp"
+#include "physics/roots.hpp"
 
 namespace breakshot::detail {
 
