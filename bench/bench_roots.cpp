@@ -6,7 +6,7 @@
 // them. Each benchmark cycles through a fixed set of 4096 cases so that
 // branch prediction cannot learn one input.
 #include "breakshot/ball.hpp"
-#include "breakshot/roots.hpp"
+#include "physics/roots.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -23,9 +23,9 @@
 #include <string_view>
 #include <vector>
 
-#include "breakshot/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
+#include "physics/detmath.hpp"
 
 namespace {
 

@@ -52,10 +52,20 @@ foreach(layer ${BREAKSHOT_LAYERS})
         if(NOT layer STREQUAL "io")
           list(APPEND problems "${rel} (layer ${layer}) includes nlohmann/json: JSON is io's")
         endif()
-      elseif(line MATCHES "\"(physics|game|ai|io|web)/[A-Za-z0-9_]+\\.hpp\"")
-        if(NOT CMAKE_MATCH_1 STREQUAL layer)
-          list(APPEND problems
-            "${rel} (layer ${layer}) includes an internal header of ${CMAKE_MATCH_1}")
+      elseif(line MATCHES "\"(physics|game|ai|io|web)/([A-Za-z0-9_]+)\\.hpp\"")
+        set(other ${CMAKE_MATCH_1})
+        set(h ${CMAKE_MATCH_2})
+        if(rel MATCHES "^include/")
+          # Internal headers are not installed: a public header that
+          # needed one would break every program outside the tree.
+          list(APPEND problems "${rel} is public but includes the internal ${other}/${h}.hpp")
+        elseif(NOT other STREQUAL layer)
+          # A layer below may share a few internal headers upward.
+          if(NOT (other IN_LIST BREAKSHOT_LAYER_${layer}_BELOW AND
+                  h IN_LIST BREAKSHOT_LAYER_${other}_SHARED))
+            list(APPEND problems
+              "${rel} (layer ${layer}) includes an internal header of ${other} (${other}/${h}.hpp)")
+          endif()
         endif()
       endif()
     endforeach()

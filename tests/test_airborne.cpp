@@ -12,11 +12,11 @@
 #include <string>
 #include <variant>
 
-#include "breakshot/airborne.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/pool.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
+#include "physics/airborne.hpp"
 
 using namespace breakshot;
 

@@ -51,7 +51,7 @@ ScenarioError read_bad(const json& doc) {
 
 TEST(CaromTable, GeometryAndMarkings) {
   const Table t = make_carom_table();
-  EXPECT_EQ(t.shape, "carom");
+  EXPECT_EQ(t.shape, TableShape::carom);
   EXPECT_DOUBLE_EQ(t.length, kL);
   EXPECT_DOUBLE_EQ(t.width, kW);
   EXPECT_TRUE(t.pockets.empty());
@@ -146,7 +146,7 @@ TEST(CaromScenario, TheTableTheDefaultBallAndTheRack) {
     "balls": [{"id": "a", "position": [1.0, 0.5]}]
   })");
   Scenario s = read_ok(doc);
-  EXPECT_EQ(s.table.shape, "carom");
+  EXPECT_EQ(s.table.shape, TableShape::carom);
   ASSERT_EQ(s.balls.size(), 1u);
   EXPECT_DOUBLE_EQ(s.balls[0].radius, kCaromBallRadius);
   EXPECT_DOUBLE_EQ(s.balls[0].mass, kCaromBallMass);

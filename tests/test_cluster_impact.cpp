@@ -8,12 +8,12 @@
 #include <variant>
 #include <vector>
 
-#include "breakshot/cluster_impact.hpp"
 #include "breakshot/rack.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
+#include "physics/cluster_impact.hpp"
 
 namespace {
 

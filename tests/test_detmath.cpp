@@ -1,4 +1,4 @@
-// The portable maths functions (include/breakshot/detmath.hpp): accuracy
+// The portable maths functions (src/physics/detmath.hpp): accuracy
 // against the platform's libm over sweeps and fixed-seed random samples,
 // special values, identities, values computed to high precision, and that
 // each function is a pure function of its argument's bits (with a pinned
@@ -14,7 +14,7 @@
 #include <limits>
 #include <string>
 
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 
 namespace dm = breakshot::dm;
 

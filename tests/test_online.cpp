@@ -28,8 +28,8 @@
 #include <thread>
 #include <vector>
 
-#include "breakshot/rooms.hpp"
-#include "breakshot/serve.hpp"
+#include "web/rooms.hpp"
+#include "web/serve.hpp"
 #include "web_api.hpp"
 
 namespace {

@@ -243,7 +243,7 @@ TEST(PoolRead, TableSizes) {
     json doc = pool_base();
     doc["table"]["size"] = z.name;
     const bs::Scenario s = read_ok(doc);
-    EXPECT_EQ(s.table.shape, "pool") << z.name;
+    EXPECT_EQ(s.table.shape, bs::TableShape::pool) << z.name;
     EXPECT_EQ(s.table.length, z.length) << z.name;
     EXPECT_EQ(s.table.width, z.width) << z.name;
     EXPECT_EQ(s.table.pockets.size(), 6u) << z.name;
@@ -255,10 +255,10 @@ TEST(PoolRead, PoolTableWorksWithEveryModel) {
   json doc = pool_base();
   doc["physics"]["model"] = "friction";
   doc["balls"][0]["velocity"] = {1.0, 0.0};
-  EXPECT_EQ(read_ok(doc).table.shape, "pool");
+  EXPECT_EQ(read_ok(doc).table.shape, bs::TableShape::pool);
   doc["physics"]["model"] = "ideal";
   doc["until"] = {{"time", 1.0}};
-  EXPECT_EQ(read_ok(doc).table.shape, "pool");
+  EXPECT_EQ(read_ok(doc).table.shape, bs::TableShape::pool);
 }
 
 TEST(PoolInvalid, TableSize) {

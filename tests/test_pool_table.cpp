@@ -12,6 +12,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "breakshot/rack.hpp"
@@ -41,11 +42,32 @@ const char* const kSidePockets[] = {"side_bottom", "side_top"};
 // ---------------------------------------------------------------------------
 // Tables
 
+// The shapes' names are the scenario format's text ("table.shape").
+TEST(TableShapes, NamesRoundTripAndOthersAreRefused) {
+  const std::pair<TableShape, const char*> names[] = {{TableShape::rectangle, "rectangle"},
+                                                      {TableShape::polygon, "polygon"},
+                                                      {TableShape::pool, "pool"},
+                                                      {TableShape::snooker, "snooker"},
+                                                      {TableShape::carom, "carom"}};
+  for (const auto& [shape, name] : names) {
+    EXPECT_EQ(to_string(shape), name);
+    TableShape read = TableShape::rectangle;
+    ASSERT_TRUE(parse_table_shape(name, read)) << name;
+    EXPECT_EQ(read, shape) << name;
+  }
+  for (const char* other : {"", "Pool", "pool ", "billiards"}) {
+    TableShape read = TableShape::carom;
+    EXPECT_FALSE(parse_table_shape(other, read)) << other;
+    EXPECT_EQ(read, TableShape::carom) << "left alone on a refusal: " << other;
+  }
+  EXPECT_EQ(make_rectangle({0, 0}, {1, 1}).shape, TableShape::rectangle);
+}
+
 TEST(PoolTable, DimensionsAndSpots) {
   for (const Size& s : kSizes) {
     SCOPED_TRACE(s.name);
     const Table t = make_pool_table(s.name);
-    EXPECT_EQ(t.shape, "pool");
+    EXPECT_EQ(t.shape, TableShape::pool);
     EXPECT_DOUBLE_EQ(t.length, s.length);
     EXPECT_DOUBLE_EQ(t.width, s.width);
     EXPECT_DOUBLE_EQ(t.head_spot.x, s.length / 4);
@@ -616,13 +638,13 @@ TEST(PoolTable, BedInsideOutline) {
                             make_pool_table("9ft"), make_snooker_table()};
   for (const Table& t : tables) {
     Table walked = t;
-    walked.shape = "polygon";
+    walked.shape = TableShape::polygon;
     int checked = 0;
     for (int i = 0; i <= 400; ++i) {
       for (int j = 0; j <= 200; ++j) {
         const Vec2 p{t.length * (i == 0 ? 1e-9 : i == 400 ? 1.0 - 1e-9 : i / 400.0),
                      t.width * (j == 0 ? 1e-9 : j == 200 ? 1.0 - 1e-9 : j / 200.0)};
-        ASSERT_TRUE(contains(walked, p)) << t.shape << " " << p.x << " " << p.y;
+        ASSERT_TRUE(contains(walked, p)) << to_string(t.shape) << " " << p.x << " " << p.y;
         EXPECT_TRUE(contains(t, p));
         ++checked;
       }

@@ -1,4 +1,4 @@
-// The rooms of online play (include/breakshot/rooms.hpp), without
+// The rooms of online play (src/web/rooms.hpp), without
 // sockets: messages in, effects out.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "breakshot/record_io.hpp"
-#include "breakshot/rooms.hpp"
+#include "web/rooms.hpp"
 #include "web_api.hpp"
 
 namespace {

@@ -7,7 +7,7 @@
 // ~1e-33 relative, so the difference from first_contact is the latter's
 // own error, which we measure in ulps. At the end, first_contact is also
 // compared bit for bit with a frozen copy of its full method (see there).
-#include "breakshot/roots.hpp"
+#include "physics/roots.hpp"
 
 #include <gtest/gtest.h>
 

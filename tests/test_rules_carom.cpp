@@ -116,7 +116,7 @@ Outcome rule(const GameState& s, std::vector<Event> ev, const Shoot& sh = shoot(
 TEST(ThreeCushion, StartsFromTheUmbPosition) {
   const Rules& r = rules();
   EXPECT_EQ(r.ball_count(), 3);
-  EXPECT_EQ(r.table().shape, "carom");
+  EXPECT_EQ(r.table().shape, TableShape::carom);
   const CaromMarks m = carom_marks();
   for (int breaker = 0; breaker < 2; ++breaker) {
     const GameState s = r.start(7, breaker);

@@ -108,7 +108,7 @@ TEST(ScenarioRead, ContractExample) {
   ASSERT_TRUE(s.sample_dt.has_value());
   EXPECT_EQ(*s.sample_dt, 0.01);
   EXPECT_EQ(s.max_events, 1000000u);
-  EXPECT_EQ(s.table.shape, "rectangle");
+  EXPECT_EQ(s.table.shape, bs::TableShape::rectangle);
   ASSERT_EQ(s.table.walls.size(), 4u);
 }
 
@@ -173,7 +173,7 @@ TEST(ScenarioRead, PolygonTable) {
   doc["balls"] = {{{"id", "a"}, {"position", {-0.5, 0.0}}, {"velocity", {1.0, 0.0}}},
                   {{"id", "b"}, {"position", {0.5, -0.25}}}};
   const auto s = read_ok(doc);
-  EXPECT_EQ(s.table.shape, "polygon");
+  EXPECT_EQ(s.table.shape, bs::TableShape::polygon);
   EXPECT_EQ(s.table.walls.front().name, "edge0");
 }
 
@@ -717,6 +717,65 @@ TEST(Validate, RejectsWhatAFileCannotSay) {
   e = bs::validate(s);
   ASSERT_TRUE(e);
   EXPECT_EQ(e->path, "samples.dt");
+}
+
+/// A scenario built in code is refused a run to rest that never ends,
+/// with the reader's words (tests/test_pool_io.cpp reads the same from
+/// files).
+TEST(Validate, RefusesARunToRestThatNeverEnds) {
+  auto s = code_scenario();
+  s.start[0].velocity = {1.0, 0.0};
+  s.until.rest = true;
+  auto e = bs::validate(s);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->path, "until");
+  EXPECT_EQ(e->reason,
+            "\"rest\" never comes: nothing slows a ball in the ideal model and ball 'a' "
+            "moves; give {\"time\": T}");
+  EXPECT_EQ(bs::check_run_ends(s)->reason, e->reason);
+
+  // The friction model stops it, given a deceleration.
+  s.physics = bs::default_physics(bs::Model::friction);
+  EXPECT_FALSE(bs::validate(s));
+  s.physics.deceleration = 0.0;
+  e = bs::validate(s);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->path, "until");
+  EXPECT_NE(e->reason.find("physics.deceleration is 0 and ball 'a' moves"), std::string::npos)
+      << e->reason;
+
+  // The pool model: a cue strike with side english and no spinning friction.
+  s.physics = bs::default_physics(bs::Model::pool);
+  s.start[0].velocity = {};
+  s.cue = bs::CueSpec{};
+  s.cue->ball = 0;
+  s.cue->strike.speed = 1.0;
+  s.cue->strike.a = 0.2;
+  EXPECT_FALSE(bs::check_run_ends(s));
+  s.physics.spinning_friction = 0.0;
+  e = bs::check_run_ends(s);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->reason,
+            "\"rest\" never comes: physics.spinning_friction is 0 and the cue strike's side "
+            "english (cue.a) spins ball 'a' about the vertical; give {\"time\": T}");
+
+  // A run to a time always ends.
+  s.until.rest = false;
+  EXPECT_FALSE(bs::check_run_ends(s));
+}
+
+/// A file without "until" is told that "rest" is the default.
+TEST(ReadScenario, SaysRestIsTheDefaultWhenUntilIsMissing) {
+  json doc = {{"physics", {{"model", "friction"}, {"deceleration", 0.0}}},
+              {"table", {{"shape", "rectangle"}, {"min", {0, 0}}, {"max", {2, 1}}}},
+              {"balls", {{{"id", "a"}, {"position", {0.5, 0.5}}, {"velocity", {1, 0}}}}}};
+  auto read = bs::read_scenario(doc.dump());
+  ASSERT_TRUE(std::holds_alternative<bs::ScenarioError>(read));
+  const auto& e = std::get<bs::ScenarioError>(read);
+  EXPECT_EQ(e.path, "until");
+  EXPECT_EQ(e.reason,
+            "no \"until\" given and the default \"rest\" never comes: physics.deceleration is "
+            "0 and ball 'a' moves; give {\"time\": T} or a positive deceleration");
 }
 
 /// 10,000 balls: the overlap check must not compare every pair.

@@ -15,7 +15,7 @@
 #include <string>
 #include <thread>
 
-#include "breakshot/serve.hpp"
+#include "web/serve.hpp"
 
 namespace fs = std::filesystem;
 using breakshot::http::answer;

@@ -74,7 +74,7 @@ Axis axis_of(const Table& t, const std::string& pocket) {
 
 TEST(SnookerTable, PlayingAreaAndBall) {
   const Table t = make_snooker_table();
-  EXPECT_EQ(t.shape, "snooker");
+  EXPECT_EQ(t.shape, TableShape::snooker);
   // WPBSA Section 1, 1(a): 11 ft 8.5 in x 5 ft 10 in (3569 x 1778 mm).
   EXPECT_DOUBLE_EQ(t.length, kL);
   EXPECT_DOUBLE_EQ(t.width, kW);
@@ -557,7 +557,7 @@ TEST(SnookerBreak, TheBreakOffScenario) {
     EXPECT_EQ(b.radius, kSnookerBallRadius);
     EXPECT_EQ(b.mass, kSnookerBallMass);
   }
-  EXPECT_EQ(s.table.shape, "snooker");
+  EXPECT_EQ(s.table.shape, TableShape::snooker);
   // The cue ball in the D: in baulk, within the semicircle.
   const SnookerMarks m = snooker_marks();
   const Vec2 cue = s.start[0].position;
@@ -619,7 +619,7 @@ json snooker_doc() {
 
 TEST(SnookerScenario, TheTableAndItsDefaultBall) {
   const Scenario s = read_ok(snooker_doc());
-  EXPECT_EQ(s.table.shape, "snooker");
+  EXPECT_EQ(s.table.shape, TableShape::snooker);
   EXPECT_EQ(s.table.length, kL);
   EXPECT_EQ(s.table.pockets.size(), 6U);
   ASSERT_EQ(s.balls.size(), 1U);

@@ -65,7 +65,7 @@
 #include "breakshot/match_io.hpp"
 #include "breakshot/record_io.hpp"
 #include "breakshot/scenario_io.hpp"
-#include "breakshot/serve.hpp"
+#include "web/serve.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/version.hpp"
 

@@ -1,18 +1,17 @@
 // Every public header of the library in one include, layer by layer
-// (docs/architecture.md, "Layers"). The server of `breakshot serve`
-// (serve.hpp) is part of the command, not of the library.
+// (docs/architecture.md, "Layers"). The engine's internals (root finders,
+// deterministic maths, cluster and airborne impulses) live beside their
+// sources in src/, and so does the server of `breakshot serve`
+// (src/web/serve.hpp), which is part of the command, not of the library.
 #pragma once
 
 // physics: tables, balls, the event-driven simulation, measures
 #include "breakshot/ball.hpp"
 #include "breakshot/carom.hpp"
-#include "breakshot/cluster_impact.hpp"
-#include "breakshot/detmath.hpp"
 #include "breakshot/event.hpp"
 #include "breakshot/lab.hpp"
 #include "breakshot/physics.hpp"
 #include "breakshot/pool.hpp"
-#include "breakshot/roots.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/snooker.hpp"

@@ -58,8 +58,18 @@ struct ScenarioError {
 
 /// Checks what a scenario built in code (not read from a file) must
 /// satisfy before it is simulated: positive finite radii and masses,
-/// restitutions in [0, 1], unique ids, balls inside the table and not
-/// overlapping a wall or each other. Returns the first problem found.
+/// restitutions in [0, 1], unique ids, a run that ends (check_run_ends),
+/// balls inside the table and not overlapping a wall or each other.
+/// Returns the first problem found.
 std::optional<ScenarioError> validate(const Scenario& scenario);
+
+/// Whether a run until "rest" ever ends: in the ideal model, the
+/// friction model without deceleration, or the pool model without one of
+/// its frictions (or gravity), a ball that moves or spins never stops and
+/// the run would only end at max_events. Returns the problem at "until"
+/// ("\"rest\" never comes: ..."), or nothing for a run to a time.
+/// validate() includes this check; the ball indices and the cue must be
+/// valid (validate() checks them first).
+std::optional<ScenarioError> check_run_ends(const Scenario& scenario);
 
 }  // namespace breakshot

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "breakshot/pool.hpp"
@@ -39,9 +40,26 @@ struct Pocket {
   std::string name;  ///< "top_left", "side_bottom", ...
 };
 
+/// The kinds of table. Scenario files name them in "table.shape".
+enum class TableShape : std::uint8_t {
+  rectangle,  ///< make_rectangle
+  polygon,    ///< make_polygon
+  pool,       ///< make_pool_table
+  snooker,    ///< make_snooker_table (snooker.hpp)
+  carom,      ///< make_carom_table (carom.hpp)
+};
+
+/// The name of a shape in scenario files: "rectangle", "polygon",
+/// "pool", "snooker" or "carom".
+std::string_view to_string(TableShape shape);
+
+/// The shape named `name` (as to_string writes it); false, leaving `out`
+/// alone, for any other text.
+bool parse_table_shape(std::string_view name, TableShape& out);
+
 /// A table: its outline (for drawing and containment) and its walls.
 struct Table {
-  std::string shape;          ///< "rectangle", "polygon", "pool" or "snooker"
+  TableShape shape = TableShape::rectangle;
   std::vector<Vec2> outline;  ///< counter-clockwise boundary
   std::vector<Wall> walls;
   std::vector<Pocket> pockets;  ///< pool and snooker tables only

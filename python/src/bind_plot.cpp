@@ -136,7 +136,7 @@ py::dict frames_dict(const Scenario& s, const std::vector<Sample>& frames) {
 
 py::dict table_dict(const Table& t) {
   py::dict d;
-  d["shape"] = t.shape;
+  d["shape"] = std::string(to_string(t.shape));
   Array outline = array({static_cast<py::ssize_t>(t.outline.size()), 2});
   auto o = outline.mutable_unchecked<2>();
   for (std::size_t k = 0; k < t.outline.size(); ++k) {
@@ -155,7 +155,7 @@ py::dict table_dict(const Table& t) {
   d["width"] = t.width;
   d["head_spot"] = py::make_tuple(t.head_spot.x, t.head_spot.y);
   d["foot_spot"] = py::make_tuple(t.foot_spot.x, t.foot_spot.y);
-  if (t.shape == "snooker") {
+  if (t.shape == TableShape::snooker) {
     // Its markings (snooker.hpp's SnookerMarks): baulk line, D, spots.
     const SnookerMarks k = snooker_marks();
     const auto xy = [](Vec2 v) { return py::make_tuple(v.x, v.y); };

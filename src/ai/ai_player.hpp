@@ -26,13 +26,13 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
-#include "breakshot/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
 #include "budget.hpp"
 #include "evaluate.hpp"
 #include "geometry.hpp"
+#include "physics/detmath.hpp"
 #include "policy.hpp"
 
 namespace breakshot::ai_detail {

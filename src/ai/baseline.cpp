@@ -65,7 +65,6 @@
 
 #include "baseline_carom.hpp"
 #include "breakshot/ai.hpp"
-#include "breakshot/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/player.hpp"
 #include "breakshot/pool.hpp"
@@ -73,6 +72,7 @@
 #include "breakshot/table.hpp"
 #include "geometry.hpp"
 #include "judge.hpp"
+#include "physics/detmath.hpp"
 #include "policy.hpp"
 
 namespace breakshot {

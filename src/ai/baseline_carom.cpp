@@ -30,7 +30,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "geometry.hpp"
 
 namespace breakshot::ai {

@@ -44,7 +44,7 @@
 #include <vector>
 
 #include "baseline_carom.hpp"
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "breakshot/noise.hpp"
 #include "evaluate.hpp"
 #include "geometry.hpp"

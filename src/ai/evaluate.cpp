@@ -17,7 +17,7 @@
 #include <cmath>
 #include <thread>
 
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "geometry.hpp"
 #include "policy.hpp"
 

@@ -9,8 +9,8 @@
 #include <optional>
 #include <vector>
 
-#include "breakshot/airborne.hpp"
 #include "breakshot/pool.hpp"
+#include "physics/airborne.hpp"
 #include "shot_generator.hpp"
 
 namespace breakshot::ai_detail::shot_gen {

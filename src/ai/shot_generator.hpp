@@ -25,12 +25,12 @@
 #include <vector>
 
 #include "breakshot/ai.hpp"
-#include "breakshot/detmath.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 #include "geometry.hpp"
 #include "judge.hpp"
+#include "physics/detmath.hpp"
 #include "policy.hpp"
 
 namespace breakshot::ai_detail::shot_gen {

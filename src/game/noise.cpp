@@ -32,7 +32,7 @@
 #include <string_view>
 #include <system_error>
 
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 
 namespace breakshot {
 

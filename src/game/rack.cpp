@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "breakshot/carom.hpp"
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "breakshot/snooker.hpp"
 
 namespace breakshot {
@@ -144,11 +144,11 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
   std::vector<Vec2> spots;
   std::vector<int> balls;
   if ((game == "eight_ball" || game == "nine_ball" || game == "ten_ball") &&
-      (table.shape == "snooker" || table.shape == "carom")) {
+      (table.shape == TableShape::snooker || table.shape == TableShape::carom)) {
     throw std::invalid_argument("the " + game + " rack needs a pool table");
   }
   if (game == "three_cushion") {
-    if (table.shape != "carom") {
+    if (table.shape != TableShape::carom) {
       throw std::invalid_argument("the three_cushion rack needs the carom table");
     }
     // UMB's starting position: the red on the top spot, the opponent's
@@ -206,7 +206,7 @@ std::vector<RackedBall> make_rack(const std::string& game, const Table& table, d
       if (b == 0) b = rest[next++];
     }
   } else if (game == "snooker") {
-    if (table.shape != "snooker") {
+    if (table.shape != TableShape::snooker) {
       throw std::invalid_argument("the snooker rack needs a snooker table");
     }
     return snooker_rack(table, radius, draws);

@@ -1,4 +1,4 @@
-// Impulses in three dimensions (include/breakshot/airborne.hpp), derived
+// Impulses in three dimensions (src/physics/airborne.hpp), derived
 // here from impulse-momentum for solid spheres (I = 2/5 m R^2).
 //
 // A fixed contact. The ball (velocity v, spin w, radius R) touches
@@ -41,7 +41,7 @@
 //
 // Only arithmetic, sqrt and the project's exp are used: results are
 // bit-identical wherever IEEE doubles are.
-#include "breakshot/airborne.hpp"
+#include "physics/airborne.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -82,8 +82,8 @@
 #include <cmath>
 #include <limits>
 
-#include "breakshot/detmath.hpp"
 #include "breakshot/pool.hpp"
+#include "physics/detmath.hpp"
 
 namespace breakshot {
 

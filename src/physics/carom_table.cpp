@@ -56,7 +56,7 @@ CaromMarks carom_marks() {
 
 Table make_carom_table() {
   Table t;
-  t.shape = "carom";
+  t.shape = TableShape::carom;
   t.length = kLength;
   t.width = kWidth;
   t.outline = {{0.0, 0.0}, {kLength, 0.0}, {kLength, kWidth}, {0.0, kWidth}};

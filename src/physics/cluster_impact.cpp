@@ -10,7 +10,7 @@
 // (Johnson, Contact Mechanics, 1985, ch. 4), which is how a numerical
 // study of the perfectly racked break obtained its ball speeds
 // (docs/physics-core.md, "Clusters", compares them).
-#include "breakshot/cluster_impact.hpp"
+#include "physics/cluster_impact.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@
 #include <cstring>
 #include <limits>
 
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 
 namespace breakshot {
 

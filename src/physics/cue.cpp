@@ -75,7 +75,7 @@
 
 #include <cmath>
 
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 
 namespace breakshot {
 

@@ -1,4 +1,4 @@
-// Portable transcendental functions (include/breakshot/detmath.hpp).
+// Portable transcendental functions (src/physics/detmath.hpp).
 //
 // Everything here is + - * /, std::frexp, std::ldexp, std::floor,
 // std::fabs, comparisons and integer arithmetic, evaluated in a fixed
@@ -15,7 +15,7 @@
 // the nearest double hi and the double nearest the remainder, and 2/pi is
 // its exact binary expansion. The polynomial coefficients are the Taylor
 // coefficients, rounded to double.
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -29,12 +29,12 @@
 #include <vector>
 
 #include "breakshot/ball.hpp"
-#include "breakshot/cluster_impact.hpp"
 #include "breakshot/event.hpp"
 #include "breakshot/pool.hpp"
 #include "breakshot/scenario.hpp"
 #include "breakshot/simulation.hpp"
 #include "physics/cell_grid.hpp"
+#include "physics/cluster_impact.hpp"
 #include "physics/event_queue.hpp"
 #include "physics/motion.hpp"
 

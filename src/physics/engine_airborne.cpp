@@ -3,7 +3,7 @@
 // the walls met in flight (the rail's face below its nose, the nose from
 // above, and the line of the nose crossed above it: the ball leaves the
 // table), and impacts of two balls whose centres are not level. The
-// impulses themselves are in airborne.cpp (include/breakshot/airborne.hpp).
+// impulses themselves are in airborne.cpp (src/physics/airborne.hpp).
 //
 // A rail in three dimensions. Every wall of the table is a rail whose
 // nose, at height h above the slate (table.cushion_height, else
@@ -32,10 +32,10 @@
 #include <cmath>
 #include <limits>
 
-#include "breakshot/airborne.hpp"
-#include "breakshot/roots.hpp"
+#include "physics/airborne.hpp"
 #include "physics/engine.hpp"
 #include "physics/prediction.hpp"
+#include "physics/roots.hpp"
 
 namespace breakshot::detail {
 

@@ -2,6 +2,7 @@
 #include "breakshot/ball.hpp"
 #include "breakshot/event.hpp"
 #include "breakshot/physics.hpp"
+#include "breakshot/table.hpp"
 
 namespace breakshot {
 
@@ -26,6 +27,28 @@ bool parse_ball_ball_model(std::string_view name, BallBallModel& out) {
   for (BallBallModel m : {BallBallModel::friction, BallBallModel::mathavan_2014}) {
     if (name == to_string(m)) {
       out = m;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string_view to_string(TableShape shape) {
+  switch (shape) {
+    case TableShape::rectangle: return "rectangle";
+    case TableShape::polygon: return "polygon";
+    case TableShape::pool: return "pool";
+    case TableShape::snooker: return "snooker";
+    case TableShape::carom: return "carom";
+  }
+  return "?";
+}
+
+bool parse_table_shape(std::string_view name, TableShape& out) {
+  for (TableShape shape : {TableShape::rectangle, TableShape::polygon, TableShape::pool,
+                           TableShape::snooker, TableShape::carom}) {
+    if (name == to_string(shape)) {
+      out = shape;
       return true;
     }
   }

@@ -84,7 +84,7 @@ Table make_pool_table(const std::string& size) {
   }
 
   Table t = pocket_table::six_pocket_table(L, W, kCorner, kSide);
-  t.shape = "pool";
+  t.shape = TableShape::pool;
   t.head_spot = {0.25 * L, 0.5 * W};
   t.foot_spot = {0.75 * L, 0.5 * W};
   return t;

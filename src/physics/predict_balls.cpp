@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "breakshot/roots.hpp"
+#include "physics/roots.hpp"
 
 namespace breakshot::detail {
 

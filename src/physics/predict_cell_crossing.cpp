@@ -3,9 +3,9 @@
 // (event_loop.cpp, take_cell_crossing).
 #include <algorithm>
 
-#include "breakshot/roots.hpp"
 #include "physics/engine.hpp"
 #include "physics/prediction.hpp"
+#include "physics/roots.hpp"
 
 namespace breakshot::detail {
 

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "breakshot/roots.hpp"
 #include "physics/engine.hpp"
 #include "physics/prediction.hpp"
+#include "physics/roots.hpp"
 
 namespace breakshot::detail {
 

@@ -39,7 +39,7 @@
 //
 // Everything is on the stack and the polynomial degree is a template
 // parameter, so the loops unroll; this runs about 30 times per event.
-#include "breakshot/roots.hpp"
+#include "physics/roots.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -47,7 +47,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "breakshot/detmath.hpp"
+#include "physics/detmath.hpp"
 #include "physics/error_free.hpp"
 
 namespace breakshot {

@@ -77,7 +77,7 @@ SnookerMarks snooker_marks() {
 
 Table make_snooker_table() {
   Table t = pocket_table::six_pocket_table(kLength, kWidth, kCorner, kMiddle);
-  t.shape = "snooker";
+  t.shape = TableShape::snooker;
   const SnookerMarks m = snooker_marks();
   t.head_spot = m.brown;
   t.foot_spot = m.pink;

@@ -65,7 +65,7 @@ Table make_rectangle(Vec2 min, Vec2 max) {
     throw std::invalid_argument("min must be below and left of max");
   }
   Table t;
-  t.shape = "rectangle";
+  t.shape = TableShape::rectangle;
   t.outline = {{min.x, min.y}, {max.x, min.y}, {max.x, max.y}, {min.x, max.y}};
   t.walls.push_back(make_segment({min.x, max.y}, {min.x, min.y}, {1, 0}, "left"));
   t.walls.push_back(make_segment({max.x, min.y}, {max.x, max.y}, {-1, 0}, "right"));
@@ -127,7 +127,7 @@ Table make_polygon(const std::vector<Vec2>& v) {
   if (!(std::abs(area) > 0.0)) throw std::invalid_argument("the polygon has zero area");
   const double turn = area > 0.0 ? 1.0 : -1.0;  // +1 if counter-clockwise
   Table t;
-  t.shape = "polygon";
+  t.shape = TableShape::polygon;
   t.outline = v;
   if (turn < 0.0) std::reverse(t.outline.begin(), t.outline.end());
   t.min = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
@@ -196,7 +196,8 @@ bool contains(const Table& table, Vec2 p) {
   // the cushion noses and out around the pockets (a test checks it against
   // the crossing-number test below): the common case without the walk
   // around the outline's hundreds of points.
-  if ((table.shape == "pool" || table.shape == "snooker" || table.shape == "carom") && p.x > 0.0 &&
+  if ((table.shape == TableShape::pool || table.shape == TableShape::snooker ||
+       table.shape == TableShape::carom) && p.x > 0.0 &&
       p.x < table.length && p.y > 0.0 && p.y < table.width) {
     return true;
   }

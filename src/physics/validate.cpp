@@ -351,7 +351,103 @@ std::optional<std::pair<std::size_t, std::size_t>> first_overlap(const Scenario&
   return best;
 }
 
+/// The pool model's balls slow by friction forces mu m g: with gravity
+/// or the sliding or rolling friction at 0, a ball that moves never
+/// stops (a sliding ball never rolls, a rolling ball never stops), and
+/// with the spinning friction at 0 a ball spinning about the vertical
+/// never stops spinning. A cue strike moves its ball, and spins it about
+/// the vertical when it has side english (a != 0). Spin about the
+/// vertical that cushions or other balls give later is not foreseen here:
+/// such a run ends at max_events.
+std::optional<ScenarioError> check_pool_run_ends(const std::string& how, const Scenario& s) {
+  const PhysicsParams& ph = s.physics;
+  const auto stops = [&](double amount, double mu) {
+    return mu * ph.gravity > 0.0 && std::isfinite(amount / (mu * ph.gravity));
+  };
+  const auto refuse = [&](const std::string& why) {
+    return ScenarioError{"until", how + ": " + why + "; give {\"time\": T}"};
+  };
+  for (std::size_t i = 0; i < s.balls.size(); ++i) {
+    const BallState& b = s.start[i];
+    const double r = s.balls[i].radius;
+    const bool struck = s.cue && static_cast<std::size_t>(s.cue->ball) == i;
+    // A bound on the speed of the ball and of its contact point with the
+    // cloth; a struck ball leaves at less than twice the cue's speed.
+    double speed = norm(b.velocity) + r * norm(Vec2{b.spin.x, b.spin.y});
+    if (struck) speed = std::max(speed, 2.0 * s.cue->strike.speed);
+    double spin_z = std::fabs(b.spin.z);
+    const bool english = struck && s.cue->strike.a != 0.0;
+    const std::string who = struck ? "the cue strikes ball '" + s.balls[i].id + "'"
+                                   : "ball '" + s.balls[i].id + "' moves";
+    if (speed > 0.0) {
+      if (ph.gravity == 0.0) return refuse("physics.gravity is 0 (no friction acts) and " + who);
+      if (ph.sliding_friction == 0.0) {
+        return refuse(
+            "physics.sliding_friction is 0, so a sliding ball never starts rolling, "
+            "and " +
+            who);
+      }
+      if (ph.rolling_friction == 0.0) {
+        return refuse("physics.rolling_friction is 0, so a rolling ball never stops, and " + who);
+      }
+      if (!stops(speed, ph.sliding_friction) || !stops(speed, ph.rolling_friction)) {
+        return refuse("the frictions are too small for the ball to stop after " + who);
+      }
+    }
+    if (spin_z > 0.0 || english) {
+      const std::string spinner = spin_z > 0.0
+                                      ? "ball '" + s.balls[i].id + "' spins about the vertical"
+                                      : "the cue strike's side english (cue.a) spins ball '" +
+                                            s.balls[i].id + "' about the vertical";
+      if (ph.gravity == 0.0)
+        return refuse("physics.gravity is 0 (no friction acts) and " + spinner);
+      if (ph.spinning_friction == 0.0) {
+        return refuse("physics.spinning_friction is 0 and " + spinner);
+      }
+      // The spin decays at 5 mu_sp g / (2 R).
+      if (english) spin_z = std::max(spin_z, 2.0 * s.cue->strike.speed / r);
+      if (!stops(spin_z * r, ph.spinning_friction)) {
+        return refuse("physics.spinning_friction is too small for the spin of ball '" +
+                      s.balls[i].id + "' ever to stop");
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+// "rest" must come: in the ideal model, the friction model without
+// deceleration, or the pool model without one of its frictions, a moving
+// ball never stops and the run would only end at max_events, long after
+// the user wanted an answer. The scenario reader reports the same
+// problem, adding that "rest" is the default when the file gives no
+// "until".
+std::optional<ScenarioError> check_run_ends(const Scenario& s) {
+  if (!s.until.rest) return std::nullopt;
+  const std::string how = "\"rest\" never comes";
+  if (s.physics.model == Model::pool) return check_pool_run_ends(how, s);
+  for (std::size_t i = 0; i < s.balls.size(); ++i) {
+    const double speed = norm(s.start[i].velocity);
+    if (speed == 0.0) continue;
+    const std::string who = "ball '" + s.balls[i].id + "' moves";
+    if (s.physics.model == Model::ideal) {
+      return ScenarioError{"until", how + ": nothing slows a ball in the ideal model and " + who +
+                                        "; give {\"time\": T}"};
+    }
+    if (s.physics.model == Model::friction) {
+      if (s.physics.deceleration == 0.0) {
+        return ScenarioError{"until", how + ": physics.deceleration is 0 and " + who +
+                                          "; give {\"time\": T} or a positive deceleration"};
+      }
+      if (!std::isfinite(speed / s.physics.deceleration)) {
+        return ScenarioError{"until", how + ": physics.deceleration is too small for " + who +
+                                          " ever to stop; give {\"time\": T}"};
+      }
+    }
+  }
+  return std::nullopt;
+}
 
 std::optional<ScenarioError> validate(const Scenario& s) {
   if (s.start.size() != s.balls.size()) {
@@ -406,6 +502,7 @@ std::optional<ScenarioError> validate(const Scenario& s) {
   }
   if (s.max_events == 0) return ScenarioError{"max_events", "must be a positive integer"};
   if (auto e = check_cue(s)) return e;
+  if (auto e = check_run_ends(s)) return e;
   if (auto e = check_cushion(s)) return e;
 
   for (std::size_t i = 0; i < s.balls.size(); ++i) {

@@ -1,5 +1,5 @@
 // The parts of `breakshot serve` that need no socket
-// (include/breakshot/serve.hpp, namespace http): which file a request
+// (src/web/serve.hpp, namespace http): which file a request
 // names under the root, its content type, and the reply's bytes.
 #include <sys/stat.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "breakshot/serve.hpp"
+#include "web/serve.hpp"
 
 namespace breakshot {
 namespace http {

@@ -1,4 +1,4 @@
-// The rooms of online play (include/breakshot/rooms.hpp); the message
+// The rooms of online play (src/web/rooms.hpp); the message
 // format is in docs/web.md, "Online play".
 //
 // A room holds one game (a BsGame of the browser facade, both seats
@@ -9,7 +9,7 @@
 // type, too long) close the connection that sent them; requests that are
 // well formed but cannot be done (no such room, not your turn, an action
 // the rules refuse) are refused with the reason and the connection stays.
-#include "breakshot/rooms.hpp"
+#include "web/rooms.hpp"
 
 #include <array>
 #include <cstdio>

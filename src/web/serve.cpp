@@ -1,4 +1,4 @@
-// The server behind `breakshot serve` (include/breakshot/serve.hpp): the
+// The server behind `breakshot serve` (src/web/serve.hpp): the
 // sockets, and nothing else. What a file request is answered with is
 // http.cpp's; what online play does with a message is rooms.cpp's.
 //
@@ -34,7 +34,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "breakshot/serve.hpp"
+#include "web/serve.hpp"
 
 namespace breakshot {
 

@@ -19,7 +19,7 @@
 #include <string>
 #include <string_view>
 
-#include "breakshot/rooms.hpp"
+#include "web/rooms.hpp"
 
 namespace breakshot {
 
