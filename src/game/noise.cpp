@@ -11,7 +11,7 @@
 // (std::log is not required to be correctly rounded, and libraries differ
 // in the last bit). Draws come from SplitMix64; Gaussians from Marsaglia's
 // polar method, which needs only a square root (correctly rounded in IEEE
-// arithmetic) and a logarithm, dm::log (breakshot/detmath.hpp, built from
+// arithmetic) and a logarithm, dm::log (physics/detmath.hpp, built from
 // +, -, *, / alone). With contraction off (-ffp-contract=off,
 // CMakeLists.txt) every step is one IEEE operation and the result is the
 // same bit for bit everywhere.
