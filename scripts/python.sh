@@ -3,8 +3,11 @@
 # the repository root from Debian's /usr/bin/python3 with
 # --system-site-packages (numpy, matplotlib, pytest and dask come from
 # Debian's python3-* packages; PyPI is not needed) and installs breakshot
-# into it with `pip install --no-build-isolation .`. Run again after a
-# change: the extension's CMake build (build/temp.*/cmake) is incremental.
+# into it with `pip install --no-build-isolation .`. The extension is built
+# in the release build tree (build/release, configured with the release
+# preset if it is missing; setup.py's BREAKSHOT_CMAKE_BUILD_DIR), beside
+# the command and the tests, so the engine is compiled once for all of
+# them. Run again after a change: that build is incremental.
 #
 #   scripts/python.sh            make .venv if missing, install breakshot
 #   scripts/python.sh --wheel    also build a wheel into dist/ (for cluster nodes)
@@ -25,6 +28,10 @@ if [ ! -x .venv/bin/python ] || ! .venv/bin/python -c 'import numpy' 2>/dev/null
   rm -rf .venv
   "$py" -m venv --system-site-packages .venv
 fi
+if [ ! -f build/release/CMakeCache.txt ]; then
+  cmake --preset release >/dev/null
+fi
+export BREAKSHOT_CMAKE_BUILD_DIR=$PWD/build/release
 .venv/bin/python -m pip install --no-build-isolation --no-deps --no-index \
   --disable-pip-version-check --quiet .
 .venv/bin/python -c 'import breakshot; print("python: breakshot", breakshot.__version__, "in .venv")'

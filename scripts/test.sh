@@ -191,7 +191,8 @@ if [ "$quick" -eq 0 ]; then
 
   stage "(c) python: a wheel installed into a fresh environment"
   rm -rf build/dist build/wheel-venv
-  .venv/bin/python -m build --no-isolation --wheel --outdir build/dist . >"$logs/wheel.log" 2>&1 \
+  BREAKSHOT_CMAKE_BUILD_DIR=$root/build/release \
+    .venv/bin/python -m build --no-isolation --wheel --outdir build/dist . >"$logs/wheel.log" 2>&1 \
     || { cat "$logs/wheel.log"; false; }
   /usr/bin/python3 -m venv --system-site-packages build/wheel-venv
   build/wheel-venv/bin/python -m pip install --no-deps --no-index --disable-pip-version-check \

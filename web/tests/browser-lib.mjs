@@ -38,7 +38,7 @@ export function check(cond, what) {
 }
 
 // A page with console errors, page errors and failed requests collected.
-export async function openPage(browser, url) {
+export async function openPage(browser, url, { speed = '4' } = {}) {
   const context = await browser.newContext({ viewport: { width: 1400, height: 900 } });
   const page = await context.newPage();
   const problems = [];
@@ -54,6 +54,9 @@ export async function openPage(browser, url) {
   });
   await page.goto(url);
   await page.waitForFunction(() => window.breakshot && window.breakshot.engine, null, { timeout: 30000 });
+  // Shots play back at the page's fastest speed unless a test picks
+  // another: the tests wait for outcomes, not for the seconds a ball rolls.
+  await page.evaluate((v) => { document.getElementById('playback-speed').value = v; }, speed);
   return { page, context, problems };
 }
 

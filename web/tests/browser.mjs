@@ -200,7 +200,7 @@ test('the mute switch is remembered across a reload', async ({ browser, url }) =
 });
 
 test('a break and a scratch schedule sounds scaled by their impacts, with no audio device', async ({ browser, url }) => {
-  const { page, context, problems } = await openPage(browser, url);
+  const { page, context, problems } = await openPage(browser, url, { speed: '1' });
   await newGame(page, { game: 'nine_ball', opponent: 'friend' });
   await page.click('#table');   // a gesture: the page may start its audio
   const s0 = await page.evaluate(() => window.breakshot.sounds());
@@ -233,7 +233,7 @@ test('a break and a scratch schedule sounds scaled by their impacts, with no aud
 });
 
 test('the pool balls\' markings roll with their spin', async ({ browser, url }) => {
-  const { page, context, problems } = await openPage(browser, url);
+  const { page, context, problems } = await openPage(browser, url, { speed: '1' });
   await newGame(page, { game: 'eight_ball', opponent: 'friend' });
   const orient = () => page.evaluate(() => Object.fromEntries([...window.breakshot.ui.orient].map(([n, o]) => [n, { v: o.v, m: [...o.m] }])));
   const o0 = await orient();
@@ -338,7 +338,7 @@ function frameFigures(gaps, work) {
 }
 
 test('a break animates, its frame times printed', async ({ browser, url }) => {
-  const { page, context, problems } = await openPage(browser, url);
+  const { page, context, problems } = await openPage(browser, url, { speed: '1' });
   const runs = Number(args.frames ?? 1);
   const gaps = [];
   const work = [];
