@@ -5,7 +5,9 @@
 // run), so no run repeats another's shot. Prints the median and range of
 // the runs: import, first shot, both; and the shots after it in the same
 // process (250 more breaks: the first 50, and 50 once V8 has optimized
-// the wasm).
+// the wasm). Wall-clock times, and the CPU time of the process (every
+// thread: V8 compiles the wasm on threads of its own) from the import to
+// the first shot, which a busy machine changes less.
 //
 //   node npm/bench/first-shot.mjs [--package DIR] [--runs N]
 //
@@ -29,11 +31,13 @@ const scenario = (seed) => ({
 if (argv[0] === '--child') {
   const [, pkg, seedText] = argv;
   const seed = Number(seedText);
+  const c0 = process.cpuUsage();
   const t0 = performance.now();
   const { simulate } = await import(pathToFileURL(path.join(pkg, 'index.js')).href);
   const t1 = performance.now();
   const sim = simulate(scenario(seed));
   const t2 = performance.now();
+  const c1 = process.cpuUsage(c0);
   const events = sim.events.length;
   sim.free();
   // the next shots: V8 compiles the wasm in a baseline tier first and
@@ -59,7 +63,7 @@ if (argv[0] === '--child') {
     sim.free();
   }
   process.stdout.write(JSON.stringify({
-    import: t1 - t0, shot: t2 - t1, total: t2 - t0, events, next: median(times.slice(0, 50)), warm: median(times.slice(200)),
+    import: t1 - t0, shot: t2 - t1, total: t2 - t0, cpu: (c1.user + c1.system) / 1000, events, next: median(times.slice(0, 50)), warm: median(times.slice(200)),
     frame: (frameTime / frames) * 1000,
   }) + '\n');
   process.exit(0);
@@ -84,6 +88,7 @@ console.log(`node ${process.version}, ${runs} runs (racks 1-${runs} of the 8-bal
 console.log(`import('breakshot') (the engine instantiated): ${stat('import')}`);
 console.log(`the first shot (simulate, result text):       ${stat('shot')}`);
 console.log(`import to the first shot:                      ${stat('total')}`);
+console.log(`the same, the process's CPU time (all threads): ${stat('cpu')}`);
 console.log(`shots 2-51 (median per run):                   ${stat('next')}`);
 console.log(`shots 202-251, warm (median per run):          ${stat('warm')}`);
 {
