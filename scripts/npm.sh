@@ -19,7 +19,7 @@ run_test=0
 for arg in "$@"; do
   case "$arg" in
     --test) run_test=1 ;;
-    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
     *) echo "npm.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done
