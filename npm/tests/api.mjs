@@ -1,7 +1,10 @@
 // The package's API checked in node (run.mjs registers these after the
 // install; ctx.api is the installed package's index.js): states and
 // frames against the result file, time going back, determinism, games,
-// players, and an Error naming what is wrong for bad input.
+// players, and an Error naming what is wrong for bad input, also for
+// inputs mutated at random.
+import { readdirSync, readFileSync } from 'node:fs';
+import path from 'node:path';
 
 const BREAK = {
   physics: { model: 'pool', ball_clusters: true },
@@ -148,6 +151,56 @@ export function register(test, ctx) {
     console.log(m.map((x) => `    ${x}`).join('\n'));
     g.free();
     throws(check, () => g.state(), /freed/, 'a freed game');
+  });
+
+  test('mutated links, scenarios and actions: each refused with an Error, never a crash', () => {
+    const { Game, simulate } = ctx.api;
+    let seed = 12345;  // a fixed sequence: the same inputs every run
+    const rnd = () => { seed = (seed * 1103515245 + 12345) >>> 0; return seed / 4294967296; };
+    const pick = (a) => a[Math.floor(rnd() * a.length)];
+    const dir = path.join(ctx.root, 'examples/pool');
+    const scenarios = readdirSync(dir).filter((f) => f.endsWith('.json')).sort().map((f) => readFileSync(path.join(dir, f), 'utf8'));
+    const g = new Game({ game: 'nine_ball', players: ['club', 'club'], seed: 3 });
+    for (let k = 0; k < 3; k++) g.act(g.aiAction());
+    const link = g.link();
+    g.free();
+    const chars = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_.';
+    let refused = 0;
+    let accepted = 0;
+    const attempt = (what, f) => {
+      try {
+        f();
+        accepted++;
+      } catch (e) {
+        check(e instanceof Error && !(e instanceof WebAssembly.RuntimeError), `${what}: threw ${e}`);
+        check(!/internal error/.test(e.message), `${what}: ${e.message}`);
+        refused++;
+      }
+    };
+    for (let n = 0; n < 600; n++) {
+      const l = link.split('');
+      const i = Math.floor(rnd() * l.length);
+      const m = rnd();
+      if (m < 0.4) l[i] = pick(chars);
+      else if (m < 0.7) l.length = i;
+      else l.splice(i, 0, pick(chars));
+      const text = l.join('');
+      attempt(`the link ${text}`, () => { const h = Game.fromLink(text); try { h.state(); } finally { h.free(); } });
+      const s = pick(scenarios).split('');
+      s[Math.floor(rnd() * s.length)] = pick('0123456789-.e{}[]",: truefalsn');
+      const st = s.join('');
+      attempt(`the scenario ${st}`, () => simulate(st));
+      const act = {
+        type: pick(['shoot', 'place_cue_ball', 'decide', 'x']),
+        strike: { speed: rnd() * 20 - 2, phi: rnd() * 720 - 360, theta: rnd() * 100 - 5, a: rnd() * 2 - 1, b: rnd() * 2 - 1 },
+        call: rnd() < 0.5 ? null : { ball: Math.floor(rnd() * 12) - 1, pocket: pick(['top_left', 'x', 'side_bottom']) },
+        safety: rnd() < 0.5, push_out: rnd() < 0.5,
+        position: [rnd() * 3 - 0.2, rnd() * 1.5 - 0.1], choice: pick(['pass_back', 'shoot', 'zz']),
+      };
+      attempt(`the action ${JSON.stringify(act)}`, () => { const h = Game.fromLink(link); try { h.act(act); } finally { h.free(); } });
+    }
+    check(refused > 1000 && accepted > 10, `refused ${refused}, accepted ${accepted}: the mutations are not doing their job`);
+    console.log(`    1800 inputs: ${refused} refused with an Error, ${accepted} accepted`);
   });
 
   test('Player: worker and inline agree; LEVEL@NOISE; bad levels reject; close', async () => {
