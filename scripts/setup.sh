@@ -14,7 +14,8 @@ set -euo pipefail
 # emscripten builds the browser version (scripts/web.sh), whose strtod
 # reads decimals with fast_float (libfast-float-dev); chromium and a
 # font are what its browser tests drive (web/tests/browser.mjs, with
-# playwright-core from npm, which never downloads a browser). The Python
+# playwright-core from npm, which never downloads a browser);
+# node-typescript checks the npm package's declarations (npm/tests). The Python
 # package (scripts/python.sh) is built with pybind11 against Debian's
 # python3 and uses its numpy, matplotlib and pytest; breakshot.distributed
 # runs on Dask (python3-distributed), with tqdm for its progress bars.
@@ -22,7 +23,7 @@ required=(
   build-essential cmake ninja-build g++ clang libclang-rt-14-dev
   libgtest-dev googletest libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libboost-dev
-  emscripten libfast-float-dev chromium fonts-dejavu-core curl
+  emscripten libfast-float-dev chromium fonts-dejavu-core curl node-typescript
   python3 python3-dev python3-venv python3-pip python3-setuptools python3-wheel
   python3-build pybind11-dev python3-numpy python3-matplotlib python3-pytest
   python3-dask python3-distributed python3-tqdm

@@ -18,7 +18,11 @@
 #       same replies byte for byte (web/tests/identity.mjs), and
 #       playwright-core drives Chromium through the served page
 #       (web/tests/browser.mjs; its online test, two pages playing each
-#       other through the server, about 25 s)
+#       other through the server, about 25 s); the npm package
+#       (scripts/npm.sh: packed from the wasm build, then npm/tests/run.mjs:
+#       installed into an empty folder, its TypeScript examples checked
+#       with tsc --strict and run in node, the native command's bytes, bad
+#       input, the HTML example in Chromium)
 #   (e) the libFuzzer targets, built with clang: seed corpus replays (tests),
 #       then fuzzing scenarios for BREAKSHOT_FUZZ_SECONDS (default 60)
 #       seconds, seeded with fuzz/corpus and examples/lab, and game records
@@ -217,6 +221,11 @@ sys.stdout.write(breakshot.simulate(sys.argv[1]).to_json())' ../examples/pool/br
   (cd web/tests && npm ci --no-audit --no-fund --loglevel=error)
   run_node_tests browser node web/tests/browser.mjs --cli build/release/breakshot \
     --root build/web/dist --shots build/web/screenshots
+  # scripts/npm.sh calls scripts/web.sh, which has nothing to rebuild here.
+  stage "(d) npm: the package packed, installed and run"
+  scripts/npm.sh
+  run_node_tests npm node npm/tests/run.mjs --native build/release --playwright web/tests \
+    --shots build/npm/screenshots
 
   stage "(e) fuzz: configure + build (clang)"
   cmake --preset fuzz

@@ -21,7 +21,11 @@ namespace facade {
 std::string error_json(const std::string& message) {
   ojson j = ojson::object();
   j["error"] = message;
-  return j.dump();
+  // A message may quote the input's bytes (a link's decoded text is any
+  // bytes, and the JSON parser's message shows the last ones read): bytes
+  // that are not UTF-8 are written as U+FFFD rather than thrown about
+  // from inside a catch handler, which would cross the C boundary.
+  return j.dump(-1, ' ', false, ojson::error_handler_t::replace);
 }
 
 thread_local std::string g_last_error;

@@ -1,6 +1,8 @@
 // The engine in JavaScript: the wasm build of the C++ engine, rules and AI
 // (build/web/dist/breakshot.js) behind the API of docs/web.md ("The JS
-// API"). The only file that talks to the wasm module.
+// API"). The only file that talks to the wasm module: the page's, and
+// the npm package's core (scripts/npm.sh ships this file as it is; the
+// package's index.js builds its classes on it, docs/js.md).
 //
 //   import { loadEngine } from './engine.js';
 //   const E = await loadEngine();
@@ -73,7 +75,9 @@ export function toJson(value) {
   return text.includes(NEG_ZERO) ? text.split(`"${NEG_ZERO}"`).join('-0.0') : text;
 }
 
-function parse(text) {
+/** The facade's JSON reply, parsed; throws Error(reply.error) (with the
+ *  parsed reply as the error's `reply`) when it is {"error"}. */
+export function parse(text) {
   let reply;
   try {
     reply = JSON.parse(text);
@@ -223,13 +227,19 @@ class Playback {
    * momentum: [px, py], events, at_rest, complete}, from the frame's
    * doubles (no JSON text); the same object as frameJson(t).
    */
-  frame(t) {
+  frame(t) { return frameObject(this.frameData(t)); }
+  /**
+   * The frame at time t as bs_playback_frame_data's doubles (the layout of
+   * frameObject): a Float64Array view of the wasm heap, valid until the
+   * next call on the engine (copy it to keep it).
+   */
+  frameData(t) {
     const d = this._raw.frameData(this._handle(), numArg(t, 't'));
     if (!d) {
       parse(this._raw.lastError());  // throws the error
       throw new Error('bs_playback_frame_data failed');
     }
-    return frameObject(d);
+    return d;
   }
   /** The balls' spins at the last frame's time (bs_playback_spins; the
    *  start's before any frame): a Float64Array of wx, wy, wz (rad/s) per
