@@ -14,7 +14,7 @@
 // FinalizationRegistry frees what the garbage collector finds unfreed,
 // as a safety net only (when it runs is up to the collector).
 
-import { loadEngine, parse, toJson } from './engine.js';
+import { FRAME_LAYOUT, loadEngine, parse, toJson } from './engine.js';
 import { Player } from './player.js';
 
 const E = await loadEngine();
@@ -49,9 +49,9 @@ function finiteTime(t) {
   return t;
 }
 
-// The layout of bs_playback_frame_data's doubles (web_api.hpp).
-const HEADER = 8;
-const STRIDE = 8;
+// The layout of bs_playback_frame_data's doubles (web_api.hpp), as
+// engine.js reads it.
+const { header: HEADER, stride: STRIDE, flightStride: FLIGHT_STRIDE } = FRAME_LAYOUT;
 
 function newStates(n) {
   return {
@@ -125,8 +125,8 @@ export class Playback {
       s.ballEnergy[i] = d[o + 5];
       s.ballMomentum[2 * i] = d[o + 6];
       s.ballMomentum[2 * i + 1] = d[o + 7];
-      s.height[i] = d[flight + 2 * i];
-      s.place[i] = d[flight + 2 * i + 1];
+      s.height[i] = d[flight + FLIGHT_STRIDE * i];
+      s.place[i] = d[flight + FLIGHT_STRIDE * i + 1];
     }
     s.spin.set(this._pb.spins(n));
     return s;

@@ -36,6 +36,8 @@ const NEG_ZERO = '__breakshot_negative_zero__';
 const FRAME_HEADER = 8;
 const FRAME_STRIDE = 8;
 const FLIGHT_STRIDE = 2;
+/** That layout, for readers of the doubles (the npm package's states). */
+export const FRAME_LAYOUT = Object.freeze({ header: FRAME_HEADER, stride: FRAME_STRIDE, flightStride: FLIGHT_STRIDE });
 
 /** The length of a frame's buffer of n balls, flight block included. */
 export function frameLength(n) {
