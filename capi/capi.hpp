@@ -4,8 +4,8 @@
 //   capi.cpp        status names, errors, strings, version, physics options
 //   scenario.cpp    BsScenario: a scenario document built by calls or read
 //                   from text, read by the scenario reader (io)
-//   simulation.cpp  BsSimulation: a recorded run, its events, the states at
-//                   any time, the result file; batches on threads
+//   simulation.cpp  BsSimulation: a run, its events, the result file, the
+//                   states at any time from its record; batches on threads
 //   game.cpp        BsGame and BsPlayer: GameSession, the records' JSON
 //                   (io/game_json.hpp), make_player
 //
@@ -154,15 +154,21 @@ struct BsScenario : capi::Handle {
 
 struct BsSimulation : capi::Handle {
   BsSimulation() : Handle(capi::kSimulationTag) {}
+  /// The run's record ball by ball: each ball's trajectory after set-up
+  /// and every change at an event (the engine's run record), ball i's
+  /// changes being record.changes[order[k]] for k in [first[i],
+  /// first[i + 1]), in time order.
+  struct Trajectories {
+    breakshot::detail::RunRecord record;
+    std::vector<std::uint32_t> order;
+    std::vector<std::size_t> first;
+  };
   std::shared_ptr<const breakshot::Scenario> scenario;
   breakshot::RunResult result;
-  /// The run's record: each ball's trajectory after set-up, and every
-  /// change at an event.
-  breakshot::detail::RunRecord record;
-  /// The record's changes ball by ball, each ball's in time order: ball
-  /// i's are record.changes[order[k]] for k in [first[i], first[i + 1]).
-  std::vector<std::uint32_t> order;
-  std::vector<std::size_t> first;
+  /// Made by the first states query (capi::trajectories_of): a second
+  /// run of the scenario, recorded, which is the same run. A run asked
+  /// only for its result and events never records.
+  mutable std::unique_ptr<const Trajectories> trajectories;
 };
 
 namespace capi {
@@ -174,8 +180,12 @@ const bs::Scenario& scenario_of(const BsScenario& s);
 /// The scenario of `s` as a shared value (scenario_of's).
 std::shared_ptr<const bs::Scenario> shared_scenario_of(const BsScenario& s);
 
-/// A run of `scenario` recorded into `out` (result, record, order).
-void run_into(std::shared_ptr<const bs::Scenario> scenario, BsSimulation& out);
+/// A run of `scenario` (its scenario and result; the trajectories are
+/// recorded when first asked for).
+std::unique_ptr<BsSimulation> run(std::shared_ptr<const bs::Scenario> scenario);
+
+/// The trajectories of `s`, recorded by the first call.
+const BsSimulation::Trajectories& trajectories_of(const BsSimulation& s);
 
 }  // namespace capi
 

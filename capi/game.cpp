@@ -259,11 +259,9 @@ BsStatus bs_game_shot_simulation(const BsGame* game, std::size_t index, BsSimula
     const bs::GameState& before = g.session.state_before(index);
     const int cue = shot->cue_ball ? *shot->cue_ball : g.session.rules().cue_ball(before);
     std::vector<int> numbers;
-    auto sim = std::make_unique<BsSimulation>();
-    run_into(std::make_shared<const bs::Scenario>(
-                 g.session.rules().shot_scenario(before, shot->strike, cue, &numbers)),
-             *sim);
-    made = sim.release();
+    made = run(std::make_shared<const bs::Scenario>(
+                   g.session.rules().shot_scenario(before, shot->strike, cue, &numbers)))
+               .release();
   });
   if (st == BS_OK) *out = made;
   return st;

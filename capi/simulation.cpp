@@ -1,9 +1,12 @@
-// Simulations (BsSimulation): a run recorded as each ball's trajectories
-// (the engine's run record, src/physics/run_record.hpp), so that the
-// state of every ball at any time is one binary search and one polynomial
-// per ball, bit for bit what a Simulation advanced to that time gives;
-// the events and the result file from the same run. Batches share the
-// scenarios among threads.
+// Simulations (BsSimulation): a run of a scenario, its events and result
+// file, and the state of every ball at any time, read from the run's
+// record (the engine's run record, src/physics/run_record.hpp): one
+// binary search and one polynomial per ball, bit for bit what a
+// Simulation advanced to that time gives. The record is made by the first
+// states query, by running the scenario once more with the record on (the
+// same run: the engine is deterministic), so that a run asked only for its
+// result costs what simulate() costs. Batches share the scenarios among
+// threads.
 
 #include <algorithm>
 #include <atomic>
@@ -35,21 +38,39 @@ static_assert(static_cast<int>(bs::MotionState::off_table) == BS_MOTION_OFF_TABL
 
 }  // namespace
 
-void run_into(std::shared_ptr<const bs::Scenario> scenario, BsSimulation& out) {
-  out.scenario = std::move(scenario);
-  out.result = bs::detail::simulate_recorded(*out.scenario, out.record);
+std::unique_ptr<BsSimulation> run(std::shared_ptr<const bs::Scenario> scenario) {
+  // The handle is made after the run (in a batch, on the worker).
+  bs::RunResult result = bs::simulate(*scenario);
+  auto sim = std::make_unique<BsSimulation>();
+  sim->scenario = std::move(scenario);
+  sim->result = std::move(result);
+  return sim;
+}
+
+const BsSimulation::Trajectories& trajectories_of(const BsSimulation& s) {
+  if (s.trajectories) return *s.trajectories;
+  auto made = std::make_unique<BsSimulation::Trajectories>();
+  // The same run again, recorded: simulate_recorded's result is
+  // simulate()'s, and a run is deterministic.
+  const bs::RunResult again = bs::detail::simulate_recorded(*s.scenario, made->record);
+  if (again.events.size() != s.result.events.size() || again.final_time != s.result.final_time) {
+    fail(BS_ERROR_INTERNAL, "the recorded run differs from the run");
+  }
   // The changes ball by ball (a counting sort, stable: each ball's stay in
   // event order, which is time order).
-  const std::size_t n = out.record.start.size();
-  const auto& changes = out.record.changes;
-  out.first.assign(n + 1, 0);
-  for (const auto& c : changes) ++out.first[static_cast<std::size_t>(c.ball) + 1];
-  for (std::size_t i = 0; i < n; ++i) out.first[i + 1] += out.first[i];
-  out.order.resize(changes.size());
-  std::vector<std::size_t> next(out.first.begin(), out.first.end() - 1);
+  const std::size_t n = made->record.start.size();
+  const auto& changes = made->record.changes;
+  std::vector<std::size_t>& first = made->first;
+  first.assign(n + 1, 0);
+  for (const auto& c : changes) ++first[static_cast<std::size_t>(c.ball) + 1];
+  for (std::size_t i = 0; i < n; ++i) first[i + 1] += first[i];
+  made->order.resize(changes.size());
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
   for (std::size_t k = 0; k < changes.size(); ++k) {
-    out.order[next[static_cast<std::size_t>(changes[k].ball)]++] = static_cast<std::uint32_t>(k);
+    made->order[next[static_cast<std::size_t>(changes[k].ball)]++] = static_cast<std::uint32_t>(k);
   }
+  s.trajectories = std::move(made);
+  return *s.trajectories;
 }
 
 }  // namespace capi
@@ -82,9 +103,7 @@ BsStatus bs_simulate(const BsScenario* scenario, BsSimulation** out) {
   const BsStatus st = on_handle(scenario, kScenarioTag, "scenario", [&](const BsScenario& s) {
     need(out, "out");
     *out = nullptr;
-    auto sim = std::make_unique<BsSimulation>();
-    run_into(shared_scenario_of(s), *sim);
-    made = sim.release();
+    made = run(shared_scenario_of(s)).release();
   });
   if (st == BS_OK) *out = made;
   return st;
@@ -115,7 +134,6 @@ BsStatus bs_simulate_batch(const BsScenario* const* scenarios, std::size_t n, st
       }
     }
     std::vector<std::unique_ptr<BsSimulation>> sims(n);
-    for (auto& s : sims) s = std::make_unique<BsSimulation>();
     unsigned workers = threads > 0 ? static_cast<unsigned>(threads)
                                    : std::max(1u, std::thread::hardware_concurrency());
     workers = static_cast<unsigned>(std::min<std::size_t>(workers, n));
@@ -125,7 +143,7 @@ BsStatus bs_simulate_batch(const BsScenario* const* scenarios, std::size_t n, st
     const auto work = [&] {
       for (std::size_t k = next++; k < n; k = next++) {
         try {
-          run_into(read[k], *sims[k]);
+          sims[k] = run(read[k]);
         } catch (...) {
           const std::lock_guard<std::mutex> lock(error_lock);
           if (!error) error = std::current_exception();
@@ -196,20 +214,22 @@ BsStatus bs_simulation_states_at(const BsSimulation* simulation, double t, BsBal
                                  std::size_t n) {
   return on_handle(simulation, kSimulationTag, "simulation", [&](const BsSimulation& s) {
     need(out, "out");
-    const std::size_t balls = s.record.start.size();
+    const std::size_t balls = s.result.final_balls.size();
     if (n != balls) {
       fail(BS_ERROR_OUT_OF_RANGE,
            "n: the run has " + std::to_string(balls) + " balls, not " + std::to_string(n));
     }
     if (std::isnan(t)) fail(BS_ERROR_OUT_OF_RANGE, "t: not a number");
     t = std::clamp(t, 0.0, s.result.final_time);
-    const auto& changes = s.record.changes;
-    const std::uint32_t* order = s.order.data();
+    const BsSimulation::Trajectories& tj = trajectories_of(s);
+    const auto& changes = tj.record.changes;
+    const std::uint32_t* order = tj.order.data();
+    const std::size_t* first = tj.first.data();
     for (std::size_t i = 0; i < balls; ++i) {
       // The last of the ball's changes at or before t (every change with
       // time <= t has been taken at t), else its start.
-      std::size_t lo = s.first[i];
-      std::size_t hi = s.first[i + 1];
+      std::size_t lo = first[i];
+      std::size_t hi = first[i + 1];
       while (lo < hi) {
         const std::size_t mid = lo + (hi - lo) / 2;
         if (changes[order[mid]].time <= t) {
@@ -219,7 +239,7 @@ BsStatus bs_simulation_states_at(const BsSimulation* simulation, double t, BsBal
         }
       }
       const bs::Simulation::Trajectory& tr =
-          lo == s.first[i] ? s.record.start[i] : changes[order[lo - 1]].trajectory;
+          lo == first[i] ? tj.record.start[i] : changes[order[lo - 1]].trajectory;
       to_c(bs::detail::state_at(tr, t), out[i]);
     }
   });

@@ -292,7 +292,9 @@ typedef struct BsSimulationInfo {
 } BsSimulationInfo;
 
 /** Runs `scenario` to its end (BS_ERROR_INVALID if it is not valid). A
- * run stopped by max_events is BS_OK with info.complete 0. */
+ * run stopped by max_events is BS_OK with info.complete 0. The run costs
+ * what the engine's simulate() costs: the balls' trajectories are not
+ * kept until the first bs_simulation_states_at asks for them. */
 BS_API BsStatus bs_simulate(const BsScenario* scenario, BsSimulation** out);
 /** Runs n scenarios on `threads` threads (0: every core); out[k] is
  * bs_simulate(scenarios[k]). On failure nothing is returned (every out[k]
@@ -307,8 +309,10 @@ BS_API BsStatus bs_simulation_events(const BsSimulation* simulation, size_t firs
                                      BsEvent* out);
 /** Every ball's state at time t into out[0 .. n), n the number of balls
  * (BS_ERROR_OUT_OF_RANGE otherwise): exactly what the engine advanced to
- * t gives. t is clamped to [0, end_time]; NaN is out of range. Allocates
- * nothing. */
+ * t gives. t is clamped to [0, end_time]; NaN is out of range. The first
+ * call on a simulation records its trajectories by running the scenario
+ * once more (the same run; about the cost of bs_simulate, and memory
+ * that bs_simulation_free releases); later calls allocate nothing. */
 BS_API BsStatus bs_simulation_states_at(const BsSimulation* simulation, double t,
                                         BsBallState* out, size_t n);
 BS_API BsStatus bs_simulation_ball_id(const BsSimulation* simulation, size_t ball,
