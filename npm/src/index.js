@@ -53,7 +53,7 @@ function finiteTime(t) {
   return t;
 }
 
-// The layout of bs_playback_frame_data's doubles (web_api.hpp), as
+// The layout of bs_web_playback_frame_data's doubles (web_api.hpp), as
 // engine.js reads it.
 const { header: HEADER, stride: STRIDE, flightStride: FLIGHT_STRIDE } = FRAME_LAYOUT;
 
