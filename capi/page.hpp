@@ -7,6 +7,8 @@
 #ifndef BREAKSHOT_CAPI_PAGE_HPP
 #define BREAKSHOT_CAPI_PAGE_HPP
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <initializer_list>
 #include <memory>

@@ -450,9 +450,8 @@ BS_API BsStatus bs_game_undo_to(BsGame* game, size_t n);
  * its markings included. */
 BS_API BsStatus bs_game_table_json(const BsGame* game, char** out);
 /** Experimental. BS_OK when the seat to act may place the cue ball at
- * (x, y) now, BS_ERROR_ILLEGAL with the rules' reason as the message when
- * not (a placement refused is not kept as an error: the next call
- * clears it as any call does). */
+ * (x, y) now, BS_ERROR_ILLEGAL with the rules' reason as the game's
+ * message when not. */
 BS_API BsStatus bs_game_check_placement(const BsGame* game, double x, double y);
 /** Experimental. A snooker game's figures now: {"balls_on",
  * "points_remaining", "snookers_required": [2]}; BS_ERROR_STATE for
