@@ -10,6 +10,7 @@
 #include <string>
 
 #include "breakshot.h"
+#include "breakshot/ball.hpp"
 #include "breakshot/game.hpp"
 #include "breakshot/physics.hpp"
 #include "breakshot/players.hpp"
@@ -113,6 +114,7 @@ const char* bs_error_message(const void* handle) {
     case kSimulationTag:
     case kGameTag:
     case kPlayerTag:
+    case kPlaybackTag:
       return h->error.c_str();
     default:
       return "bs_error_message: not a live handle of this API";
@@ -157,6 +159,14 @@ BsStatus bs_physics_options_json(char** out) {
       d[std::string(bs::to_string(m))] = defaults_json(m);
     }
     j["defaults"] = d;
+    // What a ball's NaN radius, mass and wall restitution take, and a pool
+    // table's cushion restitution.
+    nlohmann::ordered_json ball = nlohmann::ordered_json::object();
+    ball["radius"] = bs::kPoolBallRadius;
+    ball["mass"] = bs::kPoolBallMass;
+    ball["wall_restitution"] = bs::BallSpec{}.wall_restitution;
+    j["ball"] = ball;
+    j["pool_cushion_restitution"] = bs::CushionParams{}.restitution;
     *out = copy_out(j.dump());
   });
 }

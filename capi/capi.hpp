@@ -8,6 +8,11 @@
 //                   states at any time from its record; batches on threads
 //   game.cpp        BsGame and BsPlayer: GameSession, the records' JSON
 //                   (io/game_json.hpp), make_player
+//   page.cpp        games as the browser page plays them (page.hpp): the
+//                   config document, acts with their report, turns, undo,
+//                   the table, placement, figures, the AI of a game
+//   link.cpp        links: a game as "v2." text and back ("v1." read too)
+//   playback.cpp    BsPlayback: a simulation advanced frame by frame
 //
 // Every entry point catches everything: a Failure becomes its status and
 // message, std::bad_alloc BS_ERROR_NO_MEMORY, anything else
@@ -31,7 +36,9 @@
 #include <vector>
 
 #include "breakshot.h"
+#include "breakshot/player.hpp"
 #include "breakshot/scenario.hpp"
+#include "breakshot/session.hpp"
 #include "breakshot/simulation.hpp"
 #include "physics/run_record.hpp"
 
@@ -47,6 +54,7 @@ enum Tag : std::uint32_t {
   kSimulationTag = 0x42735369,  // "BsSi"
   kGameTag = 0x42734761,        // "BsGa"
   kPlayerTag = 0x4273506c,      // "BsPl"
+  kPlaybackTag = 0x42735062,    // "BsPb"
   kFreed = 0xdeadbea7,
 };
 
@@ -171,6 +179,38 @@ struct BsSimulation : capi::Handle {
   mutable std::unique_ptr<const Trajectories> trajectories;
 };
 
+struct BsGame : capi::Handle {
+  BsGame(const breakshot::GameConfig& config, const breakshot::Seats& seats, std::uint64_t seed,
+         int breaker)
+      : Handle(capi::kGameTag), session(config, seats, seed, breaker) {}
+  BsGame(const breakshot::GameConfig& config, const breakshot::Seats& seats, std::uint64_t seed,
+         std::uint64_t rack_seed, int breaker)
+      : Handle(capi::kGameTag), session(config, seats, seed, rack_seed, breaker) {}
+  breakshot::GameSession session;
+  /// Simulations per decision of the game's computer players
+  /// (bs_player_new_for_game), when the config or the link sets them.
+  std::optional<std::int64_t> ai_budget;
+};
+
+struct BsPlayer : capi::Handle {
+  explicit BsPlayer(std::unique_ptr<breakshot::Player> p)
+      : Handle(capi::kPlayerTag), player(std::move(p)) {}
+  std::unique_ptr<breakshot::Player> player;
+};
+
+struct BsPlayback : capi::Handle {
+  explicit BsPlayback(const breakshot::Scenario& s)
+      : Handle(capi::kPlaybackTag), scenario(s), sim(scenario) {}
+  breakshot::Scenario scenario;
+  breakshot::Simulation sim;
+  bool limit = false;         // max_events stopped a frame
+  std::vector<double> frame;  // the last frame (breakshot.h's layout)
+  /// A three-cushion shot's playback (bs_game_shot_playback): the ball
+  /// number of each scenario ball, and the ball struck; -1 otherwise.
+  std::vector<int> numbers;
+  int carom_struck = -1;
+};
+
 namespace capi {
 
 /// The scenario of `s`, read (and cached) or a BS_ERROR_INVALID failure
@@ -186,6 +226,9 @@ std::unique_ptr<BsSimulation> run(std::shared_ptr<const bs::Scenario> scenario);
 
 /// The trajectories of `s`, recorded by the first call.
 const BsSimulation::Trajectories& trajectories_of(const BsSimulation& s);
+
+/// A ball's state in the C API's struct.
+void to_c(const bs::BallState& s, BsBallState& o);
 
 }  // namespace capi
 

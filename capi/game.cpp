@@ -28,22 +28,6 @@
 #include "io/game_json.hpp"
 #include "io/json_read.hpp"
 
-struct BsGame : capi::Handle {
-  BsGame(const breakshot::GameConfig& config, const breakshot::Seats& seats, std::uint64_t seed,
-         int breaker)
-      : Handle(capi::kGameTag), session(config, seats, seed, breaker) {}
-  BsGame(const breakshot::GameConfig& config, const breakshot::Seats& seats, std::uint64_t seed,
-         std::uint64_t rack_seed, int breaker)
-      : Handle(capi::kGameTag), session(config, seats, seed, rack_seed, breaker) {}
-  breakshot::GameSession session;
-};
-
-struct BsPlayer : capi::Handle {
-  explicit BsPlayer(std::unique_ptr<breakshot::Player> p)
-      : Handle(capi::kPlayerTag), player(std::move(p)) {}
-  std::unique_ptr<breakshot::Player> player;
-};
-
 namespace capi {
 
 namespace {

@@ -224,7 +224,8 @@ std::shared_ptr<const bs::Scenario> shared_scenario_of(const BsScenario& s) {
   if (!s.read) {
     auto read = bs::json_io::read_scenario_tree(s.doc);
     if (auto* e = std::get_if<bs::ScenarioError>(&read)) {
-      fail(BS_ERROR_INVALID, e->path + ": " + e->reason);
+      fail(BS_ERROR_INVALID,
+           e->path + ": " + (e->unsupported ? "not supported: " : "") + e->reason);
     }
     s.read = std::make_shared<const bs::Scenario>(std::get<bs::Scenario>(std::move(read)));
   }

@@ -73,12 +73,6 @@ const BsSimulation::Trajectories& trajectories_of(const BsSimulation& s) {
   return *s.trajectories;
 }
 
-}  // namespace capi
-
-using namespace capi;
-
-namespace {
-
 void to_c(const bs::BallState& s, BsBallState& o) {
   o.position[0] = s.position.x;
   o.position[1] = s.position.y;
@@ -93,7 +87,9 @@ void to_c(const bs::BallState& s, BsBallState& o) {
   o.reserved = 0;
 }
 
-}  // namespace
+}  // namespace capi
+
+using namespace capi;
 
 extern "C" {
 
@@ -287,6 +283,15 @@ BsStatus bs_simulation_result_json(const BsSimulation* simulation, char** out) {
     need(out, "out");
     *out = nullptr;
     *out = copy_out(bs::write_result(*s.scenario, s.result));
+  });
+}
+
+BsStatus bs_simulate_result_json(const BsScenario* scenario, char** out) {
+  if (out != nullptr) *out = nullptr;
+  return on_handle(scenario, kScenarioTag, "scenario", [&](const BsScenario& s) {
+    need(out, "out");
+    const bs::Scenario& read = scenario_of(s);
+    *out = copy_out(bs::write_result(read, bs::simulate(read)));
   });
 }
 

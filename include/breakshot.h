@@ -24,6 +24,11 @@
  * the structs their layout, for as long as the API version stays 1; calls
  * may be added. The shared library exports only the symbols declared
  * here (bs_*), at the version node BREAKSHOT_C_1.
+ *
+ * The calls and structs marked "Experimental" (the games as the browser
+ * page plays them, playbacks, the frame layout) are in the library and
+ * the symbol map as the others are, but may still change their arguments
+ * or their JSON within API version 1; docs/c-api.md says so of each.
  */
 #ifndef BREAKSHOT_H
 #define BREAKSHOT_H
@@ -88,7 +93,9 @@ BS_API BsStatus bs_version(BsVersion* out);
 /** The physics options this library supports, as JSON: {"version",
  * "models", "cushion_models", "ball_ball_models", "table_shapes",
  * "pool_table_sizes", "racks", "games", "players", "defaults": {"ideal",
- * "friction", "pool"} (each bs_physics_default's fields by name)}. */
+ * "friction", "pool"} (each bs_physics_default's fields by name), "ball":
+ * {"radius", "mass", "wall_restitution"} (what a NaN field of BsBall
+ * takes), "pool_cushion_restitution"}. */
 BS_API BsStatus bs_physics_options_json(char** out);
 
 /* ------------------------------------------------------------------------
@@ -323,6 +330,11 @@ BS_API BsStatus bs_simulation_pocket_name(const BsSimulation* simulation, int32_
                                           const char** out);
 /** The result file, exactly `breakshot simulate`'s bytes. */
 BS_API BsStatus bs_simulation_result_json(const BsSimulation* simulation, char** out);
+/** The result file of a run of `scenario`, exactly `breakshot simulate`'s
+ * bytes (bs_simulation_result_json of bs_simulate's run), without keeping
+ * the run: cheaper when the file is all that is wanted. BS_ERROR_INVALID
+ * if the scenario is not valid. */
+BS_API BsStatus bs_simulate_result_json(const BsScenario* scenario, char** out);
 
 /* ------------------------------------------------------------------------
  * Games: a session of one game between two seats, its legal actions,
@@ -398,6 +410,141 @@ BS_API void bs_player_free(BsPlayer* player);
  * encoding), with the game's seed for that action, as `breakshot match`
  * gives it. Pass it to bs_game_apply_json. */
 BS_API BsStatus bs_player_decide_json(BsPlayer* player, const BsGame* game, char** action);
+
+/* ------------------------------------------------------------------------
+ * Experimental: games as the browser page plays them (web/api is a thin
+ * layer on these calls). A game may be made from the page's config
+ * document or a link, and carries a budget of simulations for its
+ * computer players. JSON in the game records' encoding (src/io), as for
+ * the calls above; docs/c-api.md gives each reply's fields. */
+
+/** Experimental. A game from the page's config: {"game", "table", "seed"
+ * (a decimal string, or an integer up to 2^53), "breaker", "players": [two
+ * seats, "human" or a computer player of the game (bs_game_players_json),
+ * either at a named noise], "ai_budget" (simulations per decision of the
+ * game's computer players; bs_player_new_for_game), "physics": {"airborne"},
+ * "carom": {"target", "innings_limit", "equalizing_inning"} (three_cushion
+ * only)}. BS_ERROR_BAD_JSON names the field ("players[1]: ..."). */
+BS_API BsStatus bs_game_new_json(const char* config, size_t len, BsGame** out);
+/** Experimental. The computer players a seat of `game` may be:
+ * {"game", "players": [names]} (the AI levels that play it, and "baseline"
+ * where it plays). */
+BS_API BsStatus bs_game_players_json(const char* game, char** out);
+/** Experimental. The name of seat `seat` (0 or 1): "human" or a player. */
+BS_API BsStatus bs_game_seat(const BsGame* game, int32_t seat, const char** out);
+/** Experimental. The game's budget of simulations per computer decision
+ * ("ai_budget", a link's "n"); 0 when it has none (each level its own). */
+BS_API BsStatus bs_game_ai_budget(const BsGame* game, int64_t* out);
+/** Experimental. bs_game_apply_json, and what the action did: {"index",
+ * "player", "kind" ("place", "shoot", "decide"), "executed" (the action as
+ * played, after noise), "intended" and "numbers" (shots: the strike chosen,
+ * and the ball number of each ball of the shot's scenario), "ruling",
+ * "turn" (as bs_game_turns_json), "facts"}. Messages name the field from
+ * the action's root ("strike.speed: ..."); the rules' refusal is
+ * BS_ERROR_ILLEGAL with their reason, the game unchanged. */
+BS_API BsStatus bs_game_act_json(BsGame* game, const char* action, size_t len, char** out);
+/** Experimental. Whose turn it is after each action, and why: {"turns":
+ * [{"next": seat (-1 once over), "why": "continues" | "passes" | "foul" |
+ * "decides" | "breaks" | "game_over"}, ...]}. */
+BS_API BsStatus bs_game_turns_json(const BsGame* game, char** out);
+/** Experimental. Takes the game back to its first n actions (n up to
+ * bs_game_info's actions; BS_ERROR_OUT_OF_RANGE otherwise). */
+BS_API BsStatus bs_game_undo_to(BsGame* game, size_t n);
+/** Experimental. The game's table as src/io's table encoding writes it,
+ * its markings included. */
+BS_API BsStatus bs_game_table_json(const BsGame* game, char** out);
+/** Experimental. BS_OK when the seat to act may place the cue ball at
+ * (x, y) now, BS_ERROR_ILLEGAL with the rules' reason as the game's
+ * message when not. */
+BS_API BsStatus bs_game_check_placement(const BsGame* game, double x, double y);
+/** Experimental. A snooker game's figures now: {"balls_on",
+ * "points_remaining", "snookers_required": [2]}; BS_ERROR_STATE for
+ * another game. */
+BS_API BsStatus bs_game_snooker_figures_json(const BsGame* game, char** out);
+/** Experimental. A three-cushion game's figures now: {"cue_ball" (the
+ * ball the player to act strikes), "general_average": [2], "highest_run":
+ * [2]}; BS_ERROR_STATE for another game. */
+BS_API BsStatus bs_game_carom_figures_json(const BsGame* game, char** out);
+/** Experimental. The game as a link: "v2." and the base64url of its
+ * config, seats, budget and actions as chosen (docs/c-api.md). */
+BS_API BsStatus bs_game_link(const BsGame* game, char** out);
+/** Experimental. A game from a link ("v2.", or "v1." read with the legacy
+ * physics; the link may sit in a URL's "game=" parameter), its actions
+ * replayed through the rules: BS_ERROR_BAD_JSON names the first thing
+ * refused ("link.a[7]: refused: ..."). */
+BS_API BsStatus bs_game_from_link(const char* link, size_t len, BsGame** out);
+
+/** Experimental. The AI levels and the budget each decides with in
+ * bs_player_new_for_game: {"levels": [...], "budgets": {level: n}}. */
+BS_API BsStatus bs_ai_levels_json(char** out);
+/** Experimental. The computer player of the seat to act in `game` (`name`
+ * NULL or "") or the one named (a hint for a human seat), as the page's
+ * AI decides: one thread, no time limit and a budget of simulations per
+ * decision (the game's, else the level's: bs_ai_levels_json), so that its
+ * decisions are the same on every machine. BS_ERROR_OUT_OF_RANGE ("level:
+ * ...") for a name that does not play the game, or a human seat to act
+ * without a name; BS_ERROR_STATE once the game is over. Decide with
+ * bs_player_decide_json on the same game. */
+BS_API BsStatus bs_player_new_for_game(const BsGame* game, const char* name, BsPlayer** out);
+
+/* ------------------------------------------------------------------------
+ * Experimental: playbacks, a scenario run forward frame by frame for
+ * drawing (a simulation advanced to each frame's time). */
+
+typedef struct BsPlayback BsPlayback;
+
+/* A frame (bs_playback_frame) as doubles:
+ *   [0] t  [1] events so far  [2] at_rest (1|0)  [3] complete (1|0: 0
+ *   once max_events stopped the run)  [4] energy (J)  [5] px  [6] py
+ *   [7] n, the number of balls
+ * then BS_FRAME_STRIDE per ball, in scenario order, from
+ * [BS_FRAME_HEADER + BS_FRAME_STRIDE i]: x, y, on_table (1|0: 0 in a pocket
+ * or off the table), vx, vy, energy, px, py;
+ * then the flight block from [BS_FRAME_HEADER + BS_FRAME_STRIDE n]: a
+ * flag, 1 when a ball of the frame is off the cloth (in flight or off the
+ * table) else 0, then BS_FLIGHT_STRIDE per ball: z (the height of the
+ * centre above its resting height, m) and its place (0 on the cloth or in
+ * a pocket, 1 in flight, 2 off the table). */
+#define BS_FRAME_HEADER 8
+#define BS_FRAME_STRIDE 8
+#define BS_FLIGHT_STRIDE 2
+
+/** Experimental. A playback of `scenario` (BS_ERROR_INVALID if it is not
+ * valid), at its start. */
+BS_API BsStatus bs_playback_new(const BsScenario* scenario, BsPlayback** out);
+/** Experimental. The playback of action `index` of `game` (a shot, as
+ * executed) from the state before it: balls as bs_game_shot_simulation
+ * orders them. */
+BS_API BsStatus bs_game_shot_playback(const BsGame* game, size_t index, BsPlayback** out);
+BS_API void bs_playback_free(BsPlayback* playback);
+/** Experimental. Advances the playback to time t (finite, not earlier than
+ * the last frame's: BS_ERROR_OUT_OF_RANGE) and gives its frame: *out
+ * points to *n doubles in the layout above, owned by the playback and
+ * valid until its next call. A run that ends at a time stays there. */
+BS_API BsStatus bs_playback_frame(BsPlayback* playback, double t, const double** out, size_t* n);
+/** Experimental. Where a playback stands. */
+typedef struct BsPlaybackInfo {
+  size_t balls;
+  size_t events;    /**< events played so far */
+  double time;      /**< the playback's time (its last frame's; 0 at the start) */
+  int32_t at_rest;  /**< 1 when no ball moves */
+  int32_t complete; /**< 0 once max_events stopped the run */
+} BsPlaybackInfo;
+
+/** Experimental. */
+BS_API BsStatus bs_playback_info(const BsPlayback* playback, BsPlaybackInfo* out);
+/** Experimental. Every ball's state at the playback's time (its last
+ * frame's, or the start) into out[0 .. n), n the number of balls. */
+BS_API BsStatus bs_playback_states(const BsPlayback* playback, BsBallState* out, size_t n);
+/** Experimental. The events so far from index `from` (up to the number
+ * played: BS_ERROR_OUT_OF_RANGE beyond): {"from", "events": [...]}, each
+ * as the result file writes it. */
+BS_API BsStatus bs_playback_events_json(const BsPlayback* playback, size_t from, char** out);
+/** Experimental. A three-cushion shot's count over its events so far
+ * (bs_game_shot_playback of a three-cushion shot; BS_ERROR_STATE for
+ * another playback): {"cushions", "hit" (ball numbers, in order), "done",
+ * "made"}, as the rules count. */
+BS_API BsStatus bs_playback_carom_count_json(const BsPlayback* playback, char** out);
 
 #ifdef __cplusplus
 }

@@ -10,6 +10,10 @@ export const games: readonly GameName[];
 /** The computer players a seat of `game` may be (AI levels, and "baseline" where it plays). */
 export function players(game: GameName): string[];
 
+/** The motion states' names (the result file's "state"), by the codes of States.motion. */
+export const motions: readonly MotionName[];
+export type MotionName =
+  | 'stationary' | 'moving' | 'sliding' | 'rolling' | 'spinning' | 'pocketed' | 'airborne' | 'off_table';
 export type GameName = 'eight_ball' | 'nine_ball' | 'ten_ball' | 'snooker' | 'three_cushion';
 
 /** Anything JSON: the engine reads objects as their JSON text. */
@@ -94,6 +98,9 @@ export interface States {
   onTable: Uint8Array;
   /** 0 on the cloth or in a pocket, 1 in flight, 2 off the table. */
   place: Uint8Array;
+  /** Each ball's motion state, an index of `motions`: 0 stationary, 1 moving, 2 sliding,
+   *  3 rolling, 4 spinning, 5 pocketed, 6 airborne, 7 off the table. */
+  motion: Uint8Array;
   ballEnergy: Float64Array;
   ballMomentum: Float64Array;
 }

@@ -30,9 +30,9 @@ namespace io = breakshot::json_io;
 using ojson = nlohmann::ordered_json;
 
 struct GameDeleter {
-  void operator()(BsGame* g) const { bs_game_free(g); }
+  void operator()(BsWebGame* g) const { bs_web_game_free(g); }
 };
-using GamePtr = std::unique_ptr<BsGame, GameDeleter>;
+using GamePtr = std::unique_ptr<BsWebGame, GameDeleter>;
 
 /// A facade game between two quick computer players (the baseline where
 /// it plays, else beginners), played for `actions` actions; every act
@@ -41,12 +41,12 @@ GamePtr played(const std::string& game, int actions, std::vector<std::string>& r
   const std::string seat = game == "snooker" || game == "three_cushion" ? "baseline" : "beginner";
   const std::string config = R"({"game": ")" + game + R"(", "seed": "11", "players": [")" + seat +
                              R"(", ")" + seat + R"("], "ai_budget": 30})";
-  GamePtr g(bs_game_new(config.c_str()));
-  EXPECT_NE(g, nullptr) << bs_last_error();
+  GamePtr g(bs_web_game_new(config.c_str()));
+  EXPECT_NE(g, nullptr) << bs_web_last_error();
   for (int k = 0; k < actions; ++k) {
-    if (ojson::parse(bs_game_state(g.get()))["phase"] == "game_over") break;
-    const ojson a = ojson::parse(bs_game_ai_action(g.get(), nullptr));
-    replies.emplace_back(bs_game_act(g.get(), a["action"].dump().c_str()));
+    if (ojson::parse(bs_web_game_state(g.get()))["phase"] == "game_over") break;
+    const ojson a = ojson::parse(bs_web_game_ai_action(g.get(), nullptr));
+    replies.emplace_back(bs_web_game_act(g.get(), a["action"].dump().c_str()));
     EXPECT_FALSE(ojson::parse(replies.back()).contains("error")) << replies.back();
   }
   return g;
@@ -82,13 +82,13 @@ TEST(Encodings, FacadeRepliesAreTheIoEncodings) {
     std::vector<std::string> replies;
     GamePtr g = played(game, 4, replies);
     ASSERT_FALSE(replies.empty()) << game;
-    const auto read = bs::read_record(bs_game_record(g.get()));
+    const auto read = bs::read_record(bs_web_game_record(g.get()));
     ASSERT_TRUE(std::holds_alternative<bs::GameRecord>(read)) << game;
     const bs::GameRecord& record = std::get<bs::GameRecord>(read);
     bs::GameSession session(record.config, bs::Seats{record.players, record.noise}, record.seed,
                             record.start.rack_seed, record.start.breaker);
 
-    EXPECT_EQ(std::string(bs_game_table(g.get())), io::game_table_json(session.rules()).dump())
+    EXPECT_EQ(std::string(bs_web_game_table(g.get())), io::game_table_json(session.rules()).dump())
         << game;
     ASSERT_EQ(replies.size(), record.actions.size()) << game;
     for (std::size_t i = 0; i < record.actions.size(); ++i) {

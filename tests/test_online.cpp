@@ -153,30 +153,30 @@ class WsClient {
 // A player: a client and its own copy of the game, played in lockstep.
 struct Player {
   std::unique_ptr<WsClient> ws;
-  BsGame* game = nullptr;
+  BsWebGame* game = nullptr;
   int seat = -1;
   std::string room;
   std::string token;
 
-  ~Player() { bs_game_free(game); }
+  ~Player() { bs_web_game_free(game); }
 
   // Takes the "joined" reply: builds the game and plays its log.
   void joined(const json& j) {
     room = j["room"];
     if (j["seat"].is_number()) seat = j["seat"];
     if (j.contains("token")) token = j["token"];
-    bs_game_free(game);
-    game = bs_game_new(j["config"].dump().c_str());
-    if (game == nullptr) throw std::runtime_error(bs_last_error());
+    bs_web_game_free(game);
+    game = bs_web_game_new(j["config"].dump().c_str());
+    if (game == nullptr) throw std::runtime_error(bs_web_last_error());
     for (const json& a : j["actions"]) play(a);
     check_hash(j["hash"]);
   }
   void play(const json& action) {
-    const json r = json::parse(bs_game_act(game, action.dump().c_str()));
+    const json r = json::parse(bs_web_game_act(game, action.dump().c_str()));
     if (r.contains("error")) throw std::runtime_error("the rules refuse " + action.dump());
   }
   void check_hash(const json& hash) const {
-    const std::string mine = breakshot::online::state_hash(bs_game_state(game));
+    const std::string mine = breakshot::online::state_hash(bs_web_game_state(game));
     if (mine != hash.get<std::string>()) {
       throw std::runtime_error("hash mismatch: " + mine + " here, " + hash.dump() +
                                " on the server");
@@ -187,7 +187,7 @@ struct Player {
     play(m["action"]);
     check_hash(m["hash"]);
   }
-  json state() const { return json::parse(bs_game_state(game)); }
+  json state() const { return json::parse(bs_web_game_state(game)); }
   bool to_act() const { return state()["player"] == seat; }
 };
 

@@ -154,7 +154,7 @@ TEST_F(RoomsTest, TheServerIsTheAuthorityOnEveryAction) {
     EXPECT_EQ(a["hash"].get<std::string>().size(), 16u);
   }
   // Lockstep: a page that plays the action itself gets the same hash.
-  BsGame* mine = bs_game_new(
+  BsWebGame* mine = bs_web_game_new(
       first_of(
           rooms_.receive(9, R"({"type": "join", "room": ")" + code + R"(", "watch": true})", 4), 9,
           "joined")["config"]
@@ -162,10 +162,10 @@ TEST_F(RoomsTest, TheServerIsTheAuthorityOnEveryAction) {
           .c_str());
   ASSERT_NE(mine, nullptr);
   const json a = first_of(fx, 1, "action");
-  const json played = json::parse(bs_game_act(mine, a["action"].dump().c_str()));
+  const json played = json::parse(bs_web_game_act(mine, a["action"].dump().c_str()));
   ASSERT_FALSE(played.contains("error")) << played;
-  EXPECT_EQ(breakshot::online::state_hash(bs_game_state(mine)), a["hash"]);
-  bs_game_free(mine);
+  EXPECT_EQ(breakshot::online::state_hash(bs_web_game_state(mine)), a["hash"]);
+  bs_web_game_free(mine);
   // Each action writes the record, under the rooms' name; it replays.
   ASSERT_EQ(fx.records.size(), 1u);
   EXPECT_EQ(fx.records[0].name, "test-000001-" + code + ".json");

@@ -70,23 +70,23 @@ bool starts_with(const std::string& s, const std::string& prefix) {
 }
 
 struct GameDeleter {
-  void operator()(BsGame* g) const { bs_game_free(g); }
+  void operator()(BsWebGame* g) const { bs_web_game_free(g); }
 };
 struct PlaybackDeleter {
-  void operator()(BsPlayback* p) const { bs_playback_free(p); }
+  void operator()(BsWebPlayback* p) const { bs_web_playback_free(p); }
 };
-using GamePtr = std::unique_ptr<BsGame, GameDeleter>;
-using PlaybackPtr = std::unique_ptr<BsPlayback, PlaybackDeleter>;
+using GamePtr = std::unique_ptr<BsWebGame, GameDeleter>;
+using PlaybackPtr = std::unique_ptr<BsWebPlayback, PlaybackDeleter>;
 
 GamePtr new_game(const std::string& config) {
-  GamePtr g(bs_game_new(config.c_str()));
-  EXPECT_NE(g, nullptr) << bs_last_error();
+  GamePtr g(bs_web_game_new(config.c_str()));
+  EXPECT_NE(g, nullptr) << bs_web_last_error();
   return g;
 }
 
-std::string state_of(BsGame* g) { return bs_game_state(g); }
-std::string link_of(BsGame* g) { return J(bs_game_link(g))["link"].get<std::string>(); }
-std::string record_of(BsGame* g) { return bs_game_record(g); }
+std::string state_of(BsWebGame* g) { return bs_web_game_state(g); }
+std::string link_of(BsWebGame* g) { return J(bs_web_game_link(g))["link"].get<std::string>(); }
+std::string record_of(BsWebGame* g) { return bs_web_game_record(g); }
 
 /// The action placing the cue ball at (x, y), in the records' form.
 std::string place_json(double x, double y) {
@@ -103,16 +103,16 @@ std::string shoot_json(const std::string& strike, const std::string& call = "nul
 }
 
 /// Acts; fails the test on an error reply.
-json act(BsGame* g, const std::string& action) {
-  const std::string reply = bs_game_act(g, action.c_str());
+json act(BsWebGame* g, const std::string& action) {
+  const std::string reply = bs_web_game_act(g, action.c_str());
   EXPECT_EQ(error_of(reply.c_str()), "") << action;
   return json::parse(reply);
 }
 
 /// The AI's decision (for a human seat, the hint of `level`), played as
 /// the reply gives it: its exact text, so nothing is re-encoded.
-json ai_act(BsGame* g, const char* level = nullptr) {
-  const std::string reply = bs_game_ai_action(g, level);
+json ai_act(BsWebGame* g, const char* level = nullptr) {
+  const std::string reply = bs_web_game_ai_action(g, level);
   const std::string head = "{\"action\":";
   EXPECT_TRUE(starts_with(reply, head)) << reply;
   if (!starts_with(reply, head)) return json();
@@ -120,7 +120,7 @@ json ai_act(BsGame* g, const char* level = nullptr) {
 }
 
 /// For a seat that may be human: its own AI, or the hint of `level`.
-json step_ai(BsGame* g, const char* level_for_humans) {
+json step_ai(BsWebGame* g, const char* level_for_humans) {
   const json s = json::parse(state_of(g));
   const bool human = s["players"][s["player"].get<std::size_t>()] == "human";
   return ai_act(g, human ? level_for_humans : nullptr);
@@ -144,7 +144,7 @@ GamePtr short_game(int ai_actions) {
 // ---------------------------------------------------------------------------
 
 TEST(WebApi, VersionListsTheLevelsAndTheirBudgets) {
-  const json v = J(bs_version());
+  const json v = J(bs_web_version());
   EXPECT_FALSE(v["version"].get<std::string>().empty());
   EXPECT_EQ(v["levels"].size(), bs::ai_level_names().size());
   for (const std::string& l : bs::ai_level_names()) EXPECT_GE(v["ai_budgets"][l].get<int>(), 1) << l;
@@ -153,7 +153,7 @@ TEST(WebApi, VersionListsTheLevelsAndTheirBudgets) {
 TEST(WebApi, TheDefaultsAreDefaultPhysicsEveryField) {
   // Every field of PhysicsParams (physics_fields.hpp: a field it does not
   // list fails to compile), by name, and nothing else.
-  const json d = J(bs_version())["defaults"];
+  const json d = J(bs_web_version())["defaults"];
   for (const bs::Model m : {bs::Model::ideal, bs::Model::friction, bs::Model::pool}) {
     const std::string name(bs::to_string(m));
     const bs::PhysicsParams p = bs::default_physics(m);
@@ -191,20 +191,20 @@ TEST(WebApi, SimulateIsTheResultFile) {
     const auto parsed = bs::read_scenario(text);
     ASSERT_TRUE(std::holds_alternative<bs::Scenario>(parsed)) << f;
     const bs::Scenario& s = std::get<bs::Scenario>(parsed);
-    char* reply = bs_simulate(text.c_str());
+    char* reply = bs_web_simulate(text.c_str());
     EXPECT_EQ(std::string(reply), bs::write_result(s, bs::simulate(s))) << f;
-    bs_free(reply);
+    bs_web_free(reply);
   }
 }
 
 TEST(WebApi, ErrorsNameTheField) {
   // simulate: the scenario reader's path, or the document.
-  char* r = bs_simulate("{\"physics\": {\"model\": \"pool\"}, \"table\": 7}");
+  char* r = bs_web_simulate("{\"physics\": {\"model\": \"pool\"}, \"table\": 7}");
   EXPECT_TRUE(starts_with(error_of(r), "table")) << r;
-  bs_free(r);
-  r = bs_simulate(nullptr);
+  bs_web_free(r);
+  r = bs_web_simulate(nullptr);
   EXPECT_TRUE(starts_with(error_of(r), "scenario:")) << r;
-  bs_free(r);
+  bs_web_free(r);
 
   // Game configs.
   const std::pair<const char*, const char*> configs[] = {
@@ -229,11 +229,11 @@ TEST(WebApi, ErrorsNameTheField) {
       {R"({"game": )", "config: not valid JSON"},
   };
   for (const auto& [config, prefix] : configs) {
-    EXPECT_EQ(bs_game_new(config), nullptr) << config;
-    EXPECT_TRUE(starts_with(error_of(bs_last_error()), prefix)) << config << " -> " << bs_last_error();
+    EXPECT_EQ(bs_web_game_new(config), nullptr) << config;
+    EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), prefix)) << config << " -> " << bs_web_last_error();
   }
-  EXPECT_EQ(bs_game_new(nullptr), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "config:"));
+  EXPECT_EQ(bs_web_game_new(nullptr), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "config:"));
 
   // Actions: the field, or the rules' reason; the game is unchanged.
   GamePtr g = new_game(R"({"game": "eight_ball", "seed": "1", "players": ["human", "beginner"]})");
@@ -264,71 +264,71 @@ TEST(WebApi, ErrorsNameTheField) {
       {R"(not json)", "action: not valid JSON"},
   };
   for (const auto& [action, prefix] : actions) {
-    const char* reply = bs_game_act(g.get(), action.c_str());
+    const char* reply = bs_web_game_act(g.get(), action.c_str());
     EXPECT_TRUE(starts_with(error_of(reply), prefix)) << action << " -> " << reply;
   }
   // The rules' reasons (check()).
-  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"type": "decide", "choice": "shoot"})")), "");
-  EXPECT_NE(error_of(bs_game_act(g.get(), shoot_json(R"("speed": 25, "phi": 0, "theta": 0, "a": 0, "b": 0)").c_str())), "");
-  EXPECT_NE(error_of(bs_game_act(g.get(), place_json(2.0, 0.6).c_str())), "");
+  EXPECT_NE(error_of(bs_web_game_act(g.get(), R"({"type": "decide", "choice": "shoot"})")), "");
+  EXPECT_NE(error_of(bs_web_game_act(g.get(), shoot_json(R"("speed": 25, "phi": 0, "theta": 0, "a": 0, "b": 0)").c_str())), "");
+  EXPECT_NE(error_of(bs_web_game_act(g.get(), place_json(2.0, 0.6).c_str())), "");
   EXPECT_EQ(state_of(g.get()), before);
 
   // AI: a human seat needs a level for a hint; unknown levels are named.
-  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), nullptr)), "level:"));
-  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "grandmaster")), "level:"));
-  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "human")), "level:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_ai_action(g.get(), nullptr)), "level:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_ai_action(g.get(), "grandmaster")), "level:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_ai_action(g.get(), "human")), "level:"));
 
   // Undo, shot playback, null handles.
-  EXPECT_TRUE(starts_with(error_of(bs_game_undo_to(g.get(), 1)), "n:"));
-  EXPECT_TRUE(starts_with(error_of(bs_game_undo_to(g.get(), -1)), "n:"));
-  EXPECT_EQ(bs_game_shot_playback(g.get(), 0), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "index:"));
-  EXPECT_TRUE(starts_with(error_of(bs_game_state(nullptr)), "handle:"));
-  EXPECT_TRUE(starts_with(error_of(bs_playback_frame(nullptr, 0.0)), "handle:"));
-  EXPECT_EQ(bs_game_shot_playback(nullptr, 0), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_undo_to(g.get(), 1)), "n:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_undo_to(g.get(), -1)), "n:"));
+  EXPECT_EQ(bs_web_game_shot_playback(g.get(), 0), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "index:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_state(nullptr)), "handle:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_playback_frame(nullptr, 0.0)), "handle:"));
+  EXPECT_EQ(bs_web_game_shot_playback(nullptr, 0), nullptr);
 
   // Links.
   for (const char* link : {"", "v2.e30", "v1.!!!", "v1.e30", "v1.W10"}) {
-    EXPECT_EQ(bs_game_from_link(link), nullptr) << link;
-    EXPECT_TRUE(starts_with(error_of(bs_last_error()), "link")) << link << " -> " << bs_last_error();
+    EXPECT_EQ(bs_web_game_from_link(link), nullptr) << link;
+    EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "link")) << link << " -> " << bs_web_last_error();
   }
-  EXPECT_EQ(bs_game_from_link(nullptr), nullptr);
+  EXPECT_EQ(bs_web_game_from_link(nullptr), nullptr);
 
   // Playbacks.
-  EXPECT_EQ(bs_playback_new("{\"physics\": 1}"), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "physics")) << bs_last_error();
+  EXPECT_EQ(bs_web_playback_new("{\"physics\": 1}"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "physics")) << bs_web_last_error();
   const std::string scenario = read_example("examples/pool/stop_shot.json");
-  PlaybackPtr pb(bs_playback_new(scenario.c_str()));
-  ASSERT_NE(pb, nullptr) << bs_last_error();
-  EXPECT_EQ(error_of(bs_playback_frame(pb.get(), 0.5)), "");
-  EXPECT_TRUE(starts_with(error_of(bs_playback_frame(pb.get(), 0.25)), "t:"));
-  EXPECT_TRUE(starts_with(error_of(bs_playback_frame(pb.get(), std::nan(""))), "t:"));
-  EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), -1)), "from:"));
-  EXPECT_TRUE(starts_with(error_of(bs_playback_events(pb.get(), 100000)), "from:"));
+  PlaybackPtr pb(bs_web_playback_new(scenario.c_str()));
+  ASSERT_NE(pb, nullptr) << bs_web_last_error();
+  EXPECT_EQ(error_of(bs_web_playback_frame(pb.get(), 0.5)), "");
+  EXPECT_TRUE(starts_with(error_of(bs_web_playback_frame(pb.get(), 0.25)), "t:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_playback_frame(pb.get(), std::nan(""))), "t:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_playback_events(pb.get(), -1)), "from:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_playback_events(pb.get(), 100000)), "from:"));
 }
 
 TEST(WebApi, ASuccessfulCallClearsTheLastError) {
   const std::string none = R"({"error":"no error"})";
   const std::string scenario = read_example("examples/pool/stop_shot.json");
   // A constructor that fails, then one that succeeds.
-  EXPECT_EQ(bs_playback_new("{\"physics\": 1}"), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "physics")) << bs_last_error();
-  PlaybackPtr pb(bs_playback_new(scenario.c_str()));
+  EXPECT_EQ(bs_web_playback_new("{\"physics\": 1}"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "physics")) << bs_web_last_error();
+  PlaybackPtr pb(bs_web_playback_new(scenario.c_str()));
   ASSERT_NE(pb, nullptr);
-  EXPECT_EQ(std::string(bs_last_error()), none);
+  EXPECT_EQ(std::string(bs_web_last_error()), none);
   // A call on a handle that fails, then one that succeeds.
-  ASSERT_NE(bs_playback_frame_data(pb.get(), 0.5), nullptr);
-  EXPECT_EQ(bs_playback_frame_data(pb.get(), 0.25), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "t:")) << bs_last_error();
-  ASSERT_NE(bs_playback_frame_data(pb.get(), 0.75), nullptr);
-  EXPECT_EQ(std::string(bs_last_error()), none);
+  ASSERT_NE(bs_web_playback_frame_data(pb.get(), 0.5), nullptr);
+  EXPECT_EQ(bs_web_playback_frame_data(pb.get(), 0.25), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "t:")) << bs_web_last_error();
+  ASSERT_NE(bs_web_playback_frame_data(pb.get(), 0.75), nullptr);
+  EXPECT_EQ(std::string(bs_web_last_error()), none);
   // A failure, then a success of a call that replies text.
-  EXPECT_EQ(bs_game_from_link("v2.e30"), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "link")) << bs_last_error();
-  char* result = bs_simulate(scenario.c_str());
+  EXPECT_EQ(bs_web_game_from_link("v2.e30"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "link")) << bs_web_last_error();
+  char* result = bs_web_simulate(scenario.c_str());
   EXPECT_EQ(error_of(result), "");
-  bs_free(result);
-  EXPECT_EQ(std::string(bs_last_error()), none);
+  bs_web_free(result);
+  EXPECT_EQ(std::string(bs_web_last_error()), none);
 }
 
 /// A link holding `body`: `prefix` ("v1." by default) and its base64url.
@@ -385,13 +385,13 @@ TEST(WebApi, LinksSayTheEngineAndThePhysicsAndV1LinksReadAsLegacy) {
   // The break (the cue ball placed and struck): later actions were chosen
   // on the default physics and need not be legal on the legacy one.
   old["a"] = json::array({body["a"][0], body["a"][1]});
-  GamePtr h(bs_game_from_link(link_of_body(old.dump()).c_str()));
-  ASSERT_NE(h, nullptr) << bs_last_error();
+  GamePtr h(bs_web_game_from_link(link_of_body(old.dump()).c_str()));
+  ASSERT_NE(h, nullptr) << bs_web_last_error();
   EXPECT_EQ(J(record_of(h.get()).c_str())["physics"], legacy);
   EXPECT_EQ(body_of_link(link_of(h.get()))["ph"], legacy);
   // Its v2 link gives the same game again.
-  GamePtr h2(bs_game_from_link(link_of(h.get()).c_str()));
-  ASSERT_NE(h2, nullptr) << bs_last_error();
+  GamePtr h2(bs_web_game_from_link(link_of(h.get()).c_str()));
+  ASSERT_NE(h2, nullptr) << bs_web_last_error();
   EXPECT_EQ(record_of(h2.get()), record_of(h.get()));
 
   // Another physics is played and kept.
@@ -399,8 +399,8 @@ TEST(WebApi, LinksSayTheEngineAndThePhysicsAndV1LinksReadAsLegacy) {
   other["ph"] = json::parse(R"({"cushion_model":"mathavan_2010","ball_ball_model":"mathavan_2014",
                                 "ball_ball_friction":{"a":0.016,"b":0.219,"c":0.691}})");
   other["a"] = json::array();
-  GamePtr m(bs_game_from_link(link_of_body(other.dump(), "v2.").c_str()));
-  ASSERT_NE(m, nullptr) << bs_last_error();
+  GamePtr m(bs_web_game_from_link(link_of_body(other.dump(), "v2.").c_str()));
+  ASSERT_NE(m, nullptr) << bs_web_last_error();
   EXPECT_EQ(body_of_link(link_of(m.get()))["ph"], other["ph"]);
   EXPECT_NE(record_of(m.get()).find("\"cushion_model\":\"mathavan_2010\""), std::string::npos);
   // A v2 link without "spinning_friction" (written before it was recorded)
@@ -408,22 +408,22 @@ TEST(WebApi, LinksSayTheEngineAndThePhysicsAndV1LinksReadAsLegacy) {
   EXPECT_EQ(record_of(m.get()).find("spinning_friction"), std::string::npos);
   json measured = other;
   measured["ph"]["spinning_friction"] = 0.0117;
-  GamePtr ms(bs_game_from_link(link_of_body(measured.dump(), "v2.").c_str()));
-  ASSERT_NE(ms, nullptr) << bs_last_error();
+  GamePtr ms(bs_web_game_from_link(link_of_body(measured.dump(), "v2.").c_str()));
+  ASSERT_NE(ms, nullptr) << bs_web_last_error();
   EXPECT_EQ(body_of_link(link_of(ms.get()))["ph"], measured["ph"]);
 
   // Physics this build does not have: refused, naming the link's engine.
   json future = other;
   future["e"] = "0.3.0";
   future["ph"]["cushion_model"] = "cushion_law_of_2099";
-  EXPECT_EQ(bs_game_from_link(link_of_body(future.dump(), "v2.").c_str()), nullptr);
-  const std::string err = error_of(bs_last_error());
+  EXPECT_EQ(bs_web_game_from_link(link_of_body(future.dump(), "v2.").c_str()), nullptr);
+  const std::string err = error_of(bs_web_last_error());
   EXPECT_TRUE(starts_with(err, "link.ph.cushion_model: unknown cushion model \"cushion_law_of_2099\""))
       << err;
   EXPECT_NE(err.find("made by breakshot 0.3.0"), std::string::npos) << err;
   // A link format of a later version is named.
-  EXPECT_EQ(bs_game_from_link("v3.e30"), nullptr);
-  EXPECT_NE(error_of(bs_last_error()).find("not \"v3\""), std::string::npos) << bs_last_error();
+  EXPECT_EQ(bs_web_game_from_link("v3.e30"), nullptr);
+  EXPECT_NE(error_of(bs_web_last_error()).find("not \"v3\""), std::string::npos) << bs_web_last_error();
 }
 
 TEST(WebApi, LinkErrorsNameTheActionRefused) {
@@ -451,8 +451,8 @@ TEST(WebApi, LinkErrorsNameTheActionRefused) {
        "link.s: expected a seed: a decimal integer in [0, 2^64), not \"x1\""},
   };
   for (const auto& [body, prefix] : cases) {
-    EXPECT_EQ(bs_game_from_link(link_of_body(body).c_str()), nullptr) << body;
-    EXPECT_TRUE(starts_with(error_of(bs_last_error()), prefix)) << body << " -> " << bs_last_error();
+    EXPECT_EQ(bs_web_game_from_link(link_of_body(body).c_str()), nullptr) << body;
+    EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), prefix)) << body << " -> " << bs_web_last_error();
   }
 }
 
@@ -465,14 +465,14 @@ TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
     const bs::Scenario& s = std::get<bs::Scenario>(parsed);
     const bs::RunResult result = bs::simulate(s);
 
-    PlaybackPtr pb(bs_playback_new(text.c_str()));
-    ASSERT_NE(pb, nullptr) << bs_last_error();
+    PlaybackPtr pb(bs_web_playback_new(text.c_str()));
+    ASSERT_NE(pb, nullptr) << bs_web_last_error();
     bs::Simulation sim(s);
     double end = result.final_time;
     for (int k = 0; k < 30; ++k) {
       const double t = std::fmin(static_cast<double>(k) * 0.2, end);
       sim.advance_to(t);
-      const json f = J(bs_playback_frame(pb.get(), t));
+      const json f = J(bs_web_playback_frame(pb.get(), t));
       ASSERT_EQ(f["balls"].size(), s.balls.size()) << file;
       EXPECT_EQ(f["t"].get<double>(), sim.time());
       EXPECT_EQ(f["events"].get<std::size_t>(), sim.events().size());
@@ -494,7 +494,7 @@ TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
       EXPECT_EQ(f["energy"].get<double>(), energy);
     }
     // The last frame: simulate()'s final state and events.
-    const json last = J(bs_playback_frame(pb.get(), end));
+    const json last = J(bs_web_playback_frame(pb.get(), end));
     EXPECT_EQ(last["t"].get<double>(), result.final_time) << file;
     EXPECT_EQ(last["events"].get<std::size_t>(), result.events.size());
     for (std::size_t i = 0; i < s.balls.size(); ++i) {
@@ -502,7 +502,7 @@ TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
       EXPECT_EQ(last["balls"][i][1].get<double>(), result.final_balls[i].position.y);
       EXPECT_EQ(last["balls"][i][3].get<double>(), result.final_balls[i].velocity.x);
     }
-    const std::string ev_text = bs_playback_events(pb.get(), 0);
+    const std::string ev_text = bs_web_playback_events(pb.get(), 0);
     // The events are the result file's, byte for byte: one encoding.
     {
       const std::string res = bs::write_result(s, result);
@@ -528,7 +528,7 @@ TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
     }
     // A run that ends at a time (the lab) stops there, as simulate() does.
     if (!s.until.rest) {
-      const json after = J(bs_playback_frame(pb.get(), end + 100.0));
+      const json after = J(bs_web_playback_frame(pb.get(), end + 100.0));
       EXPECT_EQ(after["t"].get<double>(), result.final_time);
     }
   }
@@ -537,10 +537,10 @@ TEST(WebApi, PlaybackFramesAreTheSimulationsStates) {
 /// Whether two doubles have the same bits (-0 is not +0).
 bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
-/// Checks that bs_playback_frame_data's doubles `d` are the numbers of the
+/// Checks that bs_web_playback_frame_data's doubles `d` are the numbers of the
 /// JSON frame `f`, bit for bit.
 void expect_frame_data_is(const double* d, const json& f, const std::string& what) {
-  ASSERT_NE(d, nullptr) << what << ": " << bs_last_error();
+  ASSERT_NE(d, nullptr) << what << ": " << bs_web_last_error();
   ASSERT_EQ(error_of(f.dump().c_str()), "") << what;
   EXPECT_TRUE(same_bits(d[0], f["t"].get<double>())) << what;
   EXPECT_EQ(d[1], static_cast<double>(f["events"].get<std::size_t>())) << what;
@@ -586,19 +586,19 @@ TEST(WebApi, FrameDataIsTheJsonFramesNumbers) {
       {"gas_1000", read_example("examples/lab/gas_1000.json")},
       {"newtons_cradle, max_events 3", capped.dump()}};
   for (const auto& [name, text] : runs) {
-    PlaybackPtr a(bs_playback_new(text.c_str()));
-    PlaybackPtr b(bs_playback_new(text.c_str()));
-    ASSERT_NE(a, nullptr) << bs_last_error();
-    ASSERT_NE(b, nullptr) << bs_last_error();
+    PlaybackPtr a(bs_web_playback_new(text.c_str()));
+    PlaybackPtr b(bs_web_playback_new(text.c_str()));
+    ASSERT_NE(a, nullptr) << bs_web_last_error();
+    ASSERT_NE(b, nullptr) << bs_web_last_error();
     bool saw_incomplete = false;
     for (const double t : {0.0, 0.0, 0.01, 1.0 / 60.0, 0.25, 0.5, 1.0, 1.5, 2.0, 2.75, 4.0, 10.0, 1000.0}) {
       const std::string what = name + " t=" + std::to_string(t);
-      const double* d = bs_playback_frame_data(a.get(), t);
-      expect_frame_data_is(d, J(bs_playback_frame(b.get(), t)), what + " (two playbacks)");
+      const double* d = bs_web_playback_frame_data(a.get(), t);
+      expect_frame_data_is(d, J(bs_web_playback_frame(b.get(), t)), what + " (two playbacks)");
       if (d != nullptr && d[3] == 0.0) saw_incomplete = true;
       // The same handle at the same t: the JSON is written from the same doubles.
-      const json f = J(bs_playback_frame(a.get(), t));
-      expect_frame_data_is(bs_playback_frame_data(a.get(), t), f, what + " (one playback)");
+      const json f = J(bs_web_playback_frame(a.get(), t));
+      expect_frame_data_is(bs_web_playback_frame_data(a.get(), t), f, what + " (one playback)");
     }
     EXPECT_EQ(saw_incomplete, name.find("max_events") != std::string::npos) << name;
   }
@@ -609,23 +609,23 @@ TEST(WebApi, PlaybackSpinsAreTheResultFilesSpins) {
   // spins after frames at the same times.
   json s = json::parse(read_example("examples/pool/break_8ball.json"));
   s["samples"] = {{"dt", 0.25}};
-  char* out = bs_simulate(s.dump().c_str());
+  char* out = bs_web_simulate(s.dump().c_str());
   ASSERT_NE(out, nullptr);
   const json result = json::parse(out);
-  bs_free(out);
+  bs_web_free(out);
   ASSERT_TRUE(result.contains("samples")) << result.dump().substr(0, 200);
-  PlaybackPtr pb(bs_playback_new(s.dump().c_str()));
-  ASSERT_NE(pb, nullptr) << bs_last_error();
-  EXPECT_NE(bs_playback_spins(pb.get()), nullptr);  // before any frame: the start's
-  EXPECT_EQ(bs_playback_spins(nullptr), nullptr);
+  PlaybackPtr pb(bs_web_playback_new(s.dump().c_str()));
+  ASSERT_NE(pb, nullptr) << bs_web_last_error();
+  EXPECT_NE(bs_web_playback_spins(pb.get()), nullptr);  // before any frame: the start's
+  EXPECT_EQ(bs_web_playback_spins(nullptr), nullptr);
   int compared = 0;
   double largest = 0.0;
   for (const json& sample : result["samples"]) {
     const double t = sample["time"].get<double>();
     if (t > 3.0) break;
-    ASSERT_NE(bs_playback_frame_data(pb.get(), t), nullptr) << bs_last_error();
-    const double* w = bs_playback_spins(pb.get());
-    ASSERT_NE(w, nullptr) << bs_last_error();
+    ASSERT_NE(bs_web_playback_frame_data(pb.get(), t), nullptr) << bs_web_last_error();
+    const double* w = bs_web_playback_spins(pb.get());
+    ASSERT_NE(w, nullptr) << bs_web_last_error();
     const json& balls = sample["balls"];
     for (std::size_t i = 0; i < balls.size(); ++i) {
       for (std::size_t k = 0; k < 3; ++k) {
@@ -659,13 +659,13 @@ TEST(WebApi, JumpShotFramesCarryTheCueBallsFlight) {
   ASSERT_NE(g, nullptr);
   // The game's physics is in its record and its link.
   EXPECT_TRUE(J(record_of(g.get()).c_str())["physics"]["airborne"].get<bool>());
-  GamePtr again(bs_game_from_link(link_of(g.get()).c_str()));
-  ASSERT_NE(again, nullptr) << bs_last_error();
+  GamePtr again(bs_web_game_from_link(link_of(g.get()).c_str()));
+  ASSERT_NE(again, nullptr) << bs_web_last_error();
   EXPECT_EQ(record_of(again.get()), record_of(g.get()));
 
-  PlaybackPtr pb(bs_game_shot_playback(g.get(), 1));
-  PlaybackPtr twin(bs_game_shot_playback(g.get(), 1));
-  ASSERT_NE(pb, nullptr) << bs_last_error();
+  PlaybackPtr pb(bs_web_game_shot_playback(g.get(), 1));
+  PlaybackPtr twin(bs_web_game_shot_playback(g.get(), 1));
+  ASSERT_NE(pb, nullptr) << bs_web_last_error();
   // Frames every 5 ms over the first half second: the cue ball (index 0
   // of the shot's balls, the cue ball first) rises and falls.
   constexpr double kDt = 0.005;
@@ -674,9 +674,9 @@ TEST(WebApi, JumpShotFramesCarryTheCueBallsFlight) {
   double top = 0.0;
   for (int k = 0; k <= 100; ++k) {
     const double t = kDt * k;
-    const json f = J(bs_playback_frame(pb.get(), t));
+    const json f = J(bs_web_playback_frame(pb.get(), t));
     ASSERT_EQ(error_of(f.dump().c_str()), "") << t;
-    expect_frame_data_is(bs_playback_frame_data(twin.get(), t), f, "jump t=" + std::to_string(t));
+    expect_frame_data_is(bs_web_playback_frame_data(twin.get(), t), f, "jump t=" + std::to_string(t));
     const json& cue = f["balls"][0];
     if (cue.size() == 10) {
       z.push_back(cue[8].get<double>());
@@ -700,7 +700,7 @@ TEST(WebApi, JumpShotFramesCarryTheCueBallsFlight) {
   // any projectile without drag, between events (a bounce on the slate
   // starts another parabola).
   std::vector<double> events;
-  const json reply = J(bs_playback_events(pb.get(), 0));
+  const json reply = J(bs_web_playback_events(pb.get(), 0));
   for (const json& e : reply["events"]) {
     events.push_back(e["time"].get<double>());
   }
@@ -732,52 +732,52 @@ TEST(WebApi, JumpShotOnTheClothKeepsEightNumbersPerBall) {
       act(g.get(), shoot_json(R"("speed": 3.0, "phi": 0, "theta": 45, "a": 0, "b": 0)"));
     }
     EXPECT_EQ(J(record_of(g.get()).c_str())["physics"].contains("airborne"), !explicit_off);
-    PlaybackPtr pb(bs_game_shot_playback(g.get(), 1));
-    ASSERT_NE(pb, nullptr) << bs_last_error();
+    PlaybackPtr pb(bs_web_game_shot_playback(g.get(), 1));
+    ASSERT_NE(pb, nullptr) << bs_web_last_error();
     std::size_t widest = 0;
     for (int k = 0; k <= 100; ++k) {
-      const json f = J(bs_playback_frame(pb.get(), 0.005 * k));
+      const json f = J(bs_web_playback_frame(pb.get(), 0.005 * k));
       for (const json& b : f["balls"]) widest = std::max(widest, b.size());
     }
     EXPECT_EQ(widest, explicit_off ? 8U : 10U);
   }
   // A physics option the facade does not know, or not a bool, is refused.
-  EXPECT_EQ(bs_game_new(R"({"game": "eight_ball", "players": ["human", "human"],
+  EXPECT_EQ(bs_web_game_new(R"({"game": "eight_ball", "players": ["human", "human"],
                             "physics": {"airborne": 1}})"),
             nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "physics.airborne:")) << bs_last_error();
-  EXPECT_EQ(bs_game_new(R"({"game": "eight_ball", "players": ["human", "human"],
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "physics.airborne:")) << bs_web_last_error();
+  EXPECT_EQ(bs_web_game_new(R"({"game": "eight_ball", "players": ["human", "human"],
                             "physics": {"gravity": 1}})"),
             nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "physics")) << bs_last_error();
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "physics")) << bs_web_last_error();
 }
 
 TEST(WebApi, FrameDataErrorsAreThoseOfTheJsonFrame) {
   const std::string scenario = read_example("examples/pool/break_8ball.json");
-  PlaybackPtr pb(bs_playback_new(scenario.c_str()));
-  ASSERT_NE(pb, nullptr) << bs_last_error();
-  const double* d = bs_playback_frame_data(pb.get(), 0.5);
-  ASSERT_NE(d, nullptr) << bs_last_error();
+  PlaybackPtr pb(bs_web_playback_new(scenario.c_str()));
+  ASSERT_NE(pb, nullptr) << bs_web_last_error();
+  const double* d = bs_web_playback_frame_data(pb.get(), 0.5);
+  ASSERT_NE(d, nullptr) << bs_web_last_error();
   const std::vector<double> before(d, d + 8 + 8 * static_cast<std::size_t>(d[7]));
-  // Time going backwards: NULL, bs_last_error as the JSON frame's error,
+  // Time going backwards: NULL, bs_web_last_error as the JSON frame's error,
   // and the playback unchanged.
-  EXPECT_EQ(bs_playback_frame_data(pb.get(), 0.25), nullptr);
-  const std::string err = bs_last_error();
+  EXPECT_EQ(bs_web_playback_frame_data(pb.get(), 0.25), nullptr);
+  const std::string err = bs_web_last_error();
   EXPECT_TRUE(starts_with(error_of(err.c_str()), "t: the frame time goes backwards")) << err;
-  EXPECT_EQ(std::string(bs_playback_frame(pb.get(), 0.25)), err);
-  EXPECT_EQ(bs_playback_frame_data(pb.get(), std::nan("")), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "t:")) << bs_last_error();
-  EXPECT_EQ(bs_playback_frame_data(pb.get(), std::numeric_limits<double>::infinity()), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "t:")) << bs_last_error();
-  d = bs_playback_frame_data(pb.get(), 0.5);
-  ASSERT_NE(d, nullptr) << bs_last_error();
+  EXPECT_EQ(std::string(bs_web_playback_frame(pb.get(), 0.25)), err);
+  EXPECT_EQ(bs_web_playback_frame_data(pb.get(), std::nan("")), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "t:")) << bs_web_last_error();
+  EXPECT_EQ(bs_web_playback_frame_data(pb.get(), std::numeric_limits<double>::infinity()), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "t:")) << bs_web_last_error();
+  d = bs_web_playback_frame_data(pb.get(), 0.5);
+  ASSERT_NE(d, nullptr) << bs_web_last_error();
   for (std::size_t k = 0; k < before.size(); ++k) EXPECT_TRUE(same_bits(d[k], before[k])) << k;
   // A null handle.
-  EXPECT_EQ(bs_playback_frame_data(nullptr, 0.0), nullptr);
-  EXPECT_EQ(error_of(bs_last_error()), "handle: a null handle");
+  EXPECT_EQ(bs_web_playback_frame_data(nullptr, 0.0), nullptr);
+  EXPECT_EQ(error_of(bs_web_last_error()), "handle: a null handle");
   // The buffer belongs to the playback: a later frame overwrites it.
-  const double* later = bs_playback_frame_data(pb.get(), 1.0);
-  ASSERT_NE(later, nullptr) << bs_last_error();
+  const double* later = bs_web_playback_frame_data(pb.get(), 1.0);
+  ASSERT_NE(later, nullptr) << bs_web_last_error();
   EXPECT_EQ(later[0], 1.0);
 }
 
@@ -787,19 +787,19 @@ TEST(WebApi, ShotPlaybackIsTheShotAsTheRulesPlayedIt) {
   int shots = 0;
   for (std::size_t i = 0; i < rec.actions.size(); ++i) {
     const bs::RecordedAction& ra = rec.actions[i];
-    PlaybackPtr pb(bs_game_shot_playback(g.get(), static_cast<int>(i)));
+    PlaybackPtr pb(bs_web_game_shot_playback(g.get(), static_cast<int>(i)));
     if (!std::holds_alternative<bs::Shoot>(ra.action)) {
       EXPECT_EQ(pb, nullptr);
       continue;
     }
     ++shots;
-    ASSERT_NE(pb, nullptr) << bs_last_error();
+    ASSERT_NE(pb, nullptr) << bs_web_last_error();
     const bs::GameState& before = i == 0 ? rec.start : rec.actions[i - 1].after;
     std::vector<int> numbers;
     for (std::size_t b = 0; b < before.on_table.size(); ++b) {
       if (before.on_table[b]) numbers.push_back(static_cast<int>(b));
     }
-    const json f = J(bs_playback_frame(pb.get(), 1000.0));
+    const json f = J(bs_web_playback_frame(pb.get(), 1000.0));
     ASSERT_TRUE(f["at_rest"].get<bool>());
     ASSERT_EQ(f["balls"].size(), numbers.size());
     for (std::size_t k = 0; k < numbers.size(); ++k) {
@@ -850,13 +850,13 @@ TEST(WebApi, RepliesUseTheRecordsEncoding) {
   // are the record's, byte for byte, and the AI's action is that form too.
   GamePtr g = new_game(R"({"game": "nine_ball", "seed": "9", "players": ["human", "club"], "ai_budget": 30})");
   std::vector<std::string> replies;
-  replies.push_back(bs_game_act(g.get(), place_json(0.4, 0.5).c_str()));
-  replies.push_back(bs_game_act(g.get(), shoot_json(R"("speed": 8, "phi": 0.01, "theta": 0, "a": 0, "b": 0)").c_str()));
+  replies.push_back(bs_web_game_act(g.get(), place_json(0.4, 0.5).c_str()));
+  replies.push_back(bs_web_game_act(g.get(), shoot_json(R"("speed": 8, "phi": 0.01, "theta": 0, "a": 0, "b": 0)").c_str()));
   for (int k = 0; k < 2 && json::parse(state_of(g.get()))["phase"] != "game_over"; ++k) {
-    const std::string reply = bs_game_ai_action(g.get(), "beginner");
+    const std::string reply = bs_web_game_ai_action(g.get(), "beginner");
     const json action = json::parse(reply)["action"];
     EXPECT_TRUE(action.contains("type")) << reply;
-    replies.push_back(bs_game_act(g.get(), action.dump().c_str()));
+    replies.push_back(bs_web_game_act(g.get(), action.dump().c_str()));
   }
   const ojson record = ojson::parse(record_of(g.get()));
   ASSERT_EQ(record["actions"].size(), replies.size());
@@ -877,7 +877,7 @@ TEST(WebApi, RepliesUseTheRecordsEncoding) {
     for (const char* extra : {"players", "actions", "legal"}) state.erase(extra);
     EXPECT_EQ(state.dump(), recorded["after"].dump()) << i;
   }
-  ojson start = ojson::parse(bs_game_undo_to(g.get(), 0));
+  ojson start = ojson::parse(bs_web_game_undo_to(g.get(), 0));
   for (const char* extra : {"players", "actions", "legal"}) start.erase(extra);
   EXPECT_EQ(start.dump(), record["start"].dump());
 }
@@ -893,8 +893,8 @@ TEST(WebApi, LinkRoundTripReproducesTheGameExactly) {
   }
   const std::string link = link_of(g.get());
   ASSERT_TRUE(starts_with(link, "v2."));
-  GamePtr h(bs_game_from_link(link.c_str()));
-  ASSERT_NE(h, nullptr) << bs_last_error();
+  GamePtr h(bs_web_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_web_last_error();
   EXPECT_EQ(record_of(h.get()), record_of(g.get()));
   EXPECT_EQ(state_of(h.get()), state_of(g.get()));
   EXPECT_EQ(link_of(h.get()), link);
@@ -905,8 +905,8 @@ TEST(WebApi, LinkRoundTripReproducesTheGameExactly) {
   }
   EXPECT_EQ(record_of(h.get()), record_of(g.get()));
   // A link inside a page address works too.
-  GamePtr u(bs_game_from_link(("http://127.0.0.1:8000/#game=" + link + "&shot=2").c_str()));
-  ASSERT_NE(u, nullptr) << bs_last_error();
+  GamePtr u(bs_web_game_from_link(("http://127.0.0.1:8000/#game=" + link + "&shot=2").c_str()));
+  ASSERT_NE(u, nullptr) << bs_web_last_error();
 }
 
 TEST(WebApi, UndoKeepsTheFirstActions) {
@@ -914,7 +914,7 @@ TEST(WebApi, UndoKeepsTheFirstActions) {
   const std::string link2 = link_of(g.get());
   const std::string state2 = state_of(g.get());
   for (int k = 0; k < 3; ++k) step_ai(g.get(), "beginner");
-  const json st = J(bs_game_undo_to(g.get(), 2));
+  const json st = J(bs_web_game_undo_to(g.get(), 2));
   EXPECT_EQ(st.dump(), json::parse(state2).dump());
   EXPECT_EQ(link_of(g.get()), link2);
   EXPECT_EQ(state_of(g.get()), state2);
@@ -953,19 +953,19 @@ TEST(WebApi, AiGameIsTheGamePlayGamePlays) {
 
 TEST(WebApi, CheckPlacementRefusals) {
   GamePtr g = new_game(R"({"game": "nine_ball", "table": "9ft", "seed": "5", "players": ["human", "human"]})");
-  const json table = J(bs_game_table(g.get()));
+  const json table = J(bs_web_game_table(g.get()));
   const double head = table["head_string"].get<double>();
   const double width = table["width"].get<double>();
-  EXPECT_TRUE(J(bs_game_check_placement(g.get(), head - 0.1, width / 2))["ok"].get<bool>());
+  EXPECT_TRUE(J(bs_web_game_check_placement(g.get(), head - 0.1, width / 2))["ok"].get<bool>());
   // The break: behind the head string, on the cloth.
-  json r = J(bs_game_check_placement(g.get(), head + 0.1, width / 2));
+  json r = J(bs_web_game_check_placement(g.get(), head + 0.1, width / 2));
   EXPECT_FALSE(r["ok"].get<bool>());
   EXPECT_NE(r["reason"].get<std::string>().find("head string"), std::string::npos) << r;
-  r = J(bs_game_check_placement(g.get(), -0.5, width / 2));
+  r = J(bs_web_game_check_placement(g.get(), -0.5, width / 2));
   EXPECT_FALSE(r["ok"].get<bool>());
-  r = J(bs_game_check_placement(g.get(), 0.01, width / 2));  // into the cushion
+  r = J(bs_web_game_check_placement(g.get(), 0.01, width / 2));  // into the cushion
   EXPECT_FALSE(r["ok"].get<bool>());
-  r = J(bs_game_check_placement(g.get(), std::nan(""), 0.5));
+  r = J(bs_web_game_check_placement(g.get(), std::nan(""), 0.5));
   EXPECT_FALSE(r["ok"].get<bool>());
 
   // A feeble break that reaches nothing: a foul, the cue ball in hand
@@ -974,21 +974,21 @@ TEST(WebApi, CheckPlacementRefusals) {
   const json s = json::parse(state_of(g.get()));
   ASSERT_EQ(s["ball_in_hand"], "anywhere") << s;
   const json& one = s["position"][1];
-  r = J(bs_game_check_placement(g.get(), one[0].get<double>(), one[1].get<double>() + 0.01));
+  r = J(bs_web_game_check_placement(g.get(), one[0].get<double>(), one[1].get<double>() + 0.01));
   EXPECT_FALSE(r["ok"].get<bool>());
   EXPECT_NE(r["reason"].get<std::string>().find("overlap"), std::string::npos) << r;
-  EXPECT_TRUE(J(bs_game_check_placement(g.get(), head + 0.3, width / 2))["ok"].get<bool>());
+  EXPECT_TRUE(J(bs_web_game_check_placement(g.get(), head + 0.3, width / 2))["ok"].get<bool>());
 
   // Once the cue ball is on the table it is not in hand any more.
   act(g.get(), place_json(1.0, 0.3));
-  r = J(bs_game_check_placement(g.get(), 1.2, 0.3));
+  r = J(bs_web_game_check_placement(g.get(), 1.2, 0.3));
   EXPECT_FALSE(r["ok"].get<bool>());
   EXPECT_NE(r["reason"].get<std::string>().find("not in hand"), std::string::npos) << r;
 }
 
 TEST(WebApi, TableDescribesTheGamesTable) {
   GamePtr g = new_game(R"({"game": "eight_ball", "table": "7ft", "players": ["human", "human"]})");
-  const json t = J(bs_game_table(g.get()));
+  const json t = J(bs_web_game_table(g.get()));
   const bs::Table table = bs::make_pool_table("7ft");
   EXPECT_EQ(t["size"], "7ft");
   EXPECT_EQ(t["length"].get<double>(), table.length);
@@ -1002,16 +1002,16 @@ TEST(WebApi, TableDescribesTheGamesTable) {
 }
 
 // Whose turn it is after each action, and why: the act reply's "turn"
-// and bs_game_turns's list agree, and follow the state after each action.
+// and bs_web_game_turns's list agree, and follow the state after each action.
 TEST(WebApi, TurnsSayWhoIsNextAndWhy) {
   GamePtr g = new_game(
       R"({"game": "nine_ball", "table": "9ft", "seed": "5", "players": ["human", "human"], "ai_budget": 40})");
-  EXPECT_EQ(J(bs_game_turns(g.get())), json::parse(R"({"turns": []})"));
-  EXPECT_EQ(J(bs_game_table(g.get()))["size"], "9ft");
+  EXPECT_EQ(J(bs_web_game_turns(g.get())), json::parse(R"({"turns": []})"));
+  EXPECT_EQ(J(bs_web_game_table(g.get()))["size"], "9ft");
   std::vector<json> replies;
   std::set<std::string> seen;
   for (int k = 0; k < 60; ++k) {
-    const json s = J(bs_game_state(g.get()));
+    const json s = J(bs_web_game_state(g.get()));
     if (s["phase"] == "game_over") break;
     const json r = step_ai(g.get(), "club");
     ASSERT_TRUE(r.contains("turn")) << r.dump();
@@ -1036,11 +1036,11 @@ TEST(WebApi, TurnsSayWhoIsNextAndWhy) {
     }
     replies.push_back(t);
   }
-  const json turns = J(bs_game_turns(g.get()))["turns"];
+  const json turns = J(bs_web_game_turns(g.get()))["turns"];
   ASSERT_EQ(turns.size(), replies.size());
   for (std::size_t i = 0; i < replies.size(); ++i) EXPECT_EQ(turns[i], replies[i]) << i;
   EXPECT_TRUE(seen.count("continues") && seen.count("passes")) << json(seen).dump();
-  EXPECT_EQ(error_of(bs_game_turns(nullptr)), "handle: a null handle");
+  EXPECT_EQ(error_of(bs_web_game_turns(nullptr)), "handle: a null handle");
 }
 
 // A three-cushion shot's playback counts the struck ball's cushions and
@@ -1048,18 +1048,18 @@ TEST(WebApi, TurnsSayWhoIsNextAndWhy) {
 TEST(WebApi, ThreeCushionPlaybackCountsAsTheBallGoes) {
   GamePtr g =
       new_game(R"({"game": "three_cushion", "seed": "2026", "players": ["human", "baseline"]})");
-  EXPECT_EQ(J(bs_game_table(g.get()))["size"], "10ft");
+  EXPECT_EQ(J(bs_web_game_table(g.get()))["size"], "10ft");
   const json r = ai_act(g.get(), "baseline");
   const json k = r["ruling"]["carom"];
-  PlaybackPtr pb(bs_game_shot_playback(g.get(), 0));
-  ASSERT_NE(pb, nullptr) << bs_last_error();
-  json c = J(bs_playback_carom_count(pb.get()));
+  PlaybackPtr pb(bs_web_game_shot_playback(g.get(), 0));
+  ASSERT_NE(pb, nullptr) << bs_web_last_error();
+  json c = J(bs_web_playback_carom_count(pb.get()));
   EXPECT_EQ(c, json::parse(R"({"cushions": 0, "hit": [], "done": false, "made": false})"));
   int cushions = 0;
   std::size_t hits = 0;
   for (int f = 0; f < 400; ++f) {
-    const json fr = J(bs_playback_frame(pb.get(), 0.05 * f));
-    c = J(bs_playback_carom_count(pb.get()));
+    const json fr = J(bs_web_playback_frame(pb.get(), 0.05 * f));
+    c = J(bs_web_playback_carom_count(pb.get()));
     EXPECT_GE(c["cushions"].get<int>(), cushions);
     EXPECT_GE(c["hit"].size(), hits);
     cushions = c["cushions"].get<int>();
@@ -1073,18 +1073,18 @@ TEST(WebApi, ThreeCushionPlaybackCountsAsTheBallGoes) {
   // Another playback has no count.
   GamePtr pool = new_game(R"({"game": "nine_ball", "seed": "1", "players": ["human", "human"]})");
   act(pool.get(), shoot_json(R"("speed": 8.0, "phi": 0, "theta": 0, "a": 0, "b": 0)"));
-  PlaybackPtr other(bs_game_shot_playback(pool.get(), 0));
+  PlaybackPtr other(bs_web_game_shot_playback(pool.get(), 0));
   ASSERT_NE(other, nullptr);
-  EXPECT_EQ(error_of(bs_playback_carom_count(other.get())),
+  EXPECT_EQ(error_of(bs_web_playback_carom_count(other.get())),
             "playback: not the playback of a three-cushion shot");
-  EXPECT_EQ(error_of(bs_playback_carom_count(nullptr)), "handle: a null handle");
+  EXPECT_EQ(error_of(bs_web_playback_carom_count(nullptr)), "handle: a null handle");
 }
 
 TEST(WebApi, SnookerGameShowsTheScoreTheBallOnAndTheTable) {
   GamePtr g = new_game(R"({"game": "snooker", "seed": "2026", "players": ["human", "baseline"]})");
   // The table: the 12 ft table's markings (WPBSA: baulk line 737 mm from
   // the bottom cushion, the D of radius 292 mm), as snooker.hpp has them.
-  const json t = J(bs_game_table(g.get()));
+  const json t = J(bs_web_game_table(g.get()));
   const bs::SnookerMarks m = bs::snooker_marks();
   EXPECT_EQ(t["length"].get<double>(), 3.569);
   EXPECT_EQ(t["ball_radius"].get<double>(), bs::kSnookerBallRadius);
@@ -1094,13 +1094,13 @@ TEST(WebApi, SnookerGameShowsTheScoreTheBallOnAndTheTable) {
   EXPECT_EQ(t["snooker"]["spots"].size(), 6u);
   // The pool games' tables have no snooker markings.
   GamePtr pool = new_game(R"({"game": "nine_ball", "players": ["human", "human"]})");
-  EXPECT_FALSE(J(bs_game_table(pool.get())).contains("snooker"));
-  EXPECT_FALSE(J(bs_game_state(pool.get())).contains("snooker_figures"));
-  EXPECT_FALSE(J(bs_game_state(pool.get()))["legal"].contains("nominate"));
+  EXPECT_FALSE(J(bs_web_game_table(pool.get())).contains("snooker"));
+  EXPECT_FALSE(J(bs_web_game_state(pool.get())).contains("snooker_figures"));
+  EXPECT_FALSE(J(bs_web_game_state(pool.get()))["legal"].contains("nominate"));
 
   // At the start: on a red, 15 reds each with a black and the six colours
   // left (15 x 8 + 27 = 147, the maximum break), no snookers needed.
-  json s = J(bs_game_state(g.get()));
+  json s = J(bs_web_game_state(g.get()));
   EXPECT_EQ(s["phase"], "break_shot");
   EXPECT_EQ(s["ball_in_hand"], "d");
   EXPECT_EQ(s["snooker"]["score"], json::array({0, 0}));
@@ -1112,25 +1112,25 @@ TEST(WebApi, SnookerGameShowsTheScoreTheBallOnAndTheTable) {
   EXPECT_EQ(s["legal"]["choices"], json::array({"concede"}));
   // The D: in it, on the baulk line; not beyond it.
   EXPECT_TRUE(
-      J(bs_game_check_placement(g.get(), m.baulk_x, m.d_centre.y - 0.18))["ok"].get<bool>());
+      J(bs_web_game_check_placement(g.get(), m.baulk_x, m.d_centre.y - 0.18))["ok"].get<bool>());
   EXPECT_FALSE(
-      J(bs_game_check_placement(g.get(), m.baulk_x + 0.05, m.d_centre.y))["ok"].get<bool>());
+      J(bs_web_game_check_placement(g.get(), m.baulk_x + 0.05, m.d_centre.y))["ok"].get<bool>());
   EXPECT_FALSE(
-      J(bs_game_check_placement(g.get(), m.baulk_x - 0.1, m.d_centre.y + 0.3))["ok"].get<bool>());
+      J(bs_web_game_check_placement(g.get(), m.baulk_x - 0.1, m.d_centre.y + 0.3))["ok"].get<bool>());
 
   // A hint from an AI level and from the baseline is given; an unknown
   // level is refused by name.
-  EXPECT_EQ(error_of(bs_game_ai_action(g.get(), "beginner")), "");
-  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "shark")), "level:"));
+  EXPECT_EQ(error_of(bs_web_game_ai_action(g.get(), "beginner")), "");
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_ai_action(g.get(), "shark")), "level:"));
   // seat 0 is human: a hint needs a level
-  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), nullptr)), "level:"));
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_ai_action(g.get(), nullptr)), "level:"));
 
   // Play until a shot nominates a colour: after a red the state says a
   // colour must be nominated, and the nominating shot's link keeps it.
   act(g.get(), place_json(m.baulk_x, m.d_centre.y - 0.18));
   bool nominated = false;
   for (int k = 0; k < 60 && !nominated; ++k) {
-    const json st = J(bs_game_state(g.get()));
+    const json st = J(bs_web_game_state(g.get()));
     if (st["phase"] == "game_over") break;
     if (st["legal"]["must_nominate"] == true) {
       EXPECT_EQ(st["snooker"]["colour_on"], true);
@@ -1144,8 +1144,8 @@ TEST(WebApi, SnookerGameShowsTheScoreTheBallOnAndTheTable) {
   }
   ASSERT_TRUE(nominated);
   const std::string link = link_of(g.get());
-  GamePtr h(bs_game_from_link(link.c_str()));
-  ASSERT_NE(h, nullptr) << bs_last_error();
+  GamePtr h(bs_web_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_web_last_error();
   EXPECT_EQ(record_of(h.get()), record_of(g.get()));
   EXPECT_EQ(state_of(h.get()), state_of(g.get()));
   // Its record replays.
@@ -1157,7 +1157,7 @@ TEST(WebApi, SnookerGameShowsTheScoreTheBallOnAndTheTable) {
 TEST(WebApi, ThreeCushionGameShowsTheScoreTheInningsAndTheTable) {
   // Who plays three-cushion: the baseline, and the AI levels that do
   // (players.hpp decides); the other games' players are unchanged.
-  const json players = J(bs_game_players("three_cushion"));
+  const json players = J(bs_web_game_players("three_cushion"));
   EXPECT_EQ(players["game"], "three_cushion");
   ASSERT_FALSE(players["players"].empty());
   EXPECT_EQ(players["players"].back(), "baseline");
@@ -1165,10 +1165,10 @@ TEST(WebApi, ThreeCushionGameShowsTheScoreTheInningsAndTheTable) {
     EXPECT_FALSE(bs::check_player(p.get<std::string>(), bs::GameType::three_cushion).has_value())
         << p;
   }
-  EXPECT_EQ(J(bs_game_players("snooker"))["players"], J(bs_version())["snooker_players"]);
-  EXPECT_EQ(J(bs_game_players("eight_ball"))["players"], J(bs_version())["levels"]);
-  EXPECT_TRUE(starts_with(error_of(bs_game_players("bowls")), "game: unknown game \"bowls\""));
-  EXPECT_TRUE(starts_with(error_of(bs_game_players(nullptr)), "game: "));
+  EXPECT_EQ(J(bs_web_game_players("snooker"))["players"], J(bs_web_version())["snooker_players"]);
+  EXPECT_EQ(J(bs_web_game_players("eight_ball"))["players"], J(bs_web_version())["levels"]);
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_players("bowls")), "game: unknown game \"bowls\""));
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_players(nullptr)), "game: "));
 
   // Bad configs name the field.
   const std::pair<const char*, const char*> configs[] = {
@@ -1186,16 +1186,16 @@ TEST(WebApi, ThreeCushionGameShowsTheScoreTheInningsAndTheTable) {
        "carom: unknown field (known: game, table, seed, breaker, players, ai_budget, physics)"},
   };
   for (const auto& [config, prefix] : configs) {
-    EXPECT_EQ(bs_game_new(config), nullptr) << config;
-    EXPECT_TRUE(starts_with(error_of(bs_last_error()), prefix))
-        << config << " -> " << bs_last_error();
+    EXPECT_EQ(bs_web_game_new(config), nullptr) << config;
+    EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), prefix))
+        << config << " -> " << bs_web_last_error();
   }
 
   GamePtr g = new_game(
       R"({"game": "three_cushion", "seed": "40", "players": ["human", "baseline"],
           "carom": {"target": 3, "innings_limit": 4}})");
   // The carom table: no pockets, its spots and diamonds (carom.hpp).
-  const json t = J(bs_game_table(g.get()));
+  const json t = J(bs_web_game_table(g.get()));
   const bs::CaromMarks m = bs::carom_marks();
   EXPECT_EQ(t["pockets"].size(), 0u);
   EXPECT_EQ(t["ball_radius"].get<double>(), bs::kCaromBallRadius);
@@ -1205,18 +1205,18 @@ TEST(WebApi, ThreeCushionGameShowsTheScoreTheInningsAndTheTable) {
   EXPECT_FALSE(t.contains("snooker"));
   // The other games have neither.
   GamePtr pool = new_game(R"({"game": "nine_ball", "players": ["human", "human"]})");
-  EXPECT_FALSE(J(bs_game_table(pool.get())).contains("carom"));
-  EXPECT_FALSE(J(bs_game_state(pool.get())).contains("carom_figures"));
+  EXPECT_FALSE(J(bs_web_game_table(pool.get())).contains("carom"));
+  EXPECT_FALSE(J(bs_web_game_state(pool.get())).contains("carom_figures"));
 
   // The start: the breaker plays the white, the score and the figures at 0.
-  json s = J(bs_game_state(g.get()));
+  json s = J(bs_web_game_state(g.get()));
   EXPECT_EQ(s["game"], "three_cushion");
   EXPECT_EQ(s["carom"]["score"], json::array({0, 0}));
   EXPECT_EQ(s["carom_figures"]["cue_ball"], 0);
   EXPECT_EQ(s["carom_figures"]["general_average"], json::array({0.0, 0.0}));
   EXPECT_EQ(s["carom_figures"]["highest_run"], json::array({0, 0}));
   EXPECT_EQ(s["legal"]["place"], "none");
-  const json rec = J(bs_game_record(g.get()));
+  const json rec = J(bs_web_game_record(g.get()));
   EXPECT_EQ(rec["config"]["carom"]["target"], 3);
   EXPECT_EQ(rec["config"]["carom"]["innings_limit"], 4);
 
@@ -1226,24 +1226,24 @@ TEST(WebApi, ThreeCushionGameShowsTheScoreTheInningsAndTheTable) {
       act(g.get(), shoot_json(R"("speed": 3.0, "phi": 0.0, "theta": 0, "a": 0, "b": 0)"));
   ASSERT_TRUE(r["ruling"].contains("carom")) << r.dump();
   EXPECT_EQ(r["ruling"]["carom"]["cue_ball"], 0);
-  PlaybackPtr pb(bs_game_shot_playback(g.get(), 0));
-  ASSERT_NE(pb, nullptr) << bs_last_error();
-  EXPECT_TRUE(starts_with(bs_playback_events(pb.get(), 0), R"({"from":0,"events":[)"));
+  PlaybackPtr pb(bs_web_game_shot_playback(g.get(), 0));
+  ASSERT_NE(pb, nullptr) << bs_web_last_error();
+  EXPECT_TRUE(starts_with(bs_web_playback_events(pb.get(), 0), R"({"from":0,"events":[)"));
   // A hint from the baseline; a level that does not play the game is
   // refused by name.
   for (int k = 0; k < 200; ++k) {
-    s = J(bs_game_state(g.get()));
+    s = J(bs_web_game_state(g.get()));
     if (s["phase"] == "game_over") break;
     const bool human = s["players"][s["player"].get<std::size_t>()] == "human";
     EXPECT_EQ(s["carom_figures"]["cue_ball"], s["player"] == s["breaker"] ? 0 : 1);
     if (human && !bs::check_player("club", bs::GameType::three_cushion)) {
-      EXPECT_EQ(error_of(bs_game_ai_action(g.get(), "club")), "");
+      EXPECT_EQ(error_of(bs_web_game_ai_action(g.get(), "club")), "");
     } else if (human) {
-      EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "club")), "level: ")) << k;
+      EXPECT_TRUE(starts_with(error_of(bs_web_game_ai_action(g.get(), "club")), "level: ")) << k;
     }
     step_ai(g.get(), "baseline");
   }
-  s = J(bs_game_state(g.get()));
+  s = J(bs_web_game_state(g.get()));
   ASSERT_EQ(s["phase"], "game_over");
   // The figures: points over innings begun; the highest run as the match
   // summary counts it.
@@ -1257,8 +1257,8 @@ TEST(WebApi, ThreeCushionGameShowsTheScoreTheInningsAndTheTable) {
 
   // The link holds the rules and reproduces the game; the record replays.
   const std::string link = link_of(g.get());
-  GamePtr h(bs_game_from_link(link.c_str()));
-  ASSERT_NE(h, nullptr) << bs_last_error();
+  GamePtr h(bs_web_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_web_last_error();
   EXPECT_EQ(record_of(h.get()), record_of(g.get()));
   EXPECT_EQ(state_of(h.get()), state_of(g.get()));
   const auto back = bs::read_record(record_of(g.get()));
@@ -1275,8 +1275,8 @@ TEST(WebApi, ThreeCushionLinkKeepsTheBallStruck) {
       R"({"type": "shoot", "strike": {"speed": 2.0, "phi": 90.0, "theta": 0, "a": 0, "b": 0}, "call": null, "safety": false, "push_out": false, "cue_ball": 1})");
   EXPECT_EQ(r["ruling"]["carom"]["cue_ball"], 1);
   const std::string link = link_of(g.get());
-  GamePtr h(bs_game_from_link(link.c_str()));
-  ASSERT_NE(h, nullptr) << bs_last_error();
+  GamePtr h(bs_web_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_web_last_error();
   EXPECT_EQ(record_of(h.get()), record_of(g.get()));
 }
 
@@ -1383,11 +1383,11 @@ TEST(WebApi, SeatsAtANamedNoise) {
   EXPECT_TRUE(bs::replay(rec).identical);
   // A hint at a named noise, for the seat to act.
   if (json::parse(state_of(g.get()))["phase"] != "game_over") {
-    const json hint = J(bs_game_ai_action(g.get(), "beginner@0.5x"));
+    const json hint = J(bs_web_game_ai_action(g.get(), "beginner@0.5x"));
     EXPECT_TRUE(hint.contains("action")) << hint.dump();
   }
-  EXPECT_TRUE(starts_with(error_of(bs_game_ai_action(g.get(), "beginner@")), "level: player"))
-      << bs_last_error();
+  EXPECT_TRUE(starts_with(error_of(bs_web_game_ai_action(g.get(), "beginner@")), "level: player"))
+      << bs_web_last_error();
 
   const std::pair<const char*, const char*> bad[] = {
       {R"(["club@fast", "human"])", "players[0]: player \"club@fast\": noise: unknown spec"},
@@ -1396,9 +1396,9 @@ TEST(WebApi, SeatsAtANamedNoise) {
   };
   for (const auto& [players, message] : bad) {
     const std::string config = std::string(R"({"game": "nine_ball", "players": )") + players + "}";
-    EXPECT_EQ(bs_game_new(config.c_str()), nullptr) << players;
-    EXPECT_TRUE(starts_with(error_of(bs_last_error()), message))
-        << players << ": " << bs_last_error();
+    EXPECT_EQ(bs_web_game_new(config.c_str()), nullptr) << players;
+    EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), message))
+        << players << ": " << bs_web_last_error();
   }
 }
 
@@ -1410,8 +1410,8 @@ TEST(WebApi, SeatsAtANamedNoise) {
 namespace {
 
 /// The action of a hint of `level` for the seat to act (its exact JSON).
-json hint_of(BsGame* g, const char* level) {
-  const json reply = J(bs_game_ai_action(g, level));
+json hint_of(BsWebGame* g, const char* level) {
+  const json reply = J(bs_web_game_ai_action(g, level));
   EXPECT_TRUE(reply.contains("action")) << reply.dump();
   return reply.contains("action") ? reply["action"] : json();
 }
@@ -1429,26 +1429,26 @@ std::string ten_shot(double speed, double phi, const std::string& call, bool saf
 
 TEST(WebApi, TenBallIsAGameOfThePage) {
   // Its computer players are the AI levels (no baseline), at a named noise too.
-  const json players = J(bs_game_players("ten_ball"));
+  const json players = J(bs_web_game_players("ten_ball"));
   EXPECT_EQ(players["game"], "ten_ball");
   EXPECT_EQ(players["players"], json(bs::ai_level_names()));
-  EXPECT_EQ(bs_game_new(R"({"game": "ten_ball", "players": ["human", "baseline"]})"), nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()), "players[1]: \"human\" or unknown"))
-      << bs_last_error();
-  EXPECT_EQ(bs_game_new(R"({"game": "ten_ball", "table": "12ft", "players": ["human", "human"]})"),
+  EXPECT_EQ(bs_web_game_new(R"({"game": "ten_ball", "players": ["human", "baseline"]})"), nullptr);
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()), "players[1]: \"human\" or unknown"))
+      << bs_web_last_error();
+  EXPECT_EQ(bs_web_game_new(R"({"game": "ten_ball", "table": "12ft", "players": ["human", "human"]})"),
             nullptr);
-  EXPECT_TRUE(starts_with(error_of(bs_last_error()),
+  EXPECT_TRUE(starts_with(error_of(bs_web_last_error()),
                           "table: unknown table size \"12ft\" (expected \"7ft\", \"8ft\" or \"9ft\")"))
-      << bs_last_error();
+      << bs_web_last_error();
 
   // The start: ten object balls racked, the 1 on, the break not called.
   GamePtr g = new_game(
       R"({"game": "ten_ball", "table": "8ft", "seed": "10", "players": ["human", "club"]})");
-  const json t = J(bs_game_table(g.get()));
+  const json t = J(bs_web_game_table(g.get()));
   EXPECT_EQ(t["pockets"].size(), 6u);
   EXPECT_FALSE(t.contains("snooker"));
   EXPECT_FALSE(t.contains("carom"));
-  const json s = J(bs_game_state(g.get()));
+  const json s = J(bs_web_game_state(g.get()));
   EXPECT_EQ(s["game"], "ten_ball");
   EXPECT_EQ(s["phase"], "break_shot");
   EXPECT_EQ(s["position"].size(), 11u);
@@ -1504,7 +1504,7 @@ TEST(WebApi, TenBallRefusesAShotWithoutACallWithTheRulesReason) {
   // The break is not called.
   std::string before = state_of(g.get());
   const std::string called_break = ten_shot(9.0, 0.0, R"({"ball": 1, "pocket": 3})", false, false);
-  EXPECT_EQ(error_of(bs_game_act(g.get(), called_break.c_str())),
+  EXPECT_EQ(error_of(bs_web_game_act(g.get(), called_break.c_str())),
             "the break is neither called, a safety nor a push-out");
   EXPECT_EQ(state_of(g.get()), before);
   // A legal break (the expert's placement and break, played as chosen:
@@ -1537,7 +1537,7 @@ TEST(WebApi, TenBallRefusesAShotWithoutACallWithTheRulesReason) {
        "10-ball has no nominated ball (nominate is snooker's)"},
   };
   for (const auto& [action, reason] : refused) {
-    EXPECT_EQ(error_of(bs_game_act(g.get(), action.c_str())), reason) << action;
+    EXPECT_EQ(error_of(bs_web_game_act(g.get(), action.c_str())), reason) << action;
     EXPECT_EQ(state_of(g.get()), before) << action;
   }
   // A ball pocketed on the break cannot be called either.
@@ -1545,7 +1545,7 @@ TEST(WebApi, TenBallRefusesAShotWithoutACallWithTheRulesReason) {
     const int n = down.get<int>();
     if (n == 10) continue;  // spotted
     const std::string call = R"({"ball": )" + std::to_string(n) + R"(, "pocket": 0})";
-    EXPECT_EQ(error_of(bs_game_act(g.get(), ten_shot(2.0, 0.0, call, false, false).c_str())),
+    EXPECT_EQ(error_of(bs_web_game_act(g.get(), ten_shot(2.0, 0.0, call, false, false).c_str())),
               "called ball " + std::to_string(n) + " is not on the table");
   }
   EXPECT_EQ(state_of(g.get()), before);
@@ -1564,8 +1564,8 @@ TEST(WebApi, TenBallRefusesAShotWithoutACallWithTheRulesReason) {
   EXPECT_EQ(s["legal"]["shoot"], false);
   // A shot before the choice is refused, and so is a choice not on offer.
   const std::string called = ten_shot(2.0, 0.0, R"({"ball": 2, "pocket": 0})", false, false);
-  EXPECT_NE(error_of(bs_game_act(g.get(), called.c_str())), "");
-  EXPECT_NE(error_of(bs_game_act(g.get(), R"({"type": "decide", "choice": "play_on"})")), "");
+  EXPECT_NE(error_of(bs_web_game_act(g.get(), called.c_str())), "");
+  EXPECT_NE(error_of(bs_web_game_act(g.get(), R"({"type": "decide", "choice": "play_on"})")), "");
   const json took = act(g.get(), R"({"type": "decide", "choice": "shoot"})");
   EXPECT_EQ(took["ruling"]["text"], "Player " + std::to_string(2 - pusher) + " takes the table.");
   s = json::parse(state_of(g.get()));
@@ -1626,7 +1626,7 @@ TEST(WebApi, TenBallWrongPotLetsTheIncomingPlayerChooseAndItsLinkReplays) {
   EXPECT_EQ(back["state"]["phase"], "shot");
   EXPECT_EQ(back["state"]["legal"]["call"], true);
   // Taken: the incoming player shoots from there.
-  J(bs_game_undo_to(g.get(), chosen_at));
+  J(bs_web_game_undo_to(g.get(), chosen_at));
   const json took = act(g.get(), R"({"type": "decide", "choice": "shoot"})");
   EXPECT_EQ(took["ruling"]["text"], incoming + " takes the table.");
   EXPECT_EQ(took["state"]["player"], 1 - shooter);
@@ -1648,8 +1648,8 @@ TEST(WebApi, TenBallWrongPotLetsTheIncomingPlayerChooseAndItsLinkReplays) {
   EXPECT_EQ(entry[7], wrong["executed"]["call"]["pocket"]);
   EXPECT_EQ(entry[8], 0);
   EXPECT_EQ(actions.back(), json::array({"d", "shoot"}));
-  GamePtr h(bs_game_from_link(link.c_str()));
-  ASSERT_NE(h, nullptr) << bs_last_error();
+  GamePtr h(bs_web_game_from_link(link.c_str()));
+  ASSERT_NE(h, nullptr) << bs_web_last_error();
   EXPECT_EQ(record_of(h.get()), record_of(g.get()));
   EXPECT_EQ(state_of(h.get()), state_of(g.get()));
   EXPECT_EQ(link_of(h.get()), link);

@@ -14,7 +14,7 @@
 // FinalizationRegistry frees what the garbage collector finds unfreed,
 // as a safety net only (when it runs is up to the collector).
 
-import { FRAME_LAYOUT, loadEngine, parse, toJson } from './engine.js';
+import { FRAME_LAYOUT, MOTIONS, loadEngine, parse, toJson } from './engine.js';
 import { Player } from './player.js';
 
 const E = await loadEngine();
@@ -25,6 +25,10 @@ export { Player };
 export const version = E.version();
 /** The AI levels, weakest first. */
 export const levels = Object.freeze(E.levels.slice());
+/** The names of the motion states, by the codes of States.motion:
+ *  stationary, moving, sliding, rolling, spinning, pocketed, airborne,
+ *  off_table (the result file's "state" names). */
+export const motions = MOTIONS;
 /** The games a Game plays. */
 export const games = Object.freeze(['eight_ball', 'nine_ball', 'ten_ball', 'snooker', 'three_cushion']);
 /** The computer players a seat of `game` may be (AI levels, and "baseline" where it plays). */
@@ -49,7 +53,7 @@ function finiteTime(t) {
   return t;
 }
 
-// The layout of bs_playback_frame_data's doubles (web_api.hpp), as
+// The layout of bs_web_playback_frame_data's doubles (web_api.hpp), as
 // engine.js reads it.
 const { header: HEADER, stride: STRIDE, flightStride: FLIGHT_STRIDE } = FRAME_LAYOUT;
 
@@ -58,7 +62,7 @@ function newStates(n) {
     t: 0, events: 0, atRest: false, complete: true, energy: 0, momentum: [0, 0], count: n,
     position: new Float64Array(2 * n), velocity: new Float64Array(2 * n),
     spin: new Float64Array(3 * n), height: new Float64Array(n),
-    onTable: new Uint8Array(n), place: new Uint8Array(n),
+    onTable: new Uint8Array(n), place: new Uint8Array(n), motion: new Uint8Array(n),
     ballEnergy: new Float64Array(n), ballMomentum: new Float64Array(2 * n),
   };
 }
@@ -100,8 +104,10 @@ export class Playback {
    * The balls' states at time t (s) as typed arrays, in the scenario's
    * order: position and velocity [x0, y0, x1, y1, ...], spin [wx, wy, wz]
    * per ball, height (m above resting), onTable (1|0), place (0 on the
-   * cloth or in a pocket, 1 in flight, 2 off the table), each ball's
-   * energy and momentum. `into` (a States of the same number of balls)
+   * cloth or in a pocket, 1 in flight, 2 off the table), motion (each
+   * ball's motion state: an index of `motions`, 0 stationary, 1 moving,
+   * 2 sliding, 3 rolling, 4 spinning, 5 pocketed, 6 airborne, 7 off the
+   * table), each ball's energy and momentum. `into` (a States of the same number of balls)
    * is filled instead of a new one: a 60 fps loop reuses its arrays.
    */
   states(t, into) {
@@ -129,6 +135,7 @@ export class Playback {
       s.place[i] = d[flight + FLIGHT_STRIDE * i + 1];
     }
     s.spin.set(this._pb.spins(n));
+    s.motion.set(this._pb.motions(n));
     return s;
   }
 

@@ -67,12 +67,28 @@ export function register(test, ctx) {
         `ball ${b.id}: states ${s.position[2 * i]}, ${s.position[2 * i + 1]} but the result ${b.position}`);
       check(s.onTable[i] === (['pocketed', 'off_table'].includes(b.state) ? 0 : 1), `ball ${b.id} on the table: ${s.onTable[i]} / ${b.state}`);
       check(same(Array.from(s.spin.subarray(3 * i, 3 * i + 3)), b.spin), `ball ${b.id}: spin ${Array.from(s.spin.subarray(3 * i, 3 * i + 3))} / ${b.spin}`);
+      check(ctx.api.motions[s.motion[i]] === b.state, `ball ${b.id}: motion ${s.motion[i]} (${ctx.api.motions[s.motion[i]]}) / ${b.state}`);
     });
     check(s.atRest && s.events === sim.events.length, `at rest ${s.atRest}, events ${s.events} of ${sim.events.length}`);
     const f = sim.frame(sim.duration);
     check(f.balls.length === 16 && f.balls.every((b, i) => b[0] === s.position[2 * i] && b[1] === s.position[2 * i + 1]), 'frame and states');
     check(sim.playedEvents().length === sim.events.length, 'played events');
     check(s.position instanceof Float64Array && s.velocity.length === 32 && s.spin.length === 48 && s.onTable instanceof Uint8Array, 'typed arrays');
+    sim.free();
+  });
+
+  test('states carry each ball\'s motion state: the cue ball slides, then rolls; the rack stands', () => {
+    const sim = ctx.api.simulate(BREAK);
+    const names = (t) => Array.from(sim.states(t).motion, (m) => ctx.api.motions[m]);
+    const start = names(0);
+    check(start[0] === 'sliding' && start.slice(1).every((m) => m === 'stationary'), `at 0: ${start}`);
+    check(sim.states(0).motion instanceof Uint8Array, 'a Uint8Array');
+    const seen = new Set();
+    for (let k = 0; k * 0.01 <= sim.duration; k++) for (const m of names(k * 0.01)) seen.add(m);
+    check(['sliding', 'rolling', 'stationary'].every((m) => seen.has(m)), `states seen: ${[...seen]}`);
+    const end = names(sim.duration);
+    check(end.every((m) => m === 'stationary' || m === 'pocketed'), `at the end: ${end}`);
+    check(Object.isFrozen(ctx.api.motions) && ctx.api.motions.length === 8, 'motions');
     sim.free();
   });
 

@@ -604,7 +604,7 @@ class Game:
 
     @property
     def table(self) -> dict:
-        """The table, as the web facade's ``bs_game_table`` gives it (one
+        """The table, as the web facade's ``bs_web_game_table`` gives it (one
         encoding, src/io/table_json.hpp; points as (x, y) tuples): size,
         length and width (m), ball_radius, ball_count, head_string (x of the
         kitchen's edge), head_spot, foot_spot, outline (the corners), walls

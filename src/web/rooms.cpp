@@ -1,7 +1,7 @@
 // The rooms of online play (src/web/rooms.hpp); the message
 // format is in docs/web.md, "Online play".
 //
-// A room holds one game (a BsGame of the browser facade, both seats
+// A room holds one game (a BsWebGame of the browser facade, both seats
 // "human", so no noise: the action played is the action sent), its two
 // seats (each with the token that takes it back) and its watchers. Every
 // client is in at most one room. Messages that are not what the format
@@ -59,7 +59,7 @@ struct Malformed {
 };
 
 struct GameDeleter {
-  void operator()(BsGame* g) const { bs_game_free(g); }
+  void operator()(BsWebGame* g) const { bs_web_game_free(g); }
 };
 
 struct Seat {
@@ -73,7 +73,7 @@ struct Room {
   std::string code;
   std::uint64_t serial = 0;
   json config;  // the config the game was made with (seed and players included)
-  std::unique_ptr<BsGame, GameDeleter> game;
+  std::unique_ptr<BsWebGame, GameDeleter> game;
   json actions = json::array();  // as played (the records' form)
   std::string hash;              // of the state now
   std::array<Seat, 2> seats;
@@ -161,7 +161,7 @@ struct Rooms::Impl {
     char serial_text[32];
     std::snprintf(serial_text, sizeof serial_text, "%06llu",
                   static_cast<unsigned long long>(r.serial));
-    std::string text = bs_game_record(r.game.get());
+    std::string text = bs_web_game_record(r.game.get());
     if (ending) {
       auto parsed = read_record(text);
       if (const auto* err = std::get_if<RecordError>(&parsed)) {
@@ -251,14 +251,14 @@ struct Rooms::Impl {
     }
     config["players"] = {"human", "human"};
     config["seed"] = std::to_string(random() >> 11);  // up to 2^53, as links keep it
-    std::unique_ptr<BsGame, GameDeleter> g(bs_game_new(config.dump().c_str()));
-    if (!g) throw Refused{"game: " + error_text(bs_last_error())};
+    std::unique_ptr<BsWebGame, GameDeleter> g(bs_web_game_new(config.dump().c_str()));
+    if (!g) throw Refused{"game: " + error_text(bs_web_last_error())};
     Room r;
     r.code = new_code();
     r.serial = ++serial;
     r.config = std::move(config);
     r.game = std::move(g);
-    r.hash = state_hash(bs_game_state(r.game.get()));
+    r.hash = state_hash(bs_web_game_state(r.game.get()));
     r.seats[0].token = new_token();
     r.seats[1].token = new_token();
     const std::string code = r.code;
@@ -372,14 +372,14 @@ struct Rooms::Impl {
       throw Refused{"index " + index.dump() + " is not the next action's (" + std::to_string(n) +
                     ")"};
     }
-    const json state = json::parse(bs_game_state(r.game.get()));
+    const json state = json::parse(bs_web_game_state(r.game.get()));
     if (state.at("player").get<int>() != seat) throw Refused{"not your turn"};
     const json reply =
-        json::parse(bs_game_act(r.game.get(), action.dump().c_str()), nullptr, false);
+        json::parse(bs_web_game_act(r.game.get(), action.dump().c_str()), nullptr, false);
     if (!reply.is_object()) throw Refused{"the action could not be played"};
     if (reply.contains("error")) throw Refused{"action: " + reply["error"].get<std::string>()};
     r.actions.push_back(reply.at("executed"));
-    const std::string state_text = bs_game_state(r.game.get());
+    const std::string state_text = bs_web_game_state(r.game.get());
     r.hash = state_hash(state_text);
     broadcast(fx, r,
               {{"type", "action"},

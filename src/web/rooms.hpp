@@ -61,7 +61,7 @@ struct Effects {
 };
 
 /// FNV-1a, 64 bits, of `text`, as 16 lower-case hex digits: the hash of a
-/// table state is state_hash of bs_game_state's reply.
+/// table state is state_hash of bs_web_game_state's reply.
 std::string state_hash(std::string_view text);
 
 class Rooms {

@@ -1,6 +1,7 @@
 /* `breakshot simulate FILE` through the C API: the result file on
  * standard output, so that a test compares the bytes with the command's
- * (tests/c/compare_simulate.cmake). */
+ * (tests/c/compare_simulate.cmake); bs_simulate_result_json's bytes must
+ * be the same (exit 3 if not). */
 #include "check.h"
 
 int main(int argc, char** argv) {
@@ -9,6 +10,7 @@ int main(int argc, char** argv) {
   BsScenario* s = NULL;
   BsSimulation* sim = NULL;
   char* result = NULL;
+  char* direct = NULL;
   BsStatus st;
   if (argc != 2) {
     fprintf(stderr, "usage: capi_simulate SCENARIO.json\n");
@@ -30,6 +32,16 @@ int main(int argc, char** argv) {
     bs_simulation_free(sim);
     return 2;
   }
+  st = bs_simulate_result_json(s, &direct);
+  if (st != BS_OK || strcmp(direct, result) != 0) {
+    fprintf(stderr, "capi_simulate: bs_simulate_result_json differs (%s)\n", bs_status_name(st));
+    bs_string_free(direct);
+    bs_string_free(result);
+    bs_simulation_free(sim);
+    bs_scenario_free(s);
+    return 3;
+  }
+  bs_string_free(direct);
   fputs(result, stdout);
   bs_string_free(result);
   bs_simulation_free(sim);

@@ -166,7 +166,7 @@ function route() {
 }
 
 /** The computer players of `game` as the engine gives them
- *  (bs_game_players), else `fallback`. */
+ *  (bs_web_game_players), else `fallback`. */
 function computerPlayers(game, fallback) {
   try {
     const list = engine && engine.gamePlayers ? engine.gamePlayers(game) : null;
@@ -177,8 +177,8 @@ function computerPlayers(game, fallback) {
 
 /** The opponents and tables the form offers for the chosen game: the AI
  *  levels and the pool tables; in snooker the engine's snooker players
- *  (bs_version's "snooker_players") and the 12 ft table; in three-cushion
- *  the players the engine says play it (bs_game_players; the baseline
+ *  (bs_web_version's "snooker_players") and the 12 ft table; in three-cushion
+ *  the players the engine says play it (bs_web_game_players; the baseline
  *  when it cannot say), the strongest chosen unless the opponent chosen
  *  before plays it too, and the 10 ft carom table. */
 let poolOpponents = null;
@@ -233,7 +233,7 @@ function syncForm() {
     const sel = $('carom-target-points');
     if (rules && [...sel.options].some((o) => o.value === String(rules.target))) sel.value = String(rules.target);
   }
-  // the table's size as the engine names it (bs_game_table's "size")
+  // the table's size as the engine names it (bs_web_game_table's "size")
   const size = ui.table && ui.table.size;
   if (size && [...$('table-size').options].some((o) => o.value === size)) $('table-size').value = size;
 }

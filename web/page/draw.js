@@ -68,9 +68,9 @@ export class TableView {
   setTable(table) {
     this.table = table;
     this.staticLayer = null;
-    // the snooker table's markings (bs_game_table's "snooker"), or null
+    // the snooker table's markings (bs_web_game_table's "snooker"), or null
     this.snooker = table && table.snooker ? table.snooker : null;
-    // the carom table's markings (bs_game_table's "carom"), or null
+    // the carom table's markings (bs_web_game_table's "carom"), or null
     this.carom = table && table.carom ? table.carom : null;
   }
 

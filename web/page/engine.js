@@ -15,10 +15,10 @@
 //
 // Every method parses the facade's JSON reply and throws an Error with
 // the reply's "error" text. Playback frames are the exception: pb.frame(t)
-// reads bs_playback_frame_data's doubles from the wasm heap (a 1000-ball
+// reads bs_web_playback_frame_data's doubles from the wasm heap (a 1000-ball
 // frame as JSON text costs ~10 ms to write in wasm, as doubles nothing
 // but the physics) and builds the object JSON.parse would give of
-// bs_playback_frame's reply, which is written from the same doubles.
+// bs_web_playback_frame's reply, which is written from the same doubles.
 // Strings go to the wasm heap through malloc (not the stack: a scenario
 // can be megabytes). Numbers go as JSON text:
 // exact both ways (shortest round-trip digits on each side), and -0 is
@@ -28,7 +28,7 @@ import createBreakshot from './breakshot.js';
 
 const NEG_ZERO = '__breakshot_negative_zero__';
 
-// bs_playback_frame_data's layout: [t, events, at_rest, complete, energy,
+// bs_web_playback_frame_data's layout: [t, events, at_rest, complete, energy,
 // px, py, n], then [x, y, on_table, vx, vy, energy, px, py] per ball, then
 // the flight block: a flag (1 when a ball is off the cloth) and [z, place]
 // per ball (place: 0 on the cloth or in a pocket, 1 in flight, 2 off the
@@ -39,14 +39,17 @@ const FLIGHT_STRIDE = 2;
 /** That layout, for readers of the doubles (the npm package's states). */
 export const FRAME_LAYOUT = Object.freeze({ header: FRAME_HEADER, stride: FRAME_STRIDE, flightStride: FLIGHT_STRIDE });
 
+/** The names of the motion states (breakshot.h's BsMotion), by code. */
+export const MOTIONS = Object.freeze(['stationary', 'moving', 'sliding', 'rolling', 'spinning', 'pocketed', 'airborne', 'off_table']);
+
 /** The length of a frame's buffer of n balls, flight block included. */
 export function frameLength(n) {
   return FRAME_HEADER + FRAME_STRIDE * n + 1 + FLIGHT_STRIDE * n;
 }
 
 /**
- * The frame object of bs_playback_frame_data's doubles (an array-like):
- * what JSON.parse gives of bs_playback_frame's reply for the same frame.
+ * The frame object of bs_web_playback_frame_data's doubles (an array-like):
+ * what JSON.parse gives of bs_web_playback_frame's reply for the same frame.
  */
 export function frameObject(d) {
   const n = d[7];
@@ -98,31 +101,32 @@ export function parse(text) {
 function rawApi(M) {
   const c = (name, ret, args) => M.cwrap(name, ret, args);
   const fn = {
-    version: c('bs_version', 'number', []),
-    gamePlayers: c('bs_game_players', 'number', ['number']),
-    simulate: c('bs_simulate', 'number', ['number']),
-    free: c('bs_free', null, ['number']),
-    playbackNew: c('bs_playback_new', 'number', ['number']),
-    frame: c('bs_playback_frame', 'number', ['number', 'number']),
-    frameData: c('bs_playback_frame_data', 'number', ['number', 'number']),
-    spins: c('bs_playback_spins', 'number', ['number']),
-    events: c('bs_playback_events', 'number', ['number', 'number']),
-    caromCount: c('bs_playback_carom_count', 'number', ['number']),
-    playbackFree: c('bs_playback_free', null, ['number']),
-    gameNew: c('bs_game_new', 'number', ['number']),
-    gameFromLink: c('bs_game_from_link', 'number', ['number']),
-    table: c('bs_game_table', 'number', ['number']),
-    state: c('bs_game_state', 'number', ['number']),
-    checkPlacement: c('bs_game_check_placement', 'number', ['number', 'number', 'number']),
-    act: c('bs_game_act', 'number', ['number', 'number']),
-    aiAction: c('bs_game_ai_action', 'number', ['number', 'number']),
-    shotPlayback: c('bs_game_shot_playback', 'number', ['number', 'number']),
-    link: c('bs_game_link', 'number', ['number']),
-    record: c('bs_game_record', 'number', ['number']),
-    turns: c('bs_game_turns', 'number', ['number']),
-    undoTo: c('bs_game_undo_to', 'number', ['number', 'number']),
-    gameFree: c('bs_game_free', null, ['number']),
-    lastError: c('bs_last_error', 'number', []),
+    version: c('bs_web_version', 'number', []),
+    gamePlayers: c('bs_web_game_players', 'number', ['number']),
+    simulate: c('bs_web_simulate', 'number', ['number']),
+    free: c('bs_web_free', null, ['number']),
+    playbackNew: c('bs_web_playback_new', 'number', ['number']),
+    frame: c('bs_web_playback_frame', 'number', ['number', 'number']),
+    frameData: c('bs_web_playback_frame_data', 'number', ['number', 'number']),
+    spins: c('bs_web_playback_spins', 'number', ['number']),
+    motions: c('bs_web_playback_motions', 'number', ['number']),
+    events: c('bs_web_playback_events', 'number', ['number', 'number']),
+    caromCount: c('bs_web_playback_carom_count', 'number', ['number']),
+    playbackFree: c('bs_web_playback_free', null, ['number']),
+    gameNew: c('bs_web_game_new', 'number', ['number']),
+    gameFromLink: c('bs_web_game_from_link', 'number', ['number']),
+    table: c('bs_web_game_table', 'number', ['number']),
+    state: c('bs_web_game_state', 'number', ['number']),
+    checkPlacement: c('bs_web_game_check_placement', 'number', ['number', 'number', 'number']),
+    act: c('bs_web_game_act', 'number', ['number', 'number']),
+    aiAction: c('bs_web_game_ai_action', 'number', ['number', 'number']),
+    shotPlayback: c('bs_web_game_shot_playback', 'number', ['number', 'number']),
+    link: c('bs_web_game_link', 'number', ['number']),
+    record: c('bs_web_game_record', 'number', ['number']),
+    turns: c('bs_web_game_turns', 'number', ['number']),
+    undoTo: c('bs_web_game_undo_to', 'number', ['number', 'number']),
+    gameFree: c('bs_web_game_free', null, ['number']),
+    lastError: c('bs_web_last_error', 'number', []),
     malloc: c('malloc', 'number', ['number']),
     mfree: c('free', null, ['number']),
   };
@@ -159,7 +163,7 @@ function rawApi(M) {
       }),
     playbackNew: (text) => withStrings([text], (p) => fn.playbackNew(p)),
     frame: (h, t) => str(fn.frame(h, t)),
-    // The frame's doubles (web_api.hpp, bs_playback_frame_data): a
+    // The frame's doubles (web_api.hpp, bs_web_playback_frame_data): a
     // Float64Array view of the wasm heap, valid until the next call on the
     // handle; null on error (then lastError()). The view is taken after the
     // call: the call may grow the memory (ALLOW_MEMORY_GROWTH), which
@@ -167,13 +171,13 @@ function rawApi(M) {
     frameData: (h, t) => {
       const p = fn.frameData(h, t);
       if (!p) return null;
-      if (p % 8 !== 0) throw new Error('bs_playback_frame_data: a misaligned buffer');
+      if (p % 8 !== 0) throw new Error('bs_web_playback_frame_data: a misaligned buffer');
       const heap = M.HEAPF64;
       const at = p / 8;
       const n = heap[at + FRAME_HEADER - 1];
       return heap.subarray(at, at + frameLength(n));
     },
-    // The balls' spins at the last frame (bs_playback_spins): a copy, 3
+    // The balls' spins at the last frame (bs_web_playback_spins): a copy, 3
     // doubles per ball of the n the caller knows from the frame; null on
     // error (then lastError()).
     spins: (h, n) => {
@@ -181,6 +185,15 @@ function rawApi(M) {
       if (!p) return null;
       const at = p / 8;
       return M.HEAPF64.slice(at, at + 3 * n);
+    },
+    // The balls' motion states at the last frame (bs_web_playback_motions):
+    // a copy, 1 per ball (breakshot.h's BsMotion) of the n the caller
+    // knows from the frame; null on error (then lastError()).
+    motions: (h, n) => {
+      const p = fn.motions(h);
+      if (!p) return null;
+      const at = p / 8;
+      return M.HEAPF64.slice(at, at + n);
     },
     events: (h, from) => str(fn.events(h, from)),
     caromCount: (h) => str(fn.caromCount(h)),
@@ -231,7 +244,7 @@ class Playback {
    */
   frame(t) { return frameObject(this.frameData(t)); }
   /**
-   * The frame at time t as bs_playback_frame_data's doubles (the layout of
+   * The frame at time t as bs_web_playback_frame_data's doubles (the layout of
    * frameObject): a Float64Array view of the wasm heap, valid until the
    * next call on the engine (copy it to keep it).
    */
@@ -239,11 +252,11 @@ class Playback {
     const d = this._raw.frameData(this._handle(), numArg(t, 't'));
     if (!d) {
       parse(this._raw.lastError());  // throws the error
-      throw new Error('bs_playback_frame_data failed');
+      throw new Error('bs_web_playback_frame_data failed');
     }
     return d;
   }
-  /** The balls' spins at the last frame's time (bs_playback_spins; the
+  /** The balls' spins at the last frame's time (bs_web_playback_spins; the
    *  start's before any frame): a Float64Array of wx, wy, wz (rad/s) per
    *  ball, for drawing. n: the number of balls (a frame's balls.length). */
   spins(n) {
@@ -251,12 +264,22 @@ class Playback {
     if (!w) parse(this._raw.lastError());
     return w;
   }
-  /** The same frame from bs_playback_frame's JSON text (for tests). */
+  /** The balls' motion states at the last frame's time (the start's
+   *  before any frame): a Float64Array of one BsMotion code per ball (0
+   *  stationary, 1 moving, 2 sliding, 3 rolling, 4 spinning, 5 pocketed,
+   *  6 airborne, 7 off the table; MOTIONS names them). n: the number of
+   *  balls. */
+  motions(n) {
+    const m = this._raw.motions(this._handle(), intArg(n, 'n'));
+    if (!m) parse(this._raw.lastError());
+    return m;
+  }
+  /** The same frame from bs_web_playback_frame's JSON text (for tests). */
   frameJson(t) { return parse(this._raw.frame(this._handle(), numArg(t, 't'))); }
   /** {from, events: [...]}: the events from index `from` on, in result-file form. */
   events(from = 0) { return parse(this._raw.events(this._handle(), intArg(from, 'from'))); }
   /** A three-cushion shot's count over its events so far (its last
-   *  frame's): {cushions, hit, done, made} (bs_playback_carom_count). */
+   *  frame's): {cushions, hit, done, made} (bs_web_playback_carom_count). */
   caromCount() { return parse(this._raw.caromCount(this._handle())); }
   free() {
     if (this._h) this._raw.playbackFree(this._h);
@@ -280,7 +303,7 @@ class Game {
   }
   table() { return parse(this._raw.table(this._handle())); }
   state() { return parse(this._raw.state(this._handle())); }
-  /** bs_game_state's reply as text (online play hashes its bytes). */
+  /** bs_web_game_state's reply as text (online play hashes its bytes). */
   stateText() { return this._raw.state(this._handle()); }
   /** {ok: true} or {ok: false, reason}. */
   checkPlacement(x, y) { return parse(this._raw.checkPlacement(this._handle(), numArg(x, 'x'), numArg(y, 'y'))); }
@@ -306,7 +329,7 @@ class Game {
     return text;
   }
   /** Whose turn it is after each action, and why: [{next, why}, ...]
-   *  (bs_game_turns; act()'s reply carries its action's as "turn"). */
+   *  (bs_web_game_turns; act()'s reply carries its action's as "turn"). */
   turns() { return parse(this._raw.turns(this._handle())).turns; }
   /** Keeps the first n actions; returns the state. */
   undoTo(n) { return parse(this._raw.undoTo(this._handle(), intArg(n, 'n'))); }
@@ -331,7 +354,7 @@ async function instantiate(options) {
     aiBudgets: info.ai_budgets,
     // the computer players of a snooker seat
     snookerPlayers: info.snooker_players,
-    // the computer players a seat of `game` may be (bs_game_players): the
+    // the computer players a seat of `game` may be (bs_web_game_players): the
     // AI levels that play it, and "baseline" where it plays
     gamePlayers: (game) => parse(raw.gamePlayers(String(game))).players,
     // The engine's defaults (default_physics per model, the default ball):

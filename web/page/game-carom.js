@@ -2,7 +2,7 @@
 // break at the red, the score panel (points, innings, general average,
 // highest run, the target, the run), and the count of the shot as the
 // ball goes (cushions and balls hit, as the facade counts them:
-// bs_playback_carom_count) and once it stops (the engine's ruling).
+// bs_web_playback_carom_count) and once it stops (the engine's ruling).
 // Chosen through game-games.js.
 
 import { caromName } from './draw-colours.js';

@@ -2,7 +2,7 @@
 // playback speed), the balls that drop fading into their pocket, the
 // sounds of the events as loud as their impacts, the pool balls' markings
 // turned by their spins, and three-cushion's count as the ball goes (the
-// facade's, bs_playback_carom_count). Also the sound's mute button.
+// facade's, bs_web_playback_carom_count). Also the sound's mute button.
 // Functions of the GameUI (game.js) that owns the animation (ui.anim).
 
 import { rotate } from './draw-ball.js';

@@ -44,8 +44,8 @@ export const WRONG_POT_CHOICES = {
 
 export const CALL_HOW = 'Call a ball and a pocket: aim at the ball on (the pocket nearest its line is called), or choose them under "Call ball" and "Call pocket", or press a pocket; or tick "safety".';
 
-// Whose turn it is after an action, by the facade's reason (bs_game_act's
-// and bs_game_turns's "turn": {"next", "why"}, docs/web.md).
+// Whose turn it is after an action, by the facade's reason (bs_web_game_act's
+// and bs_web_game_turns's "turn": {"next", "why"}, docs/web.md).
 export const TURN_WORDS = {
   continues: () => 'Turn continues.',
   passes: (who) => `${who} to play.`,

@@ -56,7 +56,7 @@ export function register() {
   test('the lab\'s blank physics fields show the engine\'s defaults for each model', async ({ browser, url }) => {
     const { page, context, problems } = await openLab(browser, url, 'two_balls');
     const placeholder = (f) => page.getAttribute(`[aria-label="physics.${f}"]`, 'placeholder');
-    // The page asks the engine (bs_version's "defaults", default_physics in
+    // The page asks the engine (bs_web_version's "defaults", default_physics in
     // C++) and keeps no copy: the blank fields must show exactly those.
     const defaults = await page.evaluate(async () => (await (await import('./engine.js')).loadEngine()).defaults);
     check(defaults && defaults.physics && defaults.physics.pool, 'the engine gave no defaults');

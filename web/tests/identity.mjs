@@ -141,10 +141,10 @@ function need(map, name, what) {
 const pbOf = (step) => need(playbacks, step.pb, 'playback');
 const gameOf = (step) => need(games, step.game, 'game');
 
-// bs_playback_frame_data's doubles as web_api_probe prints them: the hex
+// bs_web_playback_frame_data's doubles as web_api_probe prints them: the hex
 // of their bits, 16 digits each, separated by spaces (the header and the
 // balls, and the flight block when its flag is 1); null (an error) as
-// bs_last_error.
+// bs_web_last_error.
 function frameDataText(d) {
   if (!d) return raw.lastError();
   // The header and the balls, and the flight block when its flag is 1.
@@ -167,7 +167,7 @@ function sameValue(a, b) {
   return a === b;
 }
 
-// frames_data: bs_playback_frame_data then bs_playback_frame at the same t.
+// frames_data: bs_web_playback_frame_data then bs_web_playback_frame at the same t.
 // The wasm side also checks that engine.js's frame object (pb.frame's, built
 // from the doubles) is JSON.parse of the JSON frame; if not, it prints that
 // instead of the JSON frame, so the line differs from the native one.

@@ -13,8 +13,8 @@
 // impacts on, as the games have them), and the first 300 layouts and
 // strikes of bench_pool's BM_RandomShot15 (written by
 // NATIVE/bench/export_random_shots; left out when it is missing). A
-// shot is bs_playback_new of its scenario text, bs_playback_frame_data
-// at t = 1e9 (the physics to rest) and bs_playback_free, through
+// shot is bs_web_playback_new of its scenario text, bs_web_playback_frame_data
+// at t = 1e9 (the physics to rest) and bs_web_playback_free, through
 // engine.js's raw API; a pass without the frame gives the set-up alone
 // ("new": the text read and the simulation set up; "run" is the rest).
 // The native program NATIVE/web_timing (web/tests/web_timing.cpp) plays
@@ -30,7 +30,7 @@
 //
 // Decisions: a game between two seats of the level (seed 7, 8-ball, 9 ft,
 // then seed 7, 9-ball) is played by the AI for N decisions each (default
-// 20), every bs_game_ai_action call timed; the median, 90th percentile and
+// 20), every bs_web_game_ai_action call timed; the median, 90th percentile and
 // maximum are printed per level, in wall-clock time and in the process's
 // CPU time (the better figure on a busy machine: another process's work
 // does not count). --budget overrides the levels' budgets (the game's
@@ -230,8 +230,8 @@ console.log(`8-ball break: simulate (with the result text) median ${quantile(sim
 
 // examples/lab/gas_1000.json frame by frame, a sixtieth of a second apart
 // over its two seconds, as the lab plays it at speed 1: the JSON frame
-// (bs_playback_frame, then JSON.parse: pb.frameJson) against the binary
-// frame (bs_playback_frame_data read from the heap: pb.frame); each
+// (bs_web_playback_frame, then JSON.parse: pb.frameJson) against the binary
+// frame (bs_web_playback_frame_data read from the heap: pb.frame); each
 // includes the physics of the step. Twice each, the second timed.
 {
   const gas = fs.readFileSync(path.join(root, 'examples', 'lab', 'gas_1000.json'), 'utf8');

@@ -13,39 +13,39 @@
 //
 // Steps ({"do": KIND, ...}); handles are named by "as" and referred to by
 // "pb" (playbacks) and "game":
-//   version                          bs_version
-//   players {game}                   bs_game_players(game; null: NULL)
-//   simulate_dir {dir}               bs_simulate of every DIR/*.json, by name
-//   simulate_text {text}             bs_simulate of the text
-//   playback_new {as, file}          bs_playback_new; {"ok":true} or bs_last_error
+//   version                          bs_web_version
+//   players {game}                   bs_web_game_players(game; null: NULL)
+//   simulate_dir {dir}               bs_web_simulate of every DIR/*.json, by name
+//   simulate_text {text}             bs_web_simulate of the text
+//   playback_new {as, file}          bs_web_playback_new; {"ok":true} or bs_web_last_error
 //   playback_new_text {as, text}
-//   frames {pb, count, dt}           bs_playback_frame at k * dt, k = 0..count-1
+//   frames {pb, count, dt}           bs_web_playback_frame at k * dt, k = 0..count-1
 //   frame {pb, t}
-//   frames_data {pb, count, dt}      at k * dt, k = 0..count-1: bs_playback_frame_data
-//                                    ("frame_data k") then bs_playback_frame at the same t
+//   frames_data {pb, count, dt}      at k * dt, k = 0..count-1: bs_web_playback_frame_data
+//                                    ("frame_data k") then bs_web_playback_frame at the same t
 //                                    ("frame k")
-//   frame_data {pb, t}               bs_playback_frame_data; "pb": null for a NULL handle
-//   The doubles of bs_playback_frame_data are printed as the hexadecimal of
+//   frame_data {pb, t}               bs_web_playback_frame_data; "pb": null for a NULL handle
+//   The doubles of bs_web_playback_frame_data are printed as the hexadecimal of
 //   their bits, 16 digits each, separated by spaces (the header and the
-//   balls, and the flight block when its flag is 1); NULL as bs_last_error.
+//   balls, and the flight block when its flag is 1); NULL as bs_web_last_error.
 //   events {pb, from}
 //   playback_free {pb}               (prints nothing)
-//   game_new {as, config}            bs_game_new(config as JSON text); the state or bs_last_error
+//   game_new {as, config}            bs_web_game_new(config as JSON text); the state or bs_web_last_error
 //   game_new_text {as, text}
 //   table / state / link / record / turns {game}
 //   check_placement {game, x, y}
-//   act {game, action}               bs_game_act(action as JSON text)
-//   ai {game, level, play}           bs_game_ai_action(level or NULL); with play,
-//                                    bs_game_act of the reply's action (its exact text)
+//   act {game, action}               bs_web_game_act(action as JSON text)
+//   ai {game, level, play}           bs_web_game_ai_action(level or NULL); with play,
+//                                    bs_web_game_act of the reply's action (its exact text)
 //   ai_until {game, count, level}    up to count times, while the game is not over:
 //                                    ai + act for the seat to act (its own level for an AI
 //                                    seat, `level` for a human seat)
-//   shot_playback {game, index, count, dt}   bs_game_shot_playback, frames as above,
+//   shot_playback {game, index, count, dt}   bs_web_game_shot_playback, frames as above,
 //                                    events from 0, free
-//   carom_playback {game, index, count, dt}  bs_game_shot_playback; at k * dt, k =
-//                                    0..count-1: bs_playback_frame ("frame k") then
-//                                    bs_playback_carom_count ("carom_count k"); free
-//   from_link {game, as}             bs_game_from_link(link of game); the state or error
+//   carom_playback {game, index, count, dt}  bs_web_game_shot_playback; at k * dt, k =
+//                                    0..count-1: bs_web_playback_frame ("frame k") then
+//                                    bs_web_playback_carom_count ("carom_count k"); free
+//   from_link {game, as}             bs_web_game_from_link(link of game); the state or error
 //   from_link_text {as, text}
 //   undo {game, n}
 //   game_free {game}                 (prints nothing)
@@ -100,8 +100,8 @@ class Probe {
  public:
   explicit Probe(std::filesystem::path root) : root_(std::move(root)) {}
   ~Probe() {
-    for (auto& [name, pb] : playbacks_) bs_playback_free(pb);
-    for (auto& [name, g] : games_) bs_game_free(g);
+    for (auto& [name, pb] : playbacks_) bs_web_playback_free(pb);
+    for (auto& [name, g] : games_) bs_web_game_free(g);
   }
   Probe(const Probe&) = delete;
   Probe& operator=(const Probe&) = delete;
@@ -109,10 +109,10 @@ class Probe {
   void run(const json& step) {
     const std::string kind = step.at("do").get<std::string>();
     if (kind == "version") {
-      print("version", bs_version());
+      print("version", bs_web_version());
     } else if (kind == "players") {
       const json& game = step.at("game");
-      print("players", bs_game_players(game.is_null() ? nullptr : game.get<std::string>().c_str()));
+      print("players", bs_web_game_players(game.is_null() ? nullptr : game.get<std::string>().c_str()));
     } else if (kind == "simulate_dir") {
       const std::string dir = step.at("dir").get<std::string>();
       std::vector<std::string> names;
@@ -128,98 +128,98 @@ class Probe {
       const std::string text = kind == "playback_new" ? read_file(root_ / step.at("file").get<std::string>())
                                                       : step.at("text").get<std::string>();
       new_playback(kind + " " + step.at("as").get<std::string>(), step.at("as").get<std::string>(),
-                   bs_playback_new(text.c_str()));
+                   bs_web_playback_new(text.c_str()));
     } else if (kind == "frames") {
       frames(playback(step), step.at("count").get<int>(), step.at("dt").get<double>());
     } else if (kind == "frame") {
-      print("frame", bs_playback_frame(playback(step), step.at("t").get<double>()));
+      print("frame", bs_web_playback_frame(playback(step), step.at("t").get<double>()));
     } else if (kind == "frames_data") {
-      BsPlayback* pb = playback(step);
+      BsWebPlayback* pb = playback(step);
       const int count = step.at("count").get<int>();
       const double dt = step.at("dt").get<double>();
       for (int k = 0; k < count; ++k) {
         const double t = static_cast<double>(k) * dt;
-        print("frame_data " + std::to_string(k), frame_data(bs_playback_frame_data(pb, t)));
-        print("frame " + std::to_string(k), bs_playback_frame(pb, t));
+        print("frame_data " + std::to_string(k), frame_data(bs_web_playback_frame_data(pb, t)));
+        print("frame " + std::to_string(k), bs_web_playback_frame(pb, t));
       }
     } else if (kind == "frame_data") {
-      BsPlayback* pb = step.at("pb").is_null() ? nullptr : playback(step);
-      print("frame_data", frame_data(bs_playback_frame_data(pb, step.at("t").get<double>())));
+      BsWebPlayback* pb = step.at("pb").is_null() ? nullptr : playback(step);
+      print("frame_data", frame_data(bs_web_playback_frame_data(pb, step.at("t").get<double>())));
     } else if (kind == "events") {
       const int from = step.at("from").get<int>();
-      print("events " + std::to_string(from), bs_playback_events(playback(step), from));
+      print("events " + std::to_string(from), bs_web_playback_events(playback(step), from));
     } else if (kind == "playback_free") {
       const std::string name = step.at("pb").get<std::string>();
-      bs_playback_free(playback(step));
+      bs_web_playback_free(playback(step));
       playbacks_.erase(name);
     } else if (kind == "game_new" || kind == "game_new_text") {
       const std::string text = kind == "game_new" ? step.at("config").dump() : step.at("text").get<std::string>();
       new_game(kind + " " + step.at("as").get<std::string>(), step.at("as").get<std::string>(),
-               bs_game_new(text.c_str()));
+               bs_web_game_new(text.c_str()));
     } else if (kind == "table") {
-      print("table " + name_of(step), bs_game_table(game(step)));
+      print("table " + name_of(step), bs_web_game_table(game(step)));
     } else if (kind == "state") {
-      print("state " + name_of(step), bs_game_state(game(step)));
+      print("state " + name_of(step), bs_web_game_state(game(step)));
     } else if (kind == "link") {
-      print("link " + name_of(step), bs_game_link(game(step)));
+      print("link " + name_of(step), bs_web_game_link(game(step)));
     } else if (kind == "record") {
-      print("record " + name_of(step), bs_game_record(game(step)));
+      print("record " + name_of(step), bs_web_game_record(game(step)));
     } else if (kind == "turns") {
-      print("turns " + name_of(step), bs_game_turns(game(step)));
+      print("turns " + name_of(step), bs_web_game_turns(game(step)));
     } else if (kind == "check_placement") {
       print("check_placement " + name_of(step),
-            bs_game_check_placement(game(step), step.at("x").get<double>(), step.at("y").get<double>()));
+            bs_web_game_check_placement(game(step), step.at("x").get<double>(), step.at("y").get<double>()));
     } else if (kind == "act") {
-      print("act " + name_of(step), bs_game_act(game(step), step.at("action").dump().c_str()));
+      print("act " + name_of(step), bs_web_game_act(game(step), step.at("action").dump().c_str()));
     } else if (kind == "ai") {
       const json& level = step.at("level");
       ai(step, level.is_null() ? std::string() : level.get<std::string>(), step.at("play").get<bool>());
     } else if (kind == "ai_until") {
       const int count = step.at("count").get<int>();
       for (int k = 0; k < count; ++k) {
-        const json state = json::parse(bs_game_state(game(step)));
+        const json state = json::parse(bs_web_game_state(game(step)));
         if (state.at("phase") == "game_over") break;
         const std::string seat = state.at("players").at(state.at("player").get<std::size_t>()).get<std::string>();
         ai(step, seat == "human" ? step.at("level").get<std::string>() : std::string(), true);
       }
     } else if (kind == "shot_playback") {
       const int index = step.at("index").get<int>();
-      BsPlayback* pb = bs_game_shot_playback(game(step), index);
+      BsWebPlayback* pb = bs_web_game_shot_playback(game(step), index);
       print("shot_playback " + name_of(step) + " " + std::to_string(index),
-            pb != nullptr ? std::string("{\"ok\":true}") : std::string(bs_last_error()));
+            pb != nullptr ? std::string("{\"ok\":true}") : std::string(bs_web_last_error()));
       if (pb != nullptr) {
         frames(pb, step.at("count").get<int>(), step.at("dt").get<double>());
-        print("events 0", bs_playback_events(pb, 0));
-        bs_playback_free(pb);
+        print("events 0", bs_web_playback_events(pb, 0));
+        bs_web_playback_free(pb);
       }
     } else if (kind == "carom_playback") {
       const int index = step.at("index").get<int>();
-      BsPlayback* pb = bs_game_shot_playback(game(step), index);
+      BsWebPlayback* pb = bs_web_game_shot_playback(game(step), index);
       print("carom_playback " + name_of(step) + " " + std::to_string(index),
-            pb != nullptr ? std::string("{\"ok\":true}") : std::string(bs_last_error()));
+            pb != nullptr ? std::string("{\"ok\":true}") : std::string(bs_web_last_error()));
       if (pb != nullptr) {
         const int count = step.at("count").get<int>();
         const double dt = step.at("dt").get<double>();
         for (int k = 0; k < count; ++k) {
-          print("frame " + std::to_string(k), bs_playback_frame(pb, static_cast<double>(k) * dt));
-          print("carom_count " + std::to_string(k), bs_playback_carom_count(pb));
+          print("frame " + std::to_string(k), bs_web_playback_frame(pb, static_cast<double>(k) * dt));
+          print("carom_count " + std::to_string(k), bs_web_playback_carom_count(pb));
         }
-        bs_playback_free(pb);
+        bs_web_playback_free(pb);
       }
     } else if (kind == "from_link") {
-      const json link = json::parse(bs_game_link(game(step)));
+      const json link = json::parse(bs_web_game_link(game(step)));
       const std::string text = link.at("link").get<std::string>();
       new_game("from_link " + step.at("as").get<std::string>(), step.at("as").get<std::string>(),
-               bs_game_from_link(text.c_str()));
+               bs_web_game_from_link(text.c_str()));
     } else if (kind == "from_link_text") {
       const std::string text = step.at("text").get<std::string>();
       new_game("from_link_text " + step.at("as").get<std::string>(), step.at("as").get<std::string>(),
-               bs_game_from_link(text.c_str()));
+               bs_web_game_from_link(text.c_str()));
     } else if (kind == "undo") {
-      print("undo " + name_of(step), bs_game_undo_to(game(step), step.at("n").get<int>()));
+      print("undo " + name_of(step), bs_web_game_undo_to(game(step), step.at("n").get<int>()));
     } else if (kind == "game_free") {
       const std::string name = name_of(step);
-      bs_game_free(game(step));
+      bs_web_game_free(game(step));
       games_.erase(name);
     } else {
       throw std::runtime_error("unknown step \"" + kind + "\"");
@@ -229,43 +229,43 @@ class Probe {
  private:
   static std::string name_of(const json& step) { return step.at("game").get<std::string>(); }
 
-  BsPlayback* playback(const json& step) {
+  BsWebPlayback* playback(const json& step) {
     const auto it = playbacks_.find(step.at("pb").get<std::string>());
     if (it == playbacks_.end()) throw std::runtime_error("no playback " + step.at("pb").dump());
     return it->second;
   }
 
-  BsGame* game(const json& step) {
+  BsWebGame* game(const json& step) {
     const auto it = games_.find(name_of(step));
     if (it == games_.end()) throw std::runtime_error("no game " + step.at("game").dump());
     return it->second;
   }
 
   void simulate(const std::string& label, const std::string& text) {
-    char* reply = bs_simulate(text.c_str());
+    char* reply = bs_web_simulate(text.c_str());
     print(label, reply);
-    bs_free(reply);
+    bs_web_free(reply);
   }
 
-  void new_playback(const std::string& label, const std::string& name, BsPlayback* pb) {
-    print(label, pb != nullptr ? std::string("{\"ok\":true}") : std::string(bs_last_error()));
+  void new_playback(const std::string& label, const std::string& name, BsWebPlayback* pb) {
+    print(label, pb != nullptr ? std::string("{\"ok\":true}") : std::string(bs_web_last_error()));
     if (pb != nullptr) {
-      if (playbacks_.count(name)) bs_playback_free(playbacks_[name]);
+      if (playbacks_.count(name)) bs_web_playback_free(playbacks_[name]);
       playbacks_[name] = pb;
     }
   }
 
-  void new_game(const std::string& label, const std::string& name, BsGame* g) {
-    print(label, g != nullptr ? std::string(bs_game_state(g)) : std::string(bs_last_error()));
+  void new_game(const std::string& label, const std::string& name, BsWebGame* g) {
+    print(label, g != nullptr ? std::string(bs_web_game_state(g)) : std::string(bs_web_last_error()));
     if (g != nullptr) {
-      if (games_.count(name)) bs_game_free(games_[name]);
+      if (games_.count(name)) bs_web_game_free(games_[name]);
       games_[name] = g;
     }
   }
 
-  /// bs_playback_frame_data's doubles as the hex of their bits, or bs_last_error.
+  /// bs_web_playback_frame_data's doubles as the hex of their bits, or bs_web_last_error.
   static std::string frame_data(const double* d) {
-    if (d == nullptr) return bs_last_error();
+    if (d == nullptr) return bs_web_last_error();
     // The header and the balls, and the flight block when its flag is 1.
     const auto balls = static_cast<std::size_t>(d[7]);
     const std::size_t head = 8 + 8 * balls;
@@ -283,28 +283,28 @@ class Probe {
     return out;
   }
 
-  static void frames(BsPlayback* pb, int count, double dt) {
+  static void frames(BsWebPlayback* pb, int count, double dt) {
     for (int k = 0; k < count; ++k) {
-      print("frame " + std::to_string(k), bs_playback_frame(pb, static_cast<double>(k) * dt));
+      print("frame " + std::to_string(k), bs_web_playback_frame(pb, static_cast<double>(k) * dt));
     }
   }
 
   /// The AI's action for the game of `step` and, with `play`, acting it
   /// with the reply's action text as it is (no re-encoding).
   void ai(const json& step, const std::string& level, bool play) {
-    BsGame* g = game(step);
-    const std::string reply = bs_game_ai_action(g, level.empty() ? nullptr : level.c_str());
+    BsWebGame* g = game(step);
+    const std::string reply = bs_web_game_ai_action(g, level.empty() ? nullptr : level.c_str());
     print("ai " + name_of(step), reply);
     const std::string head = "{\"action\":";
     if (play && reply.compare(0, head.size(), head) == 0) {
       const std::string action = reply.substr(head.size(), reply.size() - head.size() - 1);
-      print("act " + name_of(step), bs_game_act(g, action.c_str()));
+      print("act " + name_of(step), bs_web_game_act(g, action.c_str()));
     }
   }
 
   std::filesystem::path root_;
-  std::map<std::string, BsPlayback*> playbacks_;
-  std::map<std::string, BsGame*> games_;
+  std::map<std::string, BsWebPlayback*> playbacks_;
+  std::map<std::string, BsWebGame*> games_;
 };
 
 }  // namespace

@@ -8,9 +8,9 @@
 //
 // FILE: one shot a line, "WORKLOAD<TAB>SCENARIO" (the scenario's JSON on
 // one line); workloads are the runs of equal names, in file order. A
-// round makes two passes over each workload's shots: bs_playback_new and
-// bs_playback_free of each ("new": the scenario's text read and set up),
-// then the same with bs_playback_frame_data at t = 1e9 between them
+// round makes two passes over each workload's shots: bs_web_playback_new and
+// bs_web_playback_free of each ("new": the scenario's text read and set up),
+// then the same with bs_web_playback_frame_data at t = 1e9 between them
 // ("shot": set-up and the physics to rest). --warmup rounds (default 1)
 // are not timed; the first of them also gives each workload's event
 // count and a hash of its final frames (FNV-1a of the doubles' bytes),
@@ -66,8 +66,8 @@ double cpu_us() {
   return static_cast<double>(ts.tv_sec) * 1e6 + static_cast<double>(ts.tv_nsec) * 1e-3;
 }
 
-/// A pass over the workload's shots: bs_playback_new and
-/// bs_playback_free of each, with bs_playback_frame_data to rest between
+/// A pass over the workload's shots: bs_web_playback_new and
+/// bs_web_playback_free of each, with bs_web_playback_frame_data to rest between
 /// them when `run`. Adds its wall-clock and CPU microseconds to the
 /// lists when `timed`; false when a call failed.
 bool pass(Workload& w, bool run, bool timed, bool check) {
@@ -75,15 +75,15 @@ bool pass(Workload& w, bool run, bool timed, bool check) {
   const double c0 = cpu_us();
   const auto t0 = clock::now();
   for (const std::string& text : w.shots) {
-    BsPlayback* pb = bs_playback_new(text.c_str());
+    BsWebPlayback* pb = bs_web_playback_new(text.c_str());
     if (pb == nullptr) {
-      std::cerr << "web_timing: " << w.name << ": " << bs_last_error() << '\n';
+      std::cerr << "web_timing: " << w.name << ": " << bs_web_last_error() << '\n';
       return false;
     }
     if (run) {
-      const double* d = bs_playback_frame_data(pb, 1e9);
+      const double* d = bs_web_playback_frame_data(pb, 1e9);
       if (d == nullptr) {
-        std::cerr << "web_timing: " << w.name << ": " << bs_last_error() << '\n';
+        std::cerr << "web_timing: " << w.name << ": " << bs_web_last_error() << '\n';
         return false;
       }
       if (check) {
@@ -91,7 +91,7 @@ bool pass(Workload& w, bool run, bool timed, bool check) {
         hash_bytes(w.hash, d, frame_length(d));
       }
     }
-    bs_playback_free(pb);
+    bs_web_playback_free(pb);
   }
   const double wall = std::chrono::duration<double, std::micro>(clock::now() - t0).count();
   const double cpu = cpu_us() - c0;

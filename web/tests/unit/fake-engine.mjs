@@ -4,7 +4,7 @@
 // node without the wasm build. act() answers from a list of replies the
 // test gives, in order, and records what it was asked.
 
-/** A 9 ft pool table as bs_game_table gives it (the fields the flow reads). */
+/** A 9 ft pool table as bs_web_game_table gives it (the fields the flow reads). */
 export function poolTable() {
   const L = 2.54;
   const W = 1.27;

@@ -27,10 +27,11 @@ function engineNames(array) {
   return [...m[1].matchAll(/"([a-z_0-9]+)"/g)].map((x) => x[1]);
 }
 
-/** The reasons the facade gives for whose turn it is (web/api/game.cpp's turn_json). */
+/** The reasons the C API gives for whose turn it is (capi/page.cpp's turn_json). */
 function turnReasons() {
-  const text = source('web/api/game.cpp');
-  const body = text.slice(text.indexOf('ojson turn_json('), text.indexOf('std::string turns_json('));
+  const text = source('capi/page.cpp');
+  const start = text.indexOf('ojson turn_json(');
+  const body = text.slice(start, text.indexOf('\n}\n', start));
   return [...new Set([...body.matchAll(/why = "([a-z_]+)"/g), ...body.matchAll(/const char\* why = "([a-z_]+)"/g)].map((x) => x[1]))];
 }
 

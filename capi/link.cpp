@@ -31,7 +31,7 @@
 // bs_game_from_link replays the actions through the rules and stops with
 // an error naming the first one refused ("a[7]: ...").
 
-#include "facade.hpp"
+#include "page.hpp"
 
 #include <cmath>
 #include <cstddef>
@@ -43,11 +43,12 @@
 #include <string_view>
 #include <variant>
 
+#include "breakshot.h"
 #include "breakshot/game.hpp"
 #include "breakshot/record.hpp"
 #include "breakshot/version.hpp"
 
-namespace facade {
+namespace capi::page {
 
 namespace {
 
@@ -149,17 +150,18 @@ double hex_double(const json& v, const std::string& path) {
 }
 
 std::string link_text(const BsGame& g) {
+  const bs::GameRecord& record = g.session.record();
   ojson j = ojson::object();
   j["e"] = std::string(bs::kVersion);
-  j["g"] = bs::to_string(g.record().config.game);
-  j["t"] = g.record().config.table_size;
-  j["ph"] = bs::json_io::physics_json(g.record().config.physics);
-  j["s"] = bs::json_io::seed_json(g.record().seed);
-  j["b"] = g.record().start.breaker;
-  j["p"] = ojson::array({g.seats[0], g.seats[1]});
+  j["g"] = bs::to_string(record.config.game);
+  j["t"] = record.config.table_size;
+  j["ph"] = bs::json_io::physics_json(record.config.physics);
+  j["s"] = bs::json_io::seed_json(record.seed);
+  j["b"] = record.start.breaker;
+  j["p"] = ojson::array({record.players[0], record.players[1]});
   if (g.ai_budget) j["n"] = *g.ai_budget;
-  if (g.record().config.game == bs::GameType::three_cushion) {
-    const bs::CaromRules& c = g.record().config.carom;
+  if (record.config.game == bs::GameType::three_cushion) {
+    const bs::CaromRules& c = record.config.carom;
     ojson k = ojson::object();
     k["target"] = c.target;
     k["innings_limit"] = c.innings_limit;
@@ -167,7 +169,7 @@ std::string link_text(const BsGame& g) {
     j["c"] = k;
   }
   ojson actions = ojson::array();
-  for (const bs::RecordedAction& ra : g.record().actions) {
+  for (const bs::RecordedAction& ra : record.actions) {
     if (const auto* p = std::get_if<bs::PlaceCueBall>(&ra.action)) {
       actions.push_back(ojson::array({"p", double_hex(p->position.x), double_hex(p->position.y)}));
     } else if (const auto* s = std::get_if<bs::Shoot>(&ra.action)) {
@@ -229,17 +231,9 @@ bs::Action link_action(const json& v, const std::string& path, bs::GameType game
   bad(index_path(path, 0), "unknown action kind \"" + k + "\" (known: p, s, d)");
 }
 
-}  // namespace
-
-std::string link_json(const BsGame& g) {
-  ojson j = ojson::object();
-  j["link"] = link_text(g);
-  return j.dump();
-}
-
-std::unique_ptr<BsGame> game_from_link(const char* link) {
-  if (link == nullptr) bad("link", "missing (a null pointer)");
-  std::string_view text_view(link);
+/// bs_game_from_link's game: the link's actions replayed through the
+/// rules; a bad input naming the first action refused.
+std::unique_ptr<BsGame> game_from_link(std::string_view text_view) {
   // A link pasted with its URL fragment around it.
   if (const auto at = text_view.find("game="); at != std::string_view::npos) {
     text_view.remove_prefix(at + 5);
@@ -256,8 +250,8 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
   const std::string_view prefix = v1 ? kLinkPrefixV1 : kLinkPrefix;
   const std::optional<std::string> decoded = unbase64url(text_view.substr(prefix.size()));
   if (!decoded) bad("link", "not base64url text after \"" + std::string(prefix) + "\"");
-  const json doc = parse_text(decoded->c_str(), "link", "link");
-  GameConfigInput in;
+  const json doc = parse_text(decoded->data(), decoded->size(), "link", "link");
+  GameInput in;
   if (v1) {
     object(doc, "link", {"g", "t", "s", "b", "p", "n", "a"});
     in.config.physics = bs::kLegacyGamePhysics;
@@ -307,4 +301,30 @@ std::unique_ptr<BsGame> game_from_link(const char* link) {
   return g;
 }
 
-}  // namespace facade
+}  // namespace
+
+}  // namespace capi::page
+
+using namespace capi;
+using namespace capi::page;
+
+extern "C" {
+
+BsStatus bs_game_link(const BsGame* game, char** out) {
+  if (out != nullptr) *out = nullptr;
+  return on_handle(game, kGameTag, "game", [&](const BsGame& g) {
+    need(out, "out");
+    *out = copy_out(link_text(g));
+  });
+}
+
+BsStatus bs_game_from_link(const char* link, std::size_t len, BsGame** out) {
+  return on_thread([&] {
+    need(out, "out");
+    *out = nullptr;
+    if (link == nullptr) fail(BS_ERROR_NULL, "link: missing (a null pointer)");
+    *out = game_from_link(std::string_view(link, len)).release();
+  });
+}
+
+}  // extern "C"
