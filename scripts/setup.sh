@@ -10,7 +10,7 @@ set -euo pipefail
 # Required: the toolchain, the test and benchmark frameworks, and the
 # libraries the engine and its command use (Boost: Asio and Beast,
 # header-only, for `breakshot serve`). libclang-rt-14-dev carries
-# libFuzzer and clang's sanitizer runtimes (scripts/test.sh fuzzes).
+# libFuzzer and clang's sanitizer runtimes (the asan preset is clang's).
 # emscripten builds the browser version (scripts/web.sh), whose strtod
 # reads decimals with fast_float (libfast-float-dev); chromium and a
 # font are what its browser tests drive (web/tests/browser.mjs, with

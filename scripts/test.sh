@@ -7,7 +7,9 @@
 #       (tests/test_online.cpp: 100 half-sent requests, whole online games,
 #       100 rooms at once whose records `breakshot replay` checks): about
 #       7 s of the ctest stage, run again under the sanitizers in (b)
-#   (b) the same tests under AddressSanitizer + UBSan         (preset asan)
+#   (b) the same tests under AddressSanitizer + UBSan, built with clang
+#       (preset asan), and in the same tree the libFuzzer targets, whose
+#       seed corpus replays are among its tests
 #   (c) install the release build and build and run the example consumer
 #       against it (find_package(breakshot)), and the C API's example
 #       (examples/c) through the CMake package and pkg-config, shared and
@@ -23,11 +25,10 @@
 #       installed into an empty folder, its TypeScript examples checked
 #       with tsc --strict and run in node, the native command's bytes, bad
 #       input, the HTML example in Chromium)
-#   (e) the libFuzzer targets, built with clang: seed corpus replays (tests),
-#       then fuzzing scenarios for BREAKSHOT_FUZZ_SECONDS (default 60)
-#       seconds, seeded with fuzz/corpus and examples/lab, and game records
-#       for BREAKSHOT_RECORD_FUZZ_SECONDS (default 30), seeded with
-#       fuzz/record_corpus
+#   (e) the libFuzzer targets of (b): fuzzing scenarios for
+#       BREAKSHOT_FUZZ_SECONDS (default 60) seconds, seeded with fuzz/corpus
+#       and examples/lab, and game records for BREAKSHOT_RECORD_FUZZ_SECONDS
+#       (default 30), seeded with fuzz/record_corpus
 #
 # The last line is the sum over every ctest run and node test script: "N passed, 0 failed".
 #
@@ -41,7 +42,7 @@ quick=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
-    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,/^[^#]/{/^#/p}' "$0"; exit 0 ;;
     *) echo "test.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done
@@ -150,10 +151,10 @@ stage "(a) python: pytest"
 run_pytest
 
 if [ "$quick" -eq 0 ]; then
-  stage "(b) asan: configure + build"
+  stage "(b) asan: configure + build (clang; the tests, the fuzz targets)"
   cmake --preset asan
   cmake --build --preset asan
-  stage "(b) asan: ctest under ASan/UBSan"
+  stage "(b) asan: ctest under ASan/UBSan (with the fuzz corpus replays)"
   run_ctest asan
 
   stage "(c) install + example consumer"
@@ -227,40 +228,44 @@ sys.stdout.write(breakshot.simulate(sys.argv[1]).to_json())' ../examples/pool/br
   run_node_tests npm node npm/tests/run.mjs --native build/release --playwright web/tests \
     --shots build/npm/screenshots
 
-  stage "(e) fuzz: configure + build (clang)"
-  cmake --preset fuzz
-  cmake --build --preset fuzz
-  stage "(e) fuzz: corpus replay (ctest)"
-  run_ctest fuzz
-  stage "(e) fuzz: libFuzzer for ${fuzz_seconds}s"
-  mkdir -p build/fuzz/corpus-work build/fuzz/artifacts
-  fuzz_log=$logs/fuzz.log
-  if ! build/fuzz/fuzz/breakshot_fuzz \
-      -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=4096 \
-      -dict=fuzz/scenario.dict -artifact_prefix=build/fuzz/artifacts/ \
-      -print_final_stats=1 build/fuzz/corpus-work fuzz/corpus examples/lab \
-      >"$fuzz_log" 2>&1; then
-    tail -n 80 "$fuzz_log"
-    echo "test.sh: the fuzzer found a failing input; it is in build/fuzz/artifacts/" >&2
-    echo "test.sh: reproduce with: build/fuzz/fuzz/breakshot_fuzz build/fuzz/artifacts/FILE" >&2
+  # The fuzz targets were built and their seed corpora replayed in (b).
+  # The two fuzzers run side by side, one core each (each is one process
+  # of one thread), each for its own seconds and into its own log.
+  fuzz_dir=build/asan/fuzz
+  stage "(e) fuzz: libFuzzer, scenarios ${fuzz_seconds}s and game records ${record_fuzz_seconds}s"
+  mkdir -p $fuzz_dir/corpus-work $fuzz_dir/record-corpus-work $fuzz_dir/artifacts
+  $fuzz_dir/breakshot_fuzz_record \
+    -max_total_time="$record_fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
+    -artifact_prefix=$fuzz_dir/artifacts/ -print_final_stats=1 \
+    $fuzz_dir/record-corpus-work fuzz/record_corpus >"$logs/fuzz-record.log" 2>&1 &
+  record_pid=$!
+  scenario_rc=0
+  $fuzz_dir/breakshot_fuzz \
+    -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=4096 \
+    -dict=fuzz/scenario.dict -artifact_prefix=$fuzz_dir/artifacts/ \
+    -print_final_stats=1 $fuzz_dir/corpus-work fuzz/corpus examples/lab \
+    >"$logs/fuzz.log" 2>&1 || scenario_rc=$?
+  record_rc=0
+  wait "$record_pid" || record_rc=$?
+  for fuzzer in breakshot_fuzz breakshot_fuzz_record; do
+    if [ $fuzzer = breakshot_fuzz ]; then
+      rc=$scenario_rc fuzz_log=$logs/fuzz.log what="scenario fuzzer"
+    else
+      rc=$record_rc fuzz_log=$logs/fuzz-record.log what="record fuzzer"
+    fi
+    echo "-- $fuzzer ($fuzz_log)"
+    if [ "$rc" -ne 0 ]; then
+      tail -n 80 "$fuzz_log"
+      echo "test.sh: the $what found a failing input (exit $rc); it is in $fuzz_dir/artifacts/" >&2
+      echo "test.sh: reproduce with: $fuzz_dir/$fuzzer $fuzz_dir/artifacts/FILE" >&2
+    else
+      grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
+        "$fuzz_log" || true
+    fi
+  done
+  if [ "$scenario_rc" -ne 0 ] || [ "$record_rc" -ne 0 ]; then
     false
   fi
-  grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
-    "$fuzz_log" || true
-  stage "(e) fuzz: game records for ${record_fuzz_seconds}s"
-  mkdir -p build/fuzz/record-corpus-work
-  fuzz_log=$logs/fuzz-record.log
-  if ! build/fuzz/fuzz/breakshot_fuzz_record \
-      -max_total_time="$record_fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
-      -artifact_prefix=build/fuzz/artifacts/ -print_final_stats=1 \
-      build/fuzz/record-corpus-work fuzz/record_corpus >"$fuzz_log" 2>&1; then
-    tail -n 80 "$fuzz_log"
-    echo "test.sh: the record fuzzer found a failing input; it is in build/fuzz/artifacts/" >&2
-    echo "test.sh: reproduce with: build/fuzz/fuzz/breakshot_fuzz_record build/fuzz/artifacts/FILE" >&2
-    false
-  fi
-  grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
-    "$fuzz_log" || true
 fi
 stage_done
 trap - ERR

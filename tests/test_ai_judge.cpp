@@ -28,16 +28,13 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/snooker.hpp"
 #include "breakshot/table.hpp"
+#include "sanitizers.hpp"
 
 using namespace breakshot;
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kStates = 25;
-#else
-constexpr int kStates = 250;
-#endif
+constexpr int kStates = kUnderSanitizers ? 25 : 250;
 constexpr int kRandomStrikes = 4;
 constexpr std::size_t kCandidates = 6;  // of each state's generated candidates
 

@@ -13,6 +13,7 @@
 #include "breakshot/lab.hpp"
 #include "breakshot/rack.hpp"
 #include "breakshot/simulation.hpp"
+#include "sanitizers.hpp"
 
 using namespace breakshot;
 
@@ -20,11 +21,7 @@ namespace {
 
 constexpr double kR = kPoolBallRadius;
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kShots = 10000;
-#else
-constexpr int kShots = 100000;
-#endif
+constexpr int kShots = kUnderSanitizers ? 10000 : 100000;
 
 double unit(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
 

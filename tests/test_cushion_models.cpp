@@ -41,8 +41,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kMass = 0.17;     // kg, a pool ball
 constexpr double kR = 0.028575;    // m, 2.25 in diameter
-constexpr double kPaperR = 0.02625;  // Mathavan 2010's snooker ball
-constexpr double kPaperM = 0.1406;
+constexpr double kPaperR = 0.02625;  // Mathavan 2010's snooker ball (its radius)
 
 constexpr CushionModel kModels[] = {CushionModel::han_2005_v0, CushionModel::han_2005,
                                     CushionModel::mathavan_2010, CushionModel::impulse_frictional,

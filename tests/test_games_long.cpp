@@ -11,6 +11,7 @@
 #include "breakshot/match.hpp"
 #include "breakshot/noise.hpp"
 #include "breakshot/player.hpp"
+#include "sanitizers.hpp"
 
 using namespace breakshot;
 
@@ -86,11 +87,7 @@ void play_many(GameType game, int games, std::uint64_t seed) {
 // Five hundred games of each; under the sanitizers the first hundred of
 // them (what they add is memory and undefined behaviour, which the first
 // hundred games cover as well as five hundred).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kGames = 100;
-#else
-constexpr int kGames = 500;
-#endif
+constexpr int kGames = kUnderSanitizers ? 100 : 500;
 
 }  // namespace
 

@@ -10,6 +10,7 @@
 #include "breakshot/rack.hpp"
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
+#include "sanitizers.hpp"
 
 using namespace breakshot;
 
@@ -42,11 +43,7 @@ bool on_table(const Table& t, const BallState& b) {
 // A hundred thousand shots; under the sanitizers (memory and undefined
 // behaviour, not the statistics, are what they add) a tenth of them, the
 // first ten thousand of the same sequence.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kRandomShots = 10000;
-#else
-constexpr int kRandomShots = 100000;
-#endif
+constexpr int kRandomShots = kUnderSanitizers ? 10000 : 100000;
 
 TEST(PoolProperties, HundredThousandRandomShotsOnARackedTable) {
   std::mt19937_64 g(7);

@@ -22,6 +22,7 @@
 #include "breakshot/snooker.hpp"
 #include "snooker_fixtures.hpp"
 #include "io/game_json.hpp"
+#include "sanitizers.hpp"
 
 using namespace breakshot;
 
@@ -585,11 +586,7 @@ TEST(Snooker, RealShots) {
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kFrames = 4;
-#else
-constexpr int kFrames = 50;
-#endif
+constexpr int kFrames = kUnderSanitizers ? 4 : 50;
 
 /// The first broken invariant of an action of a snooker frame, or "".
 std::string broken(const Rules& r, const GameState& before, const RecordedAction& act) {

@@ -17,16 +17,13 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/snooker.hpp"
 #include "breakshot/table.hpp"
+#include "sanitizers.hpp"
 
 using namespace breakshot;
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kShots = 1000;
-#else
-constexpr int kShots = 10000;
-#endif
+constexpr int kShots = kUnderSanitizers ? 1000 : 10000;
 
 constexpr double kR = kSnookerBallRadius;
 

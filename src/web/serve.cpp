@@ -331,7 +331,7 @@ class HttpSession : public Counted, public std::enable_shared_from_this<HttpSess
 class Listener {
  public:
   Listener(asio::io_context& ioc, Server& server, tcp::acceptor& acceptor)
-      : ioc_(ioc), server_(server), acceptor_(acceptor), retry_(ioc) {}
+      : server_(server), acceptor_(acceptor), retry_(ioc) {}
 
   void accept() {
     acceptor_.async_accept([this](beast::error_code ec, tcp::socket s) {
@@ -353,7 +353,6 @@ class Listener {
   }
 
  private:
-  asio::io_context& ioc_;
   Server& server_;
   tcp::acceptor& acceptor_;
   asio::steady_timer retry_;
