@@ -134,8 +134,8 @@ export class Playback {
       s.height[i] = d[flight + FLIGHT_STRIDE * i];
       s.place[i] = d[flight + FLIGHT_STRIDE * i + 1];
     }
-    s.spin.set(this._pb.spins(n));
-    s.motion.set(this._pb.motions(n));
+    this._pb.spins(n, s.spin);
+    this._pb.motions(n, s.motion);
     return s;
   }
 

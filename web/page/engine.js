@@ -178,22 +178,24 @@ function rawApi(M) {
       return heap.subarray(at, at + frameLength(n));
     },
     // The balls' spins at the last frame (bs_web_playback_spins): a copy, 3
-    // doubles per ball of the n the caller knows from the frame; null on
-    // error (then lastError()).
-    spins: (h, n) => {
+    // doubles per ball of the n the caller knows from the frame, into
+    // `into` when given (a typed array of that length) or a new array;
+    // null on error (then lastError()).
+    spins: (h, n, into) => {
       const p = fn.spins(h);
       if (!p) return null;
       const at = p / 8;
-      return M.HEAPF64.slice(at, at + 3 * n);
+      return copyOut(M.HEAPF64.subarray(at, at + 3 * n), into);
     },
     // The balls' motion states at the last frame (bs_web_playback_motions):
     // a copy, 1 per ball (breakshot.h's BsMotion) of the n the caller
-    // knows from the frame; null on error (then lastError()).
-    motions: (h, n) => {
+    // knows from the frame, into `into` when given; null on error (then
+    // lastError()).
+    motions: (h, n, into) => {
       const p = fn.motions(h);
       if (!p) return null;
       const at = p / 8;
-      return M.HEAPF64.slice(at, at + n);
+      return copyOut(M.HEAPF64.subarray(at, at + n), into);
     },
     events: (h, from) => str(fn.events(h, from)),
     caromCount: (h) => str(fn.caromCount(h)),
@@ -219,6 +221,24 @@ function intArg(v, what) {
   const n = Number(v);
   if (!Number.isInteger(n) || n < -2147483648 || n > 2147483647) throw new Error(`${what}: expected an integer, not ${v}`);
   return n;
+}
+
+// `into` of a copy out of the wasm heap: undefined (a new array), or a
+// typed array of exactly `length` elements.
+function intoArg(into, length, what) {
+  if (into === undefined || into === null) return undefined;
+  if (!ArrayBuffer.isView(into) || into instanceof DataView || into.length !== length) {
+    throw new Error(`${what}: expected a typed array of ${length} elements`);
+  }
+  return into;
+}
+
+// A view of the wasm heap copied into `into` (returned), or into a new
+// Float64Array.
+function copyOut(view, into) {
+  if (!into) return view.slice();
+  into.set(view);
+  return into;
 }
 
 function numArg(v, what) {
@@ -258,9 +278,11 @@ class Playback {
   }
   /** The balls' spins at the last frame's time (bs_web_playback_spins; the
    *  start's before any frame): a Float64Array of wx, wy, wz (rad/s) per
-   *  ball, for drawing. n: the number of balls (a frame's balls.length). */
-  spins(n) {
-    const w = this._raw.spins(this._handle(), intArg(n, 'n'));
+   *  ball, for drawing. n: the number of balls (a frame's balls.length);
+   *  into: a typed array of 3 n to copy into (it is returned), else a new
+   *  Float64Array. */
+  spins(n, into) {
+    const w = this._raw.spins(this._handle(), intArg(n, 'n'), intoArg(into, 3 * n, 'into'));
     if (!w) parse(this._raw.lastError());
     return w;
   }
@@ -268,9 +290,10 @@ class Playback {
    *  before any frame): a Float64Array of one BsMotion code per ball (0
    *  stationary, 1 moving, 2 sliding, 3 rolling, 4 spinning, 5 pocketed,
    *  6 airborne, 7 off the table; MOTIONS names them). n: the number of
-   *  balls. */
-  motions(n) {
-    const m = this._raw.motions(this._handle(), intArg(n, 'n'));
+   *  balls; into: a typed array of n to copy into (it is returned), else a
+   *  new Float64Array. */
+  motions(n, into) {
+    const m = this._raw.motions(this._handle(), intArg(n, 'n'), intoArg(into, n, 'into'));
     if (!m) parse(this._raw.lastError());
     return m;
   }
