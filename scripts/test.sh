@@ -30,6 +30,12 @@
 #       and examples/lab, and game records for BREAKSHOT_RECORD_FUZZ_SECONDS
 #       (default 30), seeded with fuzz/record_corpus
 #
+# (b) and (e) run beside (d), in a process group of their own at the lowest
+# CPU priority: the browser tests mostly wait for Chromium, and the idle
+# cores build and run the sanitizer tree meanwhile. Their output is shown
+# (from build/logs/background.log) when (d) is done; every stage's time is
+# printed at the end.
+#
 # The last line is the sum over every ctest run and node test script: "N passed, 0 failed".
 #
 #   scripts/test.sh            everything
@@ -74,19 +80,36 @@ stage_done() {
   fi
   stage_name=""
 }
+background_pid=""
 on_error() {
   local rc=$?
+  # Stages (b) and (e) run in their own process group beside (d).
+  if [ -n "$background_pid" ]; then
+    kill -- "-$background_pid" 2>/dev/null || true
+  fi
   echo >&2
   echo "test.sh: FAILED (exit $rc) in stage: ${stage_name:-setup}" >&2
   echo "test.sh: logs are in $logs" >&2
   exit "$rc"
 }
 trap on_error ERR
+on_interrupt() {
+  if [ -n "$background_pid" ]; then
+    kill -- "-$background_pid" 2>/dev/null || true
+  fi
+  echo "test.sh: interrupted" >&2
+  exit 130
+}
+trap on_interrupt INT TERM
 
 # Runs one ctest preset, shows its output and adds its counts to the totals.
 run_ctest() {
-  local preset=$1 log=$logs/ctest-$1.log line total nfail nskip
-  ctest --preset "$preset" 2>&1 | tee "$log"
+  ctest --preset "$1" 2>&1 | tee "$logs/ctest-$1.log"
+  count_ctest "$1" "$logs/ctest-$1.log"
+}
+# Adds the counts of a ctest log to the totals.
+count_ctest() {
+  local preset=$1 log=$2 line total nfail nskip
   line=$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1)
   if [ -z "$line" ]; then
     echo "test.sh: no ctest summary for preset $preset" >&2
@@ -151,12 +174,6 @@ stage "(a) python: pytest"
 run_pytest
 
 if [ "$quick" -eq 0 ]; then
-  stage "(b) asan: configure + build (clang; the tests, the fuzz targets)"
-  cmake --preset asan
-  cmake --build --preset asan
-  stage "(b) asan: ctest under ASan/UBSan (with the fuzz corpus replays)"
-  run_ctest asan
-
   stage "(c) install + example consumer"
   rm -rf build/install build/consumer
   cmake --install build/release --prefix build/install
@@ -212,7 +229,75 @@ sys.stdout.write(breakshot.simulate(sys.argv[1]).to_json())' ../examples/pool/br
   scripts/run.sh --check >"$logs/run.log" 2>&1 || { cat "$logs/run.log"; false; }
   tail -n 6 "$logs/run.log"
 
-  # scripts/run.sh built the wasm engine and the page (scripts/web.sh).
+  # Stages (b) and (e) run beside (d), at the lowest CPU priority: the
+  # browser tests mostly wait for Chromium (about a fifth of one core over
+  # their minutes), so the sanitizer build, its tests and the fuzzers take
+  # the idle cores without slowing the page's tests. Their output goes to
+  # $logs/background.log and is shown when (d) is done.
+  stage_done
+  background_log=$logs/background.log
+  background_times=$logs/background-times.txt
+  : >"$background_times"
+  set -m
+  (
+    renice -n 19 -p "$BASHPID" >/dev/null
+    trap - ERR
+    set -e
+    bg_stage() { bg_name=$1; bg_t0=$SECONDS; printf '\n==== %s ====\n' "$bg_name"; }
+    bg_done() { printf '%-44s %4ds\n' "$bg_name" $((SECONDS - bg_t0)) >>"$background_times"; }
+    bg_stage "(b) asan: configure + build (clang; the tests, the fuzz targets)"
+    cmake --preset asan
+    cmake --build --preset asan
+    bg_done
+    bg_stage "(b) asan: ctest under ASan/UBSan (with the fuzz corpus replays)"
+    ctest_rc=0
+    ctest --preset asan >"$logs/ctest-asan.log" 2>&1 || ctest_rc=$?
+    if [ "$ctest_rc" -ne 0 ]; then cat "$logs/ctest-asan.log"; else tail -n 25 "$logs/ctest-asan.log"; fi
+    bg_done
+
+    # The fuzz targets were built and their seed corpora replayed above.
+    # The two fuzzers run side by side, one core each (each is one process
+    # of one thread), each for its own seconds and into its own log.
+    fuzz_dir=build/asan/fuzz
+    bg_stage "(e) fuzz: libFuzzer, scenarios ${fuzz_seconds}s and game records ${record_fuzz_seconds}s"
+    mkdir -p $fuzz_dir/corpus-work $fuzz_dir/record-corpus-work $fuzz_dir/artifacts
+    $fuzz_dir/breakshot_fuzz_record \
+      -max_total_time="$record_fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
+      -artifact_prefix=$fuzz_dir/artifacts/ -print_final_stats=1 \
+      $fuzz_dir/record-corpus-work fuzz/record_corpus >"$logs/fuzz-record.log" 2>&1 &
+    record_pid=$!
+    scenario_rc=0
+    $fuzz_dir/breakshot_fuzz \
+      -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=4096 \
+      -dict=fuzz/scenario.dict -artifact_prefix=$fuzz_dir/artifacts/ \
+      -print_final_stats=1 $fuzz_dir/corpus-work fuzz/corpus examples/lab \
+      >"$logs/fuzz.log" 2>&1 || scenario_rc=$?
+    record_rc=0
+    wait "$record_pid" || record_rc=$?
+    for fuzzer in breakshot_fuzz breakshot_fuzz_record; do
+      if [ $fuzzer = breakshot_fuzz ]; then
+        rc=$scenario_rc fuzz_log=$logs/fuzz.log what="scenario fuzzer"
+      else
+        rc=$record_rc fuzz_log=$logs/fuzz-record.log what="record fuzzer"
+      fi
+      echo "-- $fuzzer ($fuzz_log)"
+      if [ "$rc" -ne 0 ]; then
+        tail -n 80 "$fuzz_log"
+        echo "test.sh: the $what found a failing input (exit $rc); it is in $fuzz_dir/artifacts/"
+        echo "test.sh: reproduce with: $fuzz_dir/$fuzzer $fuzz_dir/artifacts/FILE"
+      else
+        grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
+          "$fuzz_log" || true
+      fi
+    done
+    bg_done
+    [ "$ctest_rc" -eq 0 ] && [ "$scenario_rc" -eq 0 ] && [ "$record_rc" -eq 0 ]
+  ) >"$background_log" 2>&1 &
+  background_pid=$!
+  set +m
+  echo
+  echo "==== (b) asan and (e) fuzz: started beside (d) at the lowest priority (log: $background_log) ===="
+
   stage "(d) web: the page's unit tests (node --test)"
   run_node_tests unit node web/tests/unit/run.mjs
   stage "(d) web: native and wasm replies, byte for byte"
@@ -228,42 +313,17 @@ sys.stdout.write(breakshot.simulate(sys.argv[1]).to_json())' ../examples/pool/br
   run_node_tests npm node npm/tests/run.mjs --native build/release --playwright web/tests \
     --shots build/npm/screenshots
 
-  # The fuzz targets were built and their seed corpora replayed in (b).
-  # The two fuzzers run side by side, one core each (each is one process
-  # of one thread), each for its own seconds and into its own log.
-  fuzz_dir=build/asan/fuzz
-  stage "(e) fuzz: libFuzzer, scenarios ${fuzz_seconds}s and game records ${record_fuzz_seconds}s"
-  mkdir -p $fuzz_dir/corpus-work $fuzz_dir/record-corpus-work $fuzz_dir/artifacts
-  $fuzz_dir/breakshot_fuzz_record \
-    -max_total_time="$record_fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
-    -artifact_prefix=$fuzz_dir/artifacts/ -print_final_stats=1 \
-    $fuzz_dir/record-corpus-work fuzz/record_corpus >"$logs/fuzz-record.log" 2>&1 &
-  record_pid=$!
-  scenario_rc=0
-  $fuzz_dir/breakshot_fuzz \
-    -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=4096 \
-    -dict=fuzz/scenario.dict -artifact_prefix=$fuzz_dir/artifacts/ \
-    -print_final_stats=1 $fuzz_dir/corpus-work fuzz/corpus examples/lab \
-    >"$logs/fuzz.log" 2>&1 || scenario_rc=$?
-  record_rc=0
-  wait "$record_pid" || record_rc=$?
-  for fuzzer in breakshot_fuzz breakshot_fuzz_record; do
-    if [ $fuzzer = breakshot_fuzz ]; then
-      rc=$scenario_rc fuzz_log=$logs/fuzz.log what="scenario fuzzer"
-    else
-      rc=$record_rc fuzz_log=$logs/fuzz-record.log what="record fuzzer"
-    fi
-    echo "-- $fuzzer ($fuzz_log)"
-    if [ "$rc" -ne 0 ]; then
-      tail -n 80 "$fuzz_log"
-      echo "test.sh: the $what found a failing input (exit $rc); it is in $fuzz_dir/artifacts/" >&2
-      echo "test.sh: reproduce with: $fuzz_dir/$fuzzer $fuzz_dir/artifacts/FILE" >&2
-    else
-      grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
-        "$fuzz_log" || true
-    fi
-  done
-  if [ "$scenario_rc" -ne 0 ] || [ "$record_rc" -ne 0 ]; then
+  stage "(b) and (e): waiting for the sanitizer tests and the fuzzers"
+  background_rc=0
+  wait "$background_pid" || background_rc=$?
+  background_pid=""
+  cat "$background_log"
+  while IFS= read -r line; do timings+=("$line"); done <"$background_times"
+  if [ -f "$logs/ctest-asan.log" ]; then
+    count_ctest asan "$logs/ctest-asan.log"
+  fi
+  if [ "$background_rc" -ne 0 ]; then
+    echo "test.sh: the sanitizer build, its tests or the fuzzers failed (exit $background_rc); see above and $background_log" >&2
     false
   fi
 fi
