@@ -21,7 +21,14 @@
 // Before timing, every shot's result through the C API is checked to be
 // write_result(simulate())'s bytes.
 //
-//   capi_overhead [ROUNDS]      (default 11)
+// capi_overhead calls the shared library (libbreakshot.so), whose copy of
+// the engine is not the one this program's C++ calls run;
+// capi_overhead_static links the static library (libbreakshot_c.a) alone,
+// so that the C API and the C++ calls run the same machine code and only
+// the API's own work differs.
+//
+//   capi_overhead [ROUNDS]          (default 11)
+//   capi_overhead_static [ROUNDS]
 
 #include <time.h>
 
@@ -233,6 +240,11 @@ void frame_cost(int rounds) {
 
 int main(int argc, char** argv) {
   const int rounds = argc > 1 ? std::max(1, std::atoi(argv[1])) : 11;
+#if defined(BREAKSHOT_CAPI_OVERHEAD_STATIC)
+  std::printf("the C API from libbreakshot_c.a: both sides run the same copy of the engine\n");
+#else
+  std::printf("the C API from libbreakshot.so: the C++ side runs this program's copy of the engine\n");
+#endif
   std::vector<bs::Scenario> breaks;
   for (std::uint64_t seed = 1; seed <= 64; ++seed) {
     breaks.push_back(bs::make_break_scenario("eight_ball", "9ft", seed, 7.5));

@@ -30,11 +30,12 @@
 #       and examples/lab, and game records for BREAKSHOT_RECORD_FUZZ_SECONDS
 #       (default 30), seeded with fuzz/record_corpus
 #
-# (b) and (e) run beside (d), in a process group of their own at the lowest
-# CPU priority: the browser tests mostly wait for Chromium, and the idle
-# cores build and run the sanitizer tree meanwhile. Their output is shown
-# (from build/logs/background.log) when (d) is done; every stage's time is
-# printed at the end.
+# (b) and (e) run beside (a), (c) and (d), in a process group of their own
+# at the lowest CPU priority: pytest uses one core, links and Chromium's
+# waits leave cores idle, and the sanitizer tree is built and run in what
+# they leave. Its tests start once (c) has built the wasm engine. Their
+# output is shown (from build/logs/background.log) when (d) is done; every
+# stage's time is printed at the end.
 #
 # The last line is the sum over every ctest run and node test script: "N passed, 0 failed".
 #
@@ -162,6 +163,81 @@ t_start=$SECONDS
 
 stage "setup (scripts/setup.sh)"
 scripts/setup.sh
+stage_done
+wasm_built=$logs/wasm-built
+rm -f "$wasm_built"
+
+# Stages (b) and (e) run beside (a), (c) and (d), at the lowest CPU
+# priority: they take what the other stages leave idle (pytest's one core,
+# the links, Chromium's waits) without slowing them. Their output goes to
+# build/logs/background.log and is shown when (d) is done.
+if [ "$quick" -eq 0 ]; then
+  background_log=$logs/background.log
+  background_times=$logs/background-times.txt
+  : >"$background_times"
+  set -m
+  (
+    renice -n 19 -p "$BASHPID" >/dev/null
+    trap - ERR
+    set -e
+    bg_stage() { bg_name=$1; bg_t0=$SECONDS; printf '\n==== %s ====\n' "$bg_name"; }
+    bg_done() { printf '%-44s %4ds\n' "$bg_name" $((SECONDS - bg_t0)) >>"$background_times"; }
+    bg_stage "(b) asan: configure + build (clang; the tests, the fuzz targets)"
+    cmake --preset asan
+    cmake --build --preset asan
+    bg_done
+    # web_identity compares native and wasm replies: it waits for (c) to
+    # have built the wasm engine.
+    while [ ! -e "$wasm_built" ]; do sleep 2; done
+    bg_stage "(b) asan: ctest under ASan/UBSan (with the fuzz corpus replays)"
+    ctest_rc=0
+    ctest --preset asan >"$logs/ctest-asan.log" 2>&1 || ctest_rc=$?
+    if [ "$ctest_rc" -ne 0 ]; then cat "$logs/ctest-asan.log"; else tail -n 25 "$logs/ctest-asan.log"; fi
+    bg_done
+
+    # The fuzz targets were built and their seed corpora replayed above.
+    # The two fuzzers run side by side, one core each (each is one process
+    # of one thread), each for its own seconds and into its own log.
+    fuzz_dir=build/asan/fuzz
+    bg_stage "(e) fuzz: libFuzzer, scenarios ${fuzz_seconds}s and game records ${record_fuzz_seconds}s"
+    mkdir -p $fuzz_dir/corpus-work $fuzz_dir/record-corpus-work $fuzz_dir/artifacts
+    $fuzz_dir/breakshot_fuzz_record \
+      -max_total_time="$record_fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
+      -artifact_prefix=$fuzz_dir/artifacts/ -print_final_stats=1 \
+      $fuzz_dir/record-corpus-work fuzz/record_corpus >"$logs/fuzz-record.log" 2>&1 &
+    record_pid=$!
+    scenario_rc=0
+    $fuzz_dir/breakshot_fuzz \
+      -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=4096 \
+      -dict=fuzz/scenario.dict -artifact_prefix=$fuzz_dir/artifacts/ \
+      -print_final_stats=1 $fuzz_dir/corpus-work fuzz/corpus examples/lab \
+      >"$logs/fuzz.log" 2>&1 || scenario_rc=$?
+    record_rc=0
+    wait "$record_pid" || record_rc=$?
+    for fuzzer in breakshot_fuzz breakshot_fuzz_record; do
+      if [ $fuzzer = breakshot_fuzz ]; then
+        rc=$scenario_rc fuzz_log=$logs/fuzz.log what="scenario fuzzer"
+      else
+        rc=$record_rc fuzz_log=$logs/fuzz-record.log what="record fuzzer"
+      fi
+      echo "-- $fuzzer ($fuzz_log)"
+      if [ "$rc" -ne 0 ]; then
+        tail -n 80 "$fuzz_log"
+        echo "test.sh: the $what found a failing input (exit $rc); it is in $fuzz_dir/artifacts/"
+        echo "test.sh: reproduce with: $fuzz_dir/$fuzzer $fuzz_dir/artifacts/FILE"
+      else
+        grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
+          "$fuzz_log" || true
+      fi
+    done
+    bg_done
+    [ "$ctest_rc" -eq 0 ] && [ "$scenario_rc" -eq 0 ] && [ "$record_rc" -eq 0 ]
+  ) >"$background_log" 2>&1 &
+  background_pid=$!
+  set +m
+  echo
+  echo "==== (b) asan and (e) fuzz: started beside the other stages at the lowest priority (log: $background_log) ===="
+fi
 
 stage "(a) release: configure + build (-Werror)"
 cmake --preset release
@@ -229,74 +305,9 @@ sys.stdout.write(breakshot.simulate(sys.argv[1]).to_json())' ../examples/pool/br
   scripts/run.sh --check >"$logs/run.log" 2>&1 || { cat "$logs/run.log"; false; }
   tail -n 6 "$logs/run.log"
 
-  # Stages (b) and (e) run beside (d), at the lowest CPU priority: the
-  # browser tests mostly wait for Chromium (about a fifth of one core over
-  # their minutes), so the sanitizer build, its tests and the fuzzers take
-  # the idle cores without slowing the page's tests. Their output goes to
-  # $logs/background.log and is shown when (d) is done.
-  stage_done
-  background_log=$logs/background.log
-  background_times=$logs/background-times.txt
-  : >"$background_times"
-  set -m
-  (
-    renice -n 19 -p "$BASHPID" >/dev/null
-    trap - ERR
-    set -e
-    bg_stage() { bg_name=$1; bg_t0=$SECONDS; printf '\n==== %s ====\n' "$bg_name"; }
-    bg_done() { printf '%-44s %4ds\n' "$bg_name" $((SECONDS - bg_t0)) >>"$background_times"; }
-    bg_stage "(b) asan: configure + build (clang; the tests, the fuzz targets)"
-    cmake --preset asan
-    cmake --build --preset asan
-    bg_done
-    bg_stage "(b) asan: ctest under ASan/UBSan (with the fuzz corpus replays)"
-    ctest_rc=0
-    ctest --preset asan >"$logs/ctest-asan.log" 2>&1 || ctest_rc=$?
-    if [ "$ctest_rc" -ne 0 ]; then cat "$logs/ctest-asan.log"; else tail -n 25 "$logs/ctest-asan.log"; fi
-    bg_done
-
-    # The fuzz targets were built and their seed corpora replayed above.
-    # The two fuzzers run side by side, one core each (each is one process
-    # of one thread), each for its own seconds and into its own log.
-    fuzz_dir=build/asan/fuzz
-    bg_stage "(e) fuzz: libFuzzer, scenarios ${fuzz_seconds}s and game records ${record_fuzz_seconds}s"
-    mkdir -p $fuzz_dir/corpus-work $fuzz_dir/record-corpus-work $fuzz_dir/artifacts
-    $fuzz_dir/breakshot_fuzz_record \
-      -max_total_time="$record_fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
-      -artifact_prefix=$fuzz_dir/artifacts/ -print_final_stats=1 \
-      $fuzz_dir/record-corpus-work fuzz/record_corpus >"$logs/fuzz-record.log" 2>&1 &
-    record_pid=$!
-    scenario_rc=0
-    $fuzz_dir/breakshot_fuzz \
-      -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=4096 -max_len=4096 \
-      -dict=fuzz/scenario.dict -artifact_prefix=$fuzz_dir/artifacts/ \
-      -print_final_stats=1 $fuzz_dir/corpus-work fuzz/corpus examples/lab \
-      >"$logs/fuzz.log" 2>&1 || scenario_rc=$?
-    record_rc=0
-    wait "$record_pid" || record_rc=$?
-    for fuzzer in breakshot_fuzz breakshot_fuzz_record; do
-      if [ $fuzzer = breakshot_fuzz ]; then
-        rc=$scenario_rc fuzz_log=$logs/fuzz.log what="scenario fuzzer"
-      else
-        rc=$record_rc fuzz_log=$logs/fuzz-record.log what="record fuzzer"
-      fi
-      echo "-- $fuzzer ($fuzz_log)"
-      if [ "$rc" -ne 0 ]; then
-        tail -n 80 "$fuzz_log"
-        echo "test.sh: the $what found a failing input (exit $rc); it is in $fuzz_dir/artifacts/"
-        echo "test.sh: reproduce with: $fuzz_dir/$fuzzer $fuzz_dir/artifacts/FILE"
-      else
-        grep -E '^(#[0-9]+ *DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb)' \
-          "$fuzz_log" || true
-      fi
-    done
-    bg_done
-    [ "$ctest_rc" -eq 0 ] && [ "$scenario_rc" -eq 0 ] && [ "$record_rc" -eq 0 ]
-  ) >"$background_log" 2>&1 &
-  background_pid=$!
-  set +m
-  echo
-  echo "==== (b) asan and (e) fuzz: started beside (d) at the lowest priority (log: $background_log) ===="
+  # The wasm build exists now: the sanitizer tree's web_identity test
+  # (native and wasm replies) may run.
+  touch "$wasm_built"
 
   stage "(d) web: the page's unit tests (node --test)"
   run_node_tests unit node web/tests/unit/run.mjs
