@@ -24,8 +24,9 @@
 // capi_overhead calls the shared library (libbreakshot.so), whose copy of
 // the engine is not the one this program's C++ calls run;
 // capi_overhead_static links the static library (libbreakshot_c.a) alone,
-// so that the C API and the C++ calls run the same machine code and only
-// the API's own work differs.
+// so that the C API and the C++ calls run the same machine code, and also
+// times simulate() on the Scenario objects the C API itself read from its
+// calls (capi/capi.hpp's scenario_of), so that only the call differs.
 //
 //   capi_overhead [ROUNDS]          (default 11)
 //   capi_overhead_static [ROUNDS]
@@ -47,6 +48,9 @@
 #include "breakshot/simulation.hpp"
 #include "physics/run_record.hpp"
 #include "random_shots.hpp"
+#if defined(BREAKSHOT_CAPI_OVERHEAD_STATIC)
+#include "capi.hpp"
+#endif
 
 namespace bs = breakshot;
 
@@ -141,6 +145,15 @@ void compare(const char* name, const std::vector<bs::Scenario>& cpp, int rounds)
     for (const bs::Scenario& s : cpp) g_sink = g_sink + bs::simulate(s).events.size();
     return std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
   };
+#if defined(BREAKSHOT_CAPI_OVERHEAD_STATIC)
+  // simulate() on the very Scenario objects that bs_simulate runs (the
+  // ones the C API read from its calls): only the call differs.
+  const auto run_same = [&] {
+    const auto t0 = Clock::now();
+    for (BsScenario* s : c) g_sink = g_sink + bs::simulate(capi::scenario_of(*s)).events.size();
+    return std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+  };
+#endif
   const auto run_rec = [&] {
     const auto t0 = Clock::now();
     for (const bs::Scenario& s : cpp) {
@@ -179,10 +192,17 @@ void compare(const char* name, const std::vector<bs::Scenario>& cpp, int rounds)
     }
     return std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
   };
-  std::vector<double> t_drawn, r_drawn;
+  std::vector<double> t_drawn, r_drawn, t_same, r_same;
   for (int r = 0; r < rounds; ++r) {
     double a = run_cpp(), b = run_rec(), x = run_c();
+#if defined(BREAKSHOT_CAPI_OVERHEAD_STATIC)
+    const double y = run_same() + run_same();
+#endif
     x += run_c();
+#if defined(BREAKSHOT_CAPI_OVERHEAD_STATIC)
+    t_same.push_back(y / n);
+    r_same.push_back(x / y);
+#endif
     b += run_rec();
     a += run_cpp();
     t_cpp.push_back(a / n);
@@ -200,6 +220,12 @@ void compare(const char* name, const std::vector<bs::Scenario>& cpp, int rounds)
       "C API / recorded %.3f\n",
       name, cpp.size(), rounds, median(t_cpp), median(t_rec), median(t_c), median(r_cpp),
       median(r_rec));
+#if defined(BREAKSHOT_CAPI_OVERHEAD_STATIC)
+  std::printf(
+      "%-9s C++ simulate() of the C API's own scenarios (median us/shot) %7.1f; median ratio "
+      "C API / that %.3f\n",
+      name, median(t_same), median(r_same));
+#endif
   std::printf(
       "%-9s first states query too (bs_simulate + bs_simulation_states_at, median us/shot): "
       "%7.1f; median ratio to simulate() %.3f\n",

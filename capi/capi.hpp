@@ -1,5 +1,6 @@
 // The C API's handles and what its parts share (include/breakshot.h,
-// docs/c-api.md). Internal: only capi/*.cpp include it.
+// docs/c-api.md). Internal: capi/*.cpp include it, and the static build of
+// bench/capi_overhead.cpp, which times simulate() on the C API's own scenarios.
 //
 //   capi.cpp        status names, errors, strings, version, physics options
 //   scenario.cpp    BsScenario: a scenario document built by calls or read
