@@ -84,7 +84,7 @@ stage_done() {
 background_pid=""
 on_error() {
   local rc=$?
-  # Stages (b) and (e) run in their own process group beside (d).
+  # Stages (b) and (e) run in their own process group beside the others.
   if [ -n "$background_pid" ]; then
     kill -- "-$background_pid" 2>/dev/null || true
   fi
@@ -175,6 +175,7 @@ if [ "$quick" -eq 0 ]; then
   background_log=$logs/background.log
   background_times=$logs/background-times.txt
   : >"$background_times"
+  rm -f "$logs/ctest-asan.log"
   set -m
   (
     renice -n 19 -p "$BASHPID" >/dev/null
