@@ -538,6 +538,27 @@ TEST(AiPlayer, PlacesTheCueBallBehindTheHeadString) {
   }
 }
 
+// The strongest level's break spends its samples in rounds that halve
+// the options (src/ai/break_shot.cpp): the call that places the cue ball
+// and the call that then finds it there read the same rounds and agree,
+// whatever the decision seed and the threads.
+TEST(AiBreak, TheChampionPlacesTheCueBallThenShootsTheBreakItChose) {
+  const Rules rules = eight_ball_rules();
+  const GameState s = rules.start(11, 0);
+  AiLevel l = ai_level("champion");
+  l.samples = 24;  // 12 an option on average (the level: 32), still in rounds
+  l.threads = 1;
+  const Action a = make_ai_player(l)->decide(rules, s, 1);
+  ASSERT_TRUE(std::holds_alternative<PlaceCueBall>(a));
+  EXPECT_DOUBLE_EQ(std::get<PlaceCueBall>(a).position.x, rules.head_string());
+  const GameState placed = rules.apply(s, a).state;
+  const Action b = make_ai_player(l)->decide(rules, placed, 2);
+  ASSERT_TRUE(std::holds_alternative<Shoot>(b));
+  EXPECT_GE(std::get<Shoot>(b).strike.speed, 9.9);  // a power break, 10 or 11 m/s
+  l.threads = 2;
+  EXPECT_TRUE(make_ai_player(l)->decide(rules, placed, 7) == b);
+}
+
 /// An open 8-ball table in play: two solids, a stripe and the 8.
 GameState four_balls(const Rules& rules) {
   GameState s = bare_table(rules, {0.7, 0.5});

@@ -103,10 +103,10 @@ Action AiPlayer::break_action(const Rules& rules, const GameState& state, const 
     // At most 32 each on average: the strongest level has over a hundred
     // options. The other levels sample each option alike; the strongest
     // spends its samples in rounds that halve the options (successive
-    // halving): every option gets eight, the better half of them as many
-    // again and more, and so on, so that the option chosen is read from
-    // about six hundred samples instead of being the luckiest of 140 at 32
-    // each. On 300 racks (bench/run_probe --break-only) its 8-ball break
+    // halving): every option gets eight samples, the better half six
+    // more, the better quarter thirteen, and so on, so that the option
+    // chosen is read from about six hundred samples instead of being the
+    // luckiest of 140 at 32 each. On 300 racks (bench/run_probe --break-only) its 8-ball break
     // kept the table 233 times against 217, its 9-ball break 231 against
     // 215 (docs/ai.md). Sample k of every option shares its noise seed
     // (common random numbers).
@@ -125,9 +125,10 @@ Action AiPlayer::break_action(const Rules& rules, const GameState& state, const 
       for (std::size_t n = options.size(); n > 1; n = (n + 1) / 2) ++rounds;
     }
     const std::int64_t first =
-        rounds == 1 ? want
-                    : std::max<std::int64_t>(want / rounds, static_cast<std::int64_t>(options.size()) *
-                                                                std::min(samples, 8));
+        rounds == 1
+            ? want
+            : std::max<std::int64_t>(
+                  want / rounds, static_cast<std::int64_t>(options.size()) * std::min(samples, 8));
     for (int round = 0; alive.size() > 1 && left >= static_cast<std::int64_t>(alive.size());
          ++round) {
       const std::int64_t share =
@@ -186,8 +187,7 @@ Action AiPlayer::break_off(const Rules& rules, const GameState& state, const Leg
     double best_value = kNoValue;
     for (std::size_t i = 0; i < spots.size(); ++i) {
       const GameState placed = rules.apply(state, PlaceCueBall{spots[i]}).state;
-      const double v =
-          best_shot(rules, placed, mix_seed(place_seed, i), 0.5, budget).value;
+      const double v = best_shot(rules, placed, mix_seed(place_seed, i), 0.5, budget).value;
       if (v > best_value) {
         best_value = v;
         best = i;
