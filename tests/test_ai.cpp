@@ -26,6 +26,8 @@
 #include "ai_fixtures.hpp"
 #include "rules_fixtures.hpp"
 
+namespace test_ai {
+
 namespace {
 
 using namespace rules_fixtures;
@@ -653,3 +655,5 @@ TEST(AiPlayer, WholeGamesAreLegal) {
 }
 
 }  // namespace
+
+}  // namespace test_ai

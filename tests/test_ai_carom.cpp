@@ -17,6 +17,8 @@
 #include "breakshot/noise.hpp"
 #include "breakshot/players.hpp"
 
+namespace test_ai_carom {
+
 using namespace breakshot;
 
 namespace {
@@ -139,3 +141,5 @@ TEST(AiCarom, ShortGamesEnd) {
     EXPECT_EQ(m.games_played, 1) << names[i];
   }
 }
+
+}  // namespace test_ai_carom

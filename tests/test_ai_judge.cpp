@@ -30,6 +30,8 @@
 #include "breakshot/table.hpp"
 #include "sanitizers.hpp"
 
+namespace test_ai_judge {
+
 using namespace breakshot;
 
 namespace {
@@ -356,3 +358,5 @@ TEST(AiJudge, SnookerRulingsAreTheRules) {
   const Tally t = tie(rules_of(GameType::snooker), snooker_state, 147);
   expect_covered(t);
 }
+
+}  // namespace test_ai_judge

@@ -25,6 +25,8 @@
 #include "snooker_fixtures.hpp"
 #include "sanitizers.hpp"
 
+namespace test_ai_snooker {
+
 using namespace breakshot;
 
 namespace {
@@ -223,3 +225,5 @@ TEST(AiSnooker, BreakOffHitsARedCleanly) {
     EXPECT_EQ(snooker_value(out.facts.first_hit), 1) << level << ": " << out.ruling.text;
   }
 }
+
+}  // namespace test_ai_snooker

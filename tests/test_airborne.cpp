@@ -18,6 +18,8 @@
 #include "breakshot/simulation.hpp"
 #include "physics/airborne.hpp"
 
+namespace test_airborne {
+
 using namespace breakshot;
 
 namespace {
@@ -372,3 +374,5 @@ TEST(Airborne, ABallRestingOnAnotherSlidesOff) {
   EXPECT_EQ(same_instant, 0);  // never twice at one instant
   EXPECT_LT(sim.event_count(), 1000u);
 }
+
+}  // namespace test_airborne

@@ -15,6 +15,8 @@
 #include "breakshot/simulation.hpp"
 #include "sanitizers.hpp"
 
+namespace test_airborne_properties {
+
 using namespace breakshot;
 
 namespace {
@@ -114,3 +116,5 @@ TEST(AirborneProperties, RandomShotsWithJumps) {
   EXPECT_GT(off_table, kShots / 1000);  // and some leave the table
   RecordProperty("off_table", off_table);
 }
+
+}  // namespace test_airborne_properties

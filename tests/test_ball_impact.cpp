@@ -30,6 +30,8 @@
 
 #include "breakshot/pool.hpp"
 
+namespace test_ball_impact {
+
 namespace {
 
 using breakshot::ball_ball_impact;
@@ -733,3 +735,5 @@ TEST(MathavanImpact, NeverGainsEnergyAndIsRepeatable) {
 }
 
 }  // namespace
+
+}  // namespace test_ball_impact

@@ -22,6 +22,8 @@
 #include "breakshot/player.hpp"
 #include "rules_fixtures.hpp"
 
+namespace test_baseline {
+
 namespace {
 
 using namespace rules_fixtures;
@@ -408,3 +410,5 @@ TEST(BaselinePlayer, WholeGamesNeverBreakTheRules) {
 }
 
 }  // namespace
+
+}  // namespace test_baseline

@@ -14,6 +14,8 @@
 #include "breakshot/rack.hpp"
 #include "breakshot/simulation.hpp"
 
+namespace test_batch {
+
 using namespace breakshot;
 
 namespace {
@@ -211,3 +213,5 @@ TEST(Batch, RefusalsNameTheStrikeAndField) {
   EXPECT_EQ(empty.shots, 0u);
   EXPECT_EQ(empty.balls, s.balls.size());
 }
+
+}  // namespace test_batch

@@ -20,7 +20,7 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 
-namespace breakshot {
+namespace breakshot::test_carom_table {
 namespace {
 
 using json = nlohmann::json;
@@ -272,4 +272,4 @@ TEST(CaromMirror, OneAndThreeRailPathsFollowTheUnfoldedLine) {
 }
 
 }  // namespace
-}  // namespace breakshot
+}  // namespace breakshot::test_carom_table

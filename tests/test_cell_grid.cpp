@@ -15,6 +15,8 @@
 
 #include "physics/cell_grid.hpp"
 
+namespace test_cell_grid {
+
 namespace {
 
 using breakshot::Vec2;
@@ -67,3 +69,5 @@ TEST(CellGrid, CellsKeepTheOrderOfAListWithTheNewestInFront) {
 }
 
 }  // namespace
+
+}  // namespace test_cell_grid

@@ -20,6 +20,8 @@
 
 #include "breakshot/version.hpp"
 
+namespace test_cli {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -316,3 +318,5 @@ TEST_F(Cli, HelpAndVersion) {
 }  // namespace
 
 #endif  // BREAKSHOT_CLI
+
+}  // namespace test_cli

@@ -15,6 +15,8 @@
 #include "breakshot/table.hpp"
 #include "physics/cluster_impact.hpp"
 
+namespace test_cluster_impact {
+
 namespace {
 
 using namespace breakshot;
@@ -256,3 +258,5 @@ TEST(ClusterImpact, ScenarioFieldIsReadAndChecked) {
   ASSERT_TRUE(std::holds_alternative<ScenarioError>(bad));
   EXPECT_EQ(std::get<ScenarioError>(bad).path, "physics.ball_clusters");
 }
+
+}  // namespace test_cluster_impact

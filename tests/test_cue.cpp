@@ -10,6 +10,8 @@
 
 #include "breakshot/pool.hpp"
 
+namespace test_cue {
+
 namespace {
 
 using breakshot::CueParams;
@@ -565,3 +567,5 @@ TEST(Cue, DefaultsAreThePublishedOnes) {
 }
 
 }  // namespace
+
+}  // namespace test_cue

@@ -27,6 +27,8 @@
 #include <cmath>
 #include <random>
 
+namespace test_cushion {
+
 namespace {
 
 using breakshot::cushion_impact;
@@ -460,3 +462,5 @@ TEST(Cushion, NoImpactWhenNotApproachingAndMassCancels) {
 }
 
 }  // namespace
+
+}  // namespace test_cushion

@@ -28,6 +28,8 @@
 #include <random>
 #include <string>
 
+namespace test_cushion_models {
+
 namespace {
 
 using breakshot::cushion_impact;
@@ -512,3 +514,5 @@ TEST(CushionModels, ImpulseFrictionalNeverCreatesEnergyByNewtonsLaw) {
 }
 
 }  // namespace
+
+}  // namespace test_cushion_models

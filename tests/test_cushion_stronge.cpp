@@ -23,6 +23,8 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/vec.hpp"
 
+namespace test_cushion_stronge {
+
 namespace {
 
 namespace bs = breakshot;
@@ -393,3 +395,5 @@ TEST(CushionStronge, BadComplianceRatioNamesThePath) {
 }
 
 }  // namespace
+
+}  // namespace test_cushion_stronge

@@ -18,6 +18,8 @@
 #include "breakshot/scenario_io.hpp"
 #include "physics_fields.hpp"
 
+namespace test_defaults {
+
 using namespace breakshot;
 
 namespace {
@@ -180,3 +182,5 @@ TEST(Defaults, TheWallRestitutionIsTheCushionLaws) {
   EXPECT_EQ(wall("friction", ""), 1.0);
   EXPECT_EQ(wall("ideal", ""), 1.0);
 }
+
+}  // namespace test_defaults

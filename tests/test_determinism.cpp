@@ -13,6 +13,8 @@
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
 
+namespace test_determinism {
+
 using namespace breakshot;
 
 namespace {
@@ -116,3 +118,5 @@ TEST(Determinism, ScenariosThatGiveTheSpinningFrictionKeepTheirBytes) {
     EXPECT_NE(run(original), kept) << r.file;
   }
 }
+
+}  // namespace test_determinism

@@ -16,6 +16,8 @@
 
 #include "physics/detmath.hpp"
 
+namespace test_detmath {
+
 namespace dm = breakshot::dm;
 
 namespace {
@@ -570,3 +572,5 @@ TEST(DetMath, PinnedDigestsOfOutputs) {
   EXPECT_EQ(d.pow, 0xb61fbd0d022d83e3ull);
   EXPECT_EQ(d.erf, 0x098d3f127780c27eull);
 }
+
+}  // namespace test_detmath

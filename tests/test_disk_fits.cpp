@@ -9,6 +9,8 @@
 #include "breakshot/snooker.hpp"
 #include "breakshot/table.hpp"
 
+namespace test_disk_fits {
+
 using namespace breakshot;
 
 namespace {
@@ -53,3 +55,5 @@ TEST(DiskFits, AgreesWithWallClearanceOnEveryTable) {
 }
 
 }  // namespace
+
+}  // namespace test_disk_fits

@@ -23,6 +23,8 @@
 #include "io/table_json.hpp"
 #include "web_api.hpp"
 
+namespace test_encodings {
+
 namespace {
 
 namespace bs = breakshot;
@@ -167,3 +169,5 @@ TEST(Encodings, GameEventsNameCushionsAndPockets) {
 }
 
 }  // namespace
+
+}  // namespace test_encodings

@@ -11,6 +11,8 @@
 
 #include "physics/event_queue.hpp"
 
+namespace test_event_queue {
+
 namespace {
 
 using breakshot::detail::EventKind;
@@ -109,3 +111,5 @@ TEST(EventQueue, LargeSceneUsesTheHeapAgain) {
 }
 
 }  // namespace
+
+}  // namespace test_event_queue

@@ -13,6 +13,8 @@
 #include "breakshot/player.hpp"
 #include "sanitizers.hpp"
 
+namespace test_games_long {
+
 using namespace breakshot;
 
 namespace {
@@ -98,3 +100,5 @@ TEST(GamesLong, FiveHundredEightBallGamesEndSoundly) {
 TEST(GamesLong, FiveHundredNineBallGamesEndSoundly) {
   play_many(GameType::nine_ball, kGames, 9);
 }
+
+}  // namespace test_games_long

@@ -25,7 +25,7 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 
-namespace breakshot {
+namespace breakshot::test_lab {
 namespace {
 
 BallState moving(Vec2 p, Vec2 v) {
@@ -523,4 +523,4 @@ TEST(Plots, UnwritablePrefixThrowsNamingTheFile) {
 }
 
 }  // namespace
-}  // namespace breakshot
+}  // namespace breakshot::test_lab

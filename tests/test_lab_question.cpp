@@ -10,6 +10,8 @@
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
 
+namespace test_lab_question {
+
 using namespace breakshot;
 
 namespace {
@@ -69,3 +71,5 @@ TEST(Lab, LowerRestitutionStopsALighterStriker) {
   ASSERT_EQ(r.events.size(), 1u);
   EXPECT_NEAR(r.final_balls[0].velocity.x, 0.0, 1e-15);
 }
+
+}  // namespace test_lab_question

@@ -8,6 +8,8 @@
 
 #include "physics/large_pages.hpp"
 
+namespace test_large_pages {
+
 namespace {
 
 using breakshot::detail::advise_large_pages;
@@ -50,3 +52,5 @@ TEST(LargePages, AdviceOnAnyRangeIsHarmless) {
 }
 
 }  // namespace
+
+}  // namespace test_large_pages

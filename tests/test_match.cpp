@@ -3,9 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -26,6 +28,8 @@
 #include "breakshot/players.hpp"
 #include "breakshot/match_io.hpp"
 #include "breakshot/record_io.hpp"
+
+namespace test_match {
 
 namespace {
 
@@ -443,10 +447,6 @@ TEST(Match, BadOptionsAndUnwritableRecords) {
 
 #ifdef BREAKSHOT_CLI
 
-#include <sys/wait.h>
-
-#include <cstdlib>
-
 namespace {
 
 class MatchCli : public ::testing::Test {
@@ -835,3 +835,5 @@ TEST_F(MatchCli, HelpNamesTheSubcommands) {
 }  // namespace
 
 #endif  // BREAKSHOT_CLI
+
+}  // namespace test_match

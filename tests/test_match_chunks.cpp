@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <climits>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -28,6 +30,8 @@
 #include "breakshot/player.hpp"
 #include "breakshot/players.hpp"
 #include "breakshot/record_io.hpp"
+
+namespace test_match_chunks {
 
 namespace {
 
@@ -466,10 +470,6 @@ TEST(MatchChunks, ReadingABadSummaryNamesThePath) {
 
 #ifdef BREAKSHOT_CLI
 
-#include <sys/wait.h>
-
-#include <cstdlib>
-
 namespace {
 
 class MatchChunksCli : public ::testing::Test {
@@ -625,3 +625,5 @@ TEST_F(MatchChunksCli, HelpDescribesChunks) {
 }  // namespace
 
 #endif  // BREAKSHOT_CLI
+
+}  // namespace test_match_chunks

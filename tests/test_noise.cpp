@@ -15,7 +15,7 @@
 
 #include "breakshot/noise.hpp"
 
-namespace breakshot {
+namespace breakshot::test_noise {
 namespace {
 
 constexpr double kRadius = 0.028575;
@@ -330,4 +330,4 @@ TEST(NoisePerturb, DeviationsHaveTheModelsStatistics) {
 }
 
 }  // namespace
-}  // namespace breakshot
+}  // namespace breakshot::test_noise

@@ -32,6 +32,8 @@
 #include "web/serve.hpp"
 #include "web_api.hpp"
 
+namespace test_online {
+
 namespace {
 
 namespace asio = boost::asio;
@@ -452,3 +454,5 @@ TEST(OnlineServe, AHundredRoomsAtOnce) {
 }
 
 }  // namespace
+
+}  // namespace test_online

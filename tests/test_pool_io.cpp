@@ -16,6 +16,8 @@
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
 
+namespace test_pool_io {
+
 namespace {
 
 using nlohmann::json;
@@ -851,3 +853,5 @@ TEST(PoolRun, AStrikeStartsTheRun) {
 }
 
 }  // namespace
+
+}  // namespace test_pool_io

@@ -8,6 +8,8 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 
+namespace test_pool_motion {
+
 using namespace breakshot;
 
 namespace {
@@ -287,3 +289,5 @@ TEST(PoolMotion, FrictionalImpactsConserveMomentumAndLoseEnergy) {
   }
   EXPECT_GE(impacts, 3);
 }
+
+}  // namespace test_pool_motion

@@ -12,6 +12,8 @@
 #include "breakshot/table.hpp"
 #include "sanitizers.hpp"
 
+namespace test_pool_properties {
+
 using namespace breakshot;
 
 namespace {
@@ -141,3 +143,5 @@ TEST(PoolProperties, FrozenRackBreaks) {
     EXPECT_GT(ball_ball, 15) << "speed " << speed;  // the hit went through the rack
   }
 }
+
+}  // namespace test_pool_properties

@@ -20,7 +20,7 @@
 #include "breakshot/table.hpp"
 #include "table_geometry.hpp"
 
-namespace breakshot {
+namespace breakshot::test_pool_table {
 namespace {
 
 using namespace table_geometry;
@@ -660,4 +660,4 @@ TEST(PoolTable, BedInsideOutline) {
 }
 
 }  // namespace
-}  // namespace breakshot
+}  // namespace breakshot::test_pool_table

@@ -26,6 +26,8 @@
 #include "rules_fixtures.hpp"
 #include "snooker_fixtures.hpp"
 
+namespace test_pot_map {
+
 namespace {
 
 using namespace rules_fixtures;
@@ -529,3 +531,5 @@ TEST(PotMap, BadArgumentsAreRefusedByName) {
 }
 
 }  // namespace
+
+}  // namespace test_pot_map

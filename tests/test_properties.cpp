@@ -11,6 +11,8 @@
 #include "breakshot/table.hpp"
 #include "sanitizers.hpp"
 
+namespace test_properties {
+
 using namespace breakshot;
 
 namespace {
@@ -271,3 +273,5 @@ TEST(Properties, LoneFrictionBallStopsAtClosedFormDistance) {
     EXPECT_EQ(r.final_balls[0].state, MotionState::stationary);
   }
 }
+
+}  // namespace test_properties

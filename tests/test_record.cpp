@@ -21,6 +21,8 @@
 #include "breakshot/players.hpp"
 #include "breakshot/record_io.hpp"
 
+namespace test_record {
+
 namespace {
 
 using namespace breakshot;
@@ -637,3 +639,5 @@ TEST(RecordReplay, ShortenedRecordIsIdenticalButNotOver) {
 }
 
 }  // namespace
+
+}  // namespace test_record

@@ -33,6 +33,8 @@
 #include "breakshot/record_io.hpp"
 #include "breakshot/version.hpp"
 
+namespace test_record_versions {
+
 namespace {
 
 using namespace breakshot;
@@ -568,3 +570,5 @@ TEST(RecordVersions, AReplayThatDiffersNamesTheVersionAndTheEngine) {
 }
 
 }  // namespace
+
+}  // namespace test_record_versions

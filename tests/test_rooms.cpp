@@ -12,6 +12,8 @@
 #include "web/rooms.hpp"
 #include "web_api.hpp"
 
+namespace test_rooms {
+
 namespace {
 
 using breakshot::online::ClientId;
@@ -387,3 +389,5 @@ TEST(StateHash, IsFnv1a64) {
 }
 
 }  // namespace
+
+}  // namespace test_rooms

@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+namespace test_roots {
+
 namespace {
 
 using breakshot::first_contact;
@@ -1723,3 +1725,5 @@ TEST(FirstContact, FastPathsMatchFullMethodBitForBit) {
 }
 
 }  // namespace
+
+}  // namespace test_roots

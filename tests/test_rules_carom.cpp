@@ -23,6 +23,8 @@
 #include "breakshot/record_io.hpp"
 #include "io/game_json.hpp"
 
+namespace test_rules_carom {
+
 using namespace breakshot;
 
 namespace {
@@ -686,3 +688,5 @@ TEST(ThreeCushion, JsonOfStateRulingAndAction) {
   EXPECT_FALSE(pool.ruling(nlohmann::json::parse(ru.dump()), "r", r3));
   EXPECT_NE(pool.error->reason.find("only three-cushion rulings"), std::string::npos);
 }
+
+}  // namespace test_rules_carom

@@ -15,6 +15,8 @@
 #include "breakshot/session.hpp"
 #include "rules_fixtures.hpp"
 
+namespace test_rules_common {
+
 using namespace breakshot;
 using namespace rules_fixtures;
 
@@ -569,3 +571,5 @@ TEST(RulesCommonEvents, SummariesListBallOffTableOnlyWithAirbornePhysics) {
   // The reader expects the kinds of the summary's own physics.
   EXPECT_EQ(match_summary_json(read_match_summary(air)), air);
 }
+
+}  // namespace test_rules_common

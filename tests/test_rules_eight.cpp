@@ -7,6 +7,8 @@
 
 #include "rules_fixtures.hpp"
 
+namespace test_rules_eight {
+
 using namespace breakshot;
 using namespace rules_fixtures;
 
@@ -951,3 +953,5 @@ TEST(RulesEightOffTable, ALegalJumpShotOverABlockerIsNoFoul) {
   EXPECT_TRUE(o.ruling.turn_continues);
   EXPECT_EQ(o.state.player, 0);
 }
+
+}  // namespace test_rules_eight

@@ -7,6 +7,8 @@
 
 #include "rules_fixtures.hpp"
 
+namespace test_rules_nine {
+
 using namespace breakshot;
 using namespace rules_fixtures;
 
@@ -705,3 +707,5 @@ TEST(RulesNineOffTable, FlyingOverARailIsNoCushionContact) {
   EXPECT_FALSE(on(o.state, 1));
   EXPECT_EQ(o.state.ball_in_hand, BallInHand::anywhere);
 }
+
+}  // namespace test_rules_nine

@@ -24,6 +24,8 @@
 #include "io/game_json.hpp"
 #include "sanitizers.hpp"
 
+namespace test_rules_snooker {
+
 using namespace breakshot;
 
 namespace {
@@ -747,3 +749,5 @@ TEST(Snooker, JsonOfStateAndRuling) {
   EXPECT_EQ(std::get<Shoot>(a).nominate, kPink);
   EXPECT_EQ(json_io::action_json(Action{shoot()}).dump().find("nominate"), std::string::npos);
 }
+
+}  // namespace test_rules_snooker

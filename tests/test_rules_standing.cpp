@@ -9,6 +9,8 @@
 #include "rules_fixtures.hpp"
 #include "snooker_fixtures.hpp"
 
+namespace test_rules_standing {
+
 using namespace breakshot;
 
 namespace {
@@ -99,3 +101,5 @@ TEST(RulesStanding, ThreeCushionCountsPointsAndNoBallScoresByItself) {
   EXPECT_EQ(st.points_left, -1);
   for (int b = 0; b < 3; ++b) EXPECT_EQ(rules.ball_value(b), 0);
 }
+
+}  // namespace test_rules_standing

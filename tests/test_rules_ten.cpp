@@ -21,6 +21,8 @@
 #include "breakshot/record.hpp"
 #include "breakshot/record_io.hpp"
 
+namespace test_rules_ten {
+
 using namespace breakshot;
 
 namespace {
@@ -296,3 +298,5 @@ TEST(RulesTenGames, EveryPlayerPlaysWholeGamesThatReplay) {
     }
   }
 }
+
+}  // namespace test_rules_ten

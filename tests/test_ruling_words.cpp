@@ -19,6 +19,8 @@
 #include "breakshot/record.hpp"
 #include "breakshot/snooker.hpp"
 
+namespace test_ruling_words {
+
 using namespace breakshot;
 
 namespace {
@@ -421,3 +423,5 @@ TEST(RulingWords, SayTheFoulOnce) {
 }
 
 }  // namespace
+
+}  // namespace test_ruling_words

@@ -13,6 +13,8 @@
 #include "breakshot/table.hpp"
 #include "physics/run_record.hpp"
 
+namespace test_run_record {
+
 using namespace breakshot;
 
 namespace {
@@ -103,3 +105,5 @@ TEST(RunRecord, ReplayGivesTheStatesOfTheSimulationAtAnyTimeOfTheRun) {
     }
   }
 }
+
+}  // namespace test_run_record

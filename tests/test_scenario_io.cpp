@@ -14,6 +14,8 @@
 #include "breakshot/lab.hpp"
 #include "breakshot/scenario_io.hpp"
 
+namespace test_scenario_io {
+
 namespace {
 
 using nlohmann::json;
@@ -912,3 +914,5 @@ TEST(ResultWrite, IncompleteEmptyAndBroken) {
 }
 
 }  // namespace
+
+}  // namespace test_scenario_io

@@ -17,6 +17,8 @@
 
 #include "web/serve.hpp"
 
+namespace test_serve {
+
 namespace fs = std::filesystem;
 using breakshot::http::answer;
 using breakshot::http::resolve;
@@ -210,3 +212,5 @@ TEST_F(Site, APortInUseIsNamed) {
 }
 
 }  // namespace
+
+}  // namespace test_serve

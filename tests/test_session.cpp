@@ -14,6 +14,8 @@
 #include "breakshot/record_io.hpp"
 #include "breakshot/session.hpp"
 
+namespace test_session {
+
 using namespace breakshot;
 
 namespace {
@@ -107,3 +109,5 @@ TEST(Session, TakingBackAndPlayingAgainGivesTheSameGame) {
   EXPECT_TRUE(again.record() == whole.record());
   EXPECT_THROW(again.take_back_to(n + 1), std::invalid_argument);
 }
+
+}  // namespace test_session

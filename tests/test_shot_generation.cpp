@@ -24,6 +24,8 @@
 #include "ai/evaluate.hpp"
 #include "rules_fixtures.hpp"
 
+namespace test_shot_generation {
+
 namespace {
 
 using namespace rules_fixtures;
@@ -608,3 +610,5 @@ TEST(ShotGenAll, NothingOutsideAShotPhase) {
 }
 
 }  // namespace
+
+}  // namespace test_shot_generation

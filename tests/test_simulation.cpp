@@ -10,6 +10,8 @@
 #include "breakshot/simulation.hpp"
 #include "breakshot/table.hpp"
 
+namespace test_simulation {
+
 using namespace breakshot;
 
 namespace {
@@ -486,3 +488,5 @@ TEST(Simulation, ResetRunsExactlyAsANewSimulation) {
   // And back through them in the other order.
   for (auto it = cases.rbegin(); it != cases.rend(); ++it) expect_same_run(reused, it->second, it->first);
 }
+
+}  // namespace test_simulation

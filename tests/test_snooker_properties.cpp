@@ -19,6 +19,8 @@
 #include "breakshot/table.hpp"
 #include "sanitizers.hpp"
 
+namespace test_snooker_properties {
+
 using namespace breakshot;
 
 namespace {
@@ -123,3 +125,5 @@ TEST(SnookerProperties, RandomShotsOnARackedTable) {
   std::printf("%d shots: %d balls pocketed, %d in corner pockets, %d in middle pockets\n",
               kShots, pocketed, corner, middle);
 }
+
+}  // namespace test_snooker_properties

@@ -25,6 +25,8 @@
 #include "breakshot/scenario_io.hpp"
 #include "breakshot/simulation.hpp"
 
+namespace test_throw {
+
 using namespace breakshot;
 
 namespace {
@@ -143,3 +145,5 @@ TEST(Throw, ConstantFrictionGivesTpA14sFrictionLimitedThrow) {
   // Frictionless: no throw.
   EXPECT_NEAR(simulated_throw(2.0, 45.0, "0"), 0.0, 1e-9);
 }
+
+}  // namespace test_throw

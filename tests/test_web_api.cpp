@@ -46,6 +46,8 @@
 #include "physics_fields.hpp"
 #include "web_api.hpp"
 
+namespace test_web_api {
+
 namespace {
 
 using nlohmann::json;
@@ -1661,3 +1663,5 @@ TEST(WebApi, TenBallWrongPotLetsTheIncomingPlayerChooseAndItsLinkReplays) {
   const bs::GameRecord rec = std::get<bs::GameRecord>(bs::read_record(record_of(g.get())));
   EXPECT_TRUE(bs::replay(rec).identical);
 }
+
+}  // namespace test_web_api
